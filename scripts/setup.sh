@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs everything foon-planner needs on a fresh machine; safe to run again (skips what is present).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+WASM_BINDGEN_VERSION=0.2.130   # keep equal to the "=x.y.z" pin in wasm/bindings/Cargo.toml
+export PATH="$HOME/.cargo/bin:$PATH"
+
+step() { printf '\n== %s\n' "$*"; }
+
+step "Rust wasm32 target"
+rustup target list --installed | grep -qx wasm32-unknown-unknown || rustup target add wasm32-unknown-unknown
+
+step "wasm-pack"
+command -v wasm-pack >/dev/null 2>&1 || cargo install wasm-pack --locked
+
+step "wasm-bindgen-cli $WASM_BINDGEN_VERSION"
+if ! wasm-bindgen --version 2>/dev/null | grep -q " $WASM_BINDGEN_VERSION"; then
+  # no --locked: the CLI's lockfile pins a crate version the registry lacks
+  cargo install wasm-bindgen-cli --version "$WASM_BINDGEN_VERSION" --force
+fi
+
+step "Chromium (end-to-end tests)"
+if [ ! -x /usr/bin/chromium ] && [ "${FOON_SKIP_CHROMIUM:-0}" != 1 ]; then
+  SUDO=""; [ "$(id -u)" = 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq && $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null
+fi
+
+step "npm packages"
+if [ -f package-lock.json ]; then npm ci --no-audit --no-fund; else npm install --no-audit --no-fund; fi
+
+step "WebAssembly build"
+npm run build:wasm
+echo "setup done"
