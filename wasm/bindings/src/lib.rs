@@ -1,1 +1,89 @@
-//! placeholder
+//! foon-wasm: the thin JavaScript face of foon-core. One coarse handle, `Planner`, built once from
+//! knowledge-base files; requests and results cross the boundary as JSON text, errors as JS `Error`s
+//! carrying a stable `code` and, for file errors, `file`, `line` and `column`.
+
+use foon_core::parse::{parse_bytes, Subgraph};
+use foon_core::{bundle, FoonError, KnowledgeBase};
+use wasm_bindgen::prelude::*;
+
+/// Converts a core error into a JS `Error` with `code`, `file`, `line`, `column` properties.
+fn js_error(e: &FoonError) -> JsValue {
+    let error = js_sys::Error::new(&e.to_string());
+    let set = |key: &str, value: JsValue| {
+        // Reflect::set only fails on frozen objects; a fresh Error is not frozen.
+        let _ = js_sys::Reflect::set(&error, &JsValue::from_str(key), &value);
+    };
+    set("code", JsValue::from_str(e.code.as_str()));
+    set("reason", JsValue::from_str(&e.message));
+    if let Some(file) = &e.file {
+        set("file", JsValue::from_str(file));
+    }
+    if let Some(line) = e.line {
+        set("line", JsValue::from_f64(line as f64));
+    }
+    if let Some(column) = e.column {
+        set("column", JsValue::from_f64(column as f64));
+    }
+    error.into()
+}
+
+fn to_json<T: serde::Serialize>(value: &T) -> Result<String, JsValue> {
+    serde_json::to_string(value)
+        .map_err(|e| JsValue::from_str(&format!("cannot serialise result: {e}")))
+}
+
+/// Collects knowledge-base files one by one (each parsed at once, so an error names its file), then
+/// merges them into a `Planner`.
+#[wasm_bindgen]
+#[derive(Default)]
+pub struct KnowledgeBaseLoader {
+    graphs: Vec<Subgraph>,
+}
+
+#[wasm_bindgen]
+impl KnowledgeBaseLoader {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> KnowledgeBaseLoader {
+        KnowledgeBaseLoader::default()
+    }
+
+    /// Adds one FOON file, or a bundle of files (`#@file <name>` sections).
+    #[wasm_bindgen(js_name = addFile)]
+    pub fn add_file(&mut self, name: &str, bytes: &[u8]) -> Result<(), JsValue> {
+        let parts = bundle::split_bundle_bytes(bytes);
+        if parts.is_empty() {
+            self.graphs
+                .push(parse_bytes(name, bytes).map_err(|e| js_error(&e))?);
+        }
+        for (part, body) in parts {
+            self.graphs
+                .push(parse_bytes(&part, body).map_err(|e| js_error(&e))?);
+        }
+        Ok(())
+    }
+
+    /// Merges the files into a universal FOON and returns the planner handle.
+    pub fn finish(self) -> Result<Planner, JsValue> {
+        let kb = KnowledgeBase::merge(&self.graphs).map_err(|e| js_error(&e))?;
+        Ok(Planner { kb })
+    }
+}
+
+/// A loaded knowledge base and everything the planner needs with it.
+#[wasm_bindgen]
+pub struct Planner {
+    kb: KnowledgeBase,
+}
+
+#[wasm_bindgen]
+impl Planner {
+    /// Statistics of the knowledge base, as JSON (`foon_core::Stats`).
+    pub fn stats(&self) -> Result<String, JsValue> {
+        to_json(&foon_core::stats(&self.kb))
+    }
+
+    /// Reader warnings (units skipped, empty arguments), as JSON error objects.
+    pub fn warnings(&self) -> Result<String, JsValue> {
+        to_json(&self.kb.warnings)
+    }
+}

@@ -1,28 +1,35 @@
 //! Loading a knowledge base from files, and the bundle form the build ships: all subgraph files in one
 //! text file, each introduced by a line `#@file <name>` (a FOON comment, so a bundle is also valid FOON).
 
-use crate::error::{FoonError, Result};
+use crate::error::Result;
 use crate::kb::KnowledgeBase;
 use crate::parse::{parse_bytes, Subgraph};
 
 pub const FILE_MARK: &str = "#@file ";
 
-/// Splits bundle text into (file name, text) pairs; text before the first mark is ignored.
-pub fn split_bundle(text: &str) -> Vec<(&str, &str)> {
+/// Splits bundle bytes into (file name, bytes) pairs, without requiring the whole bundle to be UTF-8,
+/// so that a damaged file inside a bundle is reported by its own name. Empty when `bytes` is not a bundle.
+pub fn split_bundle_bytes(bytes: &[u8]) -> Vec<(String, &[u8])> {
+    if !bytes.starts_with(FILE_MARK.as_bytes()) {
+        return Vec::new();
+    }
     let mut out = Vec::new();
-    let mut current: Option<(&str, usize)> = None;
+    let mut current: Option<(String, usize)> = None;
     let mut offset = 0;
-    for line in text.split_inclusive('\n') {
-        if let Some(name) = line.strip_prefix(FILE_MARK) {
+    for line in bytes.split_inclusive(|&b| b == b'\n') {
+        if let Some(name) = line.strip_prefix(FILE_MARK.as_bytes()) {
             if let Some((n, start)) = current.take() {
-                out.push((n, &text[start..offset]));
+                out.push((n, &bytes[start..offset]));
             }
-            current = Some((name.trim(), offset + line.len()));
+            current = Some((
+                String::from_utf8_lossy(name).trim().to_string(),
+                offset + line.len(),
+            ));
         }
         offset += line.len();
     }
     if let Some((n, start)) = current {
-        out.push((n, &text[start..]));
+        out.push((n, &bytes[start..]));
     }
     out
 }
@@ -47,17 +54,12 @@ pub fn join_bundle<'a>(files: impl IntoIterator<Item = (&'a str, &'a str)>) -> S
 pub fn load(files: &[(String, Vec<u8>)]) -> Result<KnowledgeBase> {
     let mut graphs: Vec<Subgraph> = Vec::new();
     for (name, bytes) in files {
-        if bytes.starts_with(FILE_MARK.as_bytes()) {
-            let Ok(text) = std::str::from_utf8(bytes) else {
-                return Err(parse_bytes(name, bytes).err().unwrap_or_else(|| {
-                    FoonError::new(crate::error::ErrorCode::InvalidUtf8, "bundle is not UTF-8")
-                }));
-            };
-            for (part, body) in split_bundle(text) {
-                graphs.push(parse_bytes(part, body.as_bytes())?);
-            }
-        } else {
+        let parts = split_bundle_bytes(bytes);
+        if parts.is_empty() {
             graphs.push(parse_bytes(name, bytes)?);
+        }
+        for (part, body) in parts {
+            graphs.push(parse_bytes(&part, body)?);
         }
     }
     KnowledgeBase::merge(&graphs)
@@ -71,9 +73,23 @@ mod tests {
     fn bundles_round_trip() {
         let files = [("a.txt", "O\ta\t1\n"), ("b.txt", "# x\nO\tb\t0")];
         let text = join_bundle(files);
+        let parts = split_bundle_bytes(text.as_bytes());
+        let expected: Vec<(String, &[u8])> = vec![
+            ("a.txt".into(), b"O\ta\t1\n"),
+            ("b.txt".into(), b"# x\nO\tb\t0\n"),
+        ];
+        assert_eq!(parts, expected);
+        assert!(split_bundle_bytes(b"O\ta\t1\n").is_empty());
+    }
+
+    #[test]
+    fn a_bundle_with_a_non_utf8_file_names_that_file() {
+        let mut bytes = join_bundle([("good.txt", "O\ta\t1\nM\tm\nO\tb\t1\n")]).into_bytes();
+        bytes.extend_from_slice(b"#@file bad.txt\nO\ta\xff\t1\n");
+        let e = load(&[("kb.foon".into(), bytes)]).unwrap_err();
         assert_eq!(
-            split_bundle(&text),
-            vec![("a.txt", "O\ta\t1\n"), ("b.txt", "# x\nO\tb\t0\n")]
+            (e.code, e.file.as_deref(), e.line),
+            (crate::ErrorCode::InvalidUtf8, Some("bad.txt"), Some(1))
         );
     }
 

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# `npm test`: every check of the project, in the order a failure is cheapest to find.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH="$HOME/.cargo/bin:$PATH"
+
+step() { printf '\n== %s\n' "$*"; }
+
+step "cargo fmt --check"
+cargo fmt --manifest-path wasm/Cargo.toml --all -- --check
+
+step "cargo clippy -D warnings"
+cargo clippy --manifest-path wasm/Cargo.toml --workspace --all-targets --quiet -- -D warnings
+
+step "cargo test (native core, including FOON-111 from ../shared)"
+cargo test --manifest-path wasm/Cargo.toml --workspace --quiet
+
+step "WebAssembly build"
+npm run --silent build:wasm
+
+step "tsc --noEmit"
+npx tsc --noEmit
+
+step "vitest (unit tests on the real WASM build)"
+npx vitest run
+
+step "app build (vite, starter knowledge base)"
+npm run --silent build:kb
+npx vite build --logLevel warn
+
+step "end-to-end tests (headless Chromium)"
+npx vitest run --config tests/e2e/vitest.config.ts
+
+echo
+echo "npm test: all checks passed"

@@ -1,0 +1,131 @@
+// The one module that owns the WASM planner: initialisation behind a single promise, typed calls,
+// and errors as `PlannerError` with a stable code. Views and the CLI use only this module.
+
+import initWasmModule, { initSync, KnowledgeBaseLoader, type Planner as WasmPlanner } from "../../wasm/pkg/foon_wasm.js";
+import type { ErrorCode, FoonErrorData, KnowledgeBaseFile, Stats } from "./types";
+
+export type * from "./types";
+
+/** An error from the planner or the loader, with a stable `code` and, for file errors, a place. */
+export class PlannerError extends Error implements FoonErrorData {
+  readonly code: ErrorCode;
+  readonly file?: string;
+  readonly line?: number;
+  readonly column?: number;
+  /** The reason alone, without the place prefix of `message`. */
+  readonly reason: string;
+
+  constructor(data: FoonErrorData & { reason?: string }) {
+    super(data.message);
+    this.name = "PlannerError";
+    this.code = data.code;
+    this.file = data.file;
+    this.line = data.line;
+    this.column = data.column;
+    this.reason = data.reason ?? data.message;
+  }
+
+  toJSON(): FoonErrorData {
+    return { code: this.code, message: this.message, file: this.file, line: this.line, column: this.column };
+  }
+}
+
+/** "file:line:column: reason" for an error or warning given as data. */
+export function describeError(e: FoonErrorData): string {
+  const place = [e.file, e.line, e.column].filter((part) => part !== undefined).join(":");
+  return place === "" ? e.message : `${place}: ${e.message}`;
+}
+
+function isRecord(value: unknown): value is Record<string, unknown> {
+  return typeof value === "object" && value !== null;
+}
+
+/** Turns whatever the WASM layer threw into a PlannerError. */
+export function toPlannerError(thrown: unknown): PlannerError {
+  if (thrown instanceof PlannerError) return thrown;
+  if (isRecord(thrown) && typeof thrown.code === "string" && typeof thrown.message === "string") {
+    return new PlannerError({
+      code: thrown.code as ErrorCode,
+      message: thrown.message,
+      reason: typeof thrown.reason === "string" ? thrown.reason : undefined,
+      file: typeof thrown.file === "string" ? thrown.file : undefined,
+      line: typeof thrown.line === "number" ? thrown.line : undefined,
+      column: typeof thrown.column === "number" ? thrown.column : undefined,
+    });
+  }
+  const message = thrown instanceof Error ? thrown.message : String(thrown);
+  return new PlannerError({ code: "internal", message: `planner failure: ${message}` });
+}
+
+let ready: Promise<void> | null = null;
+let initialised = false;
+
+/** Initialises the WASM module once (browser: fetches it next to the glue code, or from `source`). */
+export function initPlanner(source?: URL | string | Response | BufferSource): Promise<void> {
+  ready ??= initWasmModule(source === undefined ? undefined : { module_or_path: source }).then(() => {
+    initialised = true;
+  });
+  return ready;
+}
+
+/** Initialises the WASM module synchronously from its bytes (Node, Vitest, workers that hold the bytes). */
+export function initPlannerSync(bytes: BufferSource): void {
+  if (initialised) return;
+  initSync({ module: bytes });
+  initialised = true;
+  ready = Promise.resolve();
+}
+
+function assertInitialised(): void {
+  if (!initialised) {
+    throw new PlannerError({
+      code: "not_initialised",
+      message: "the planner's WebAssembly module is not initialised: await initPlanner() (browser) or call initPlannerSync(bytes) (Node) first",
+    });
+  }
+}
+
+function parseJson<T>(call: () => string): T {
+  let text: string;
+  try {
+    text = call();
+  } catch (thrown) {
+    throw toPlannerError(thrown);
+  }
+  return JSON.parse(text) as T;
+}
+
+/** A knowledge base loaded into the planner. Free it with `free()` when replaced. */
+export class FoonPlanner {
+  private constructor(private readonly handle: WasmPlanner) {}
+
+  /** Parses and merges knowledge-base files; a malformed file throws a PlannerError naming file and line. */
+  static load(files: readonly KnowledgeBaseFile[]): FoonPlanner {
+    assertInitialised();
+    const loader = new KnowledgeBaseLoader();
+    try {
+      for (const file of files) loader.addFile(file.name, file.bytes);
+    } catch (thrown) {
+      loader.free();
+      throw toPlannerError(thrown);
+    }
+    try {
+      return new FoonPlanner(loader.finish()); // finish() consumes the loader, even when it fails
+    } catch (thrown) {
+      throw toPlannerError(thrown);
+    }
+  }
+
+  stats(): Stats {
+    return parseJson<Stats>(() => this.handle.stats());
+  }
+
+  /** Problems that did not stop the load (units skipped, with file and line). */
+  warnings(): FoonErrorData[] {
+    return parseJson<FoonErrorData[]>(() => this.handle.warnings());
+  }
+
+  free(): void {
+    this.handle.free();
+  }
+}

@@ -1,0 +1,39 @@
+// Node entry of the planner module (CLI, Vitest, benchmarks): loads the WASM bytes and knowledge-base
+// files from disk. Browser code must not import this file.
+
+import { readFileSync, readdirSync, statSync } from "node:fs";
+import { basename, join, resolve } from "node:path";
+import { fileURLToPath } from "node:url";
+import { FoonPlanner, initPlannerSync } from "./index";
+import type { KnowledgeBaseFile } from "./types";
+
+export const ROOT = resolve(fileURLToPath(new URL("../..", import.meta.url)));
+export const WASM_PATH = join(ROOT, "wasm/pkg/foon_wasm_bg.wasm");
+/** The project's own starter knowledge base: the default everywhere. */
+export const STARTER_KB_DIR = join(ROOT, "public/kb/starter");
+
+export function initPlannerFromDisk(): void {
+  let bytes: Buffer;
+  try {
+    bytes = readFileSync(WASM_PATH);
+  } catch {
+    throw new Error(`${WASM_PATH} is missing: run "npm run build:wasm" (or "npm run setup") first`);
+  }
+  initPlannerSync(new Uint8Array(bytes));
+}
+
+/** FOON files of a folder (every `.txt` and `.foon`, sorted by name), or a single file. */
+export function readKnowledgeBase(path: string): KnowledgeBaseFile[] {
+  const stat = statSync(path);
+  if (!stat.isDirectory()) return [{ name: basename(path), bytes: readFileSync(path) }];
+  return readdirSync(path)
+    .filter((name) => name.endsWith(".txt") || name.endsWith(".foon"))
+    .sort()
+    .map((name) => ({ name, bytes: readFileSync(join(path, name)) }));
+}
+
+/** Loads a knowledge base from disk (default: the starter KB) into an initialised planner. */
+export function loadPlannerFromDisk(kbPath: string = STARTER_KB_DIR): FoonPlanner {
+  initPlannerFromDisk();
+  return FoonPlanner.load(readKnowledgeBase(kbPath));
+}
