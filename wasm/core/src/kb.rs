@@ -1,0 +1,322 @@
+//! The universal FOON: the union of any number of subgraphs with exact duplicate units removed,
+//! indexed for the planner (producers/consumers of each object node in O(1), goal nodes with their dish
+//! class and ingredients, the kitchen). The result never depends on the order the files were given in:
+//! nodes and units are numbered in the sorted order of their contents.
+
+use crate::error::{ErrorCode, FoonError, Result};
+use crate::model::{FunctionalUnit, NodeId, ObjectNode, UnitId, UnitObject};
+use crate::parse::Subgraph;
+use crate::taxonomy::{is_utensil, RAW_STATES};
+use serde::Serialize;
+use std::collections::{BTreeMap, BTreeSet, HashMap};
+
+/// A goal node of one subgraph: the finished dish that subgraph annotates.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Goal {
+    pub node: NodeId,
+    /// Dish class index (see `taxonomy`), when the file gives one.
+    pub dish_class: Option<u32>,
+    /// The subgraph (file) the goal comes from.
+    pub subgraph: String,
+    /// The dish's ingredients: its `contains {…}` state, else the starting ingredients of its subgraph.
+    pub ingredients: Vec<String>,
+}
+
+/// Per-file figures, kept for statistics and provenance.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct SubgraphInfo {
+    pub name: String,
+    pub units: usize,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct KnowledgeBase {
+    pub nodes: Vec<ObjectNode>,
+    pub units: Vec<FunctionalUnit>,
+    /// For each unit, the subgraphs it occurs in (sorted).
+    pub provenance: Vec<Vec<String>>,
+    /// For each node, the units that output it.
+    pub producers: Vec<Vec<UnitId>>,
+    /// For each node, the units that take it as input.
+    pub consumers: Vec<Vec<UnitId>>,
+    /// For each node, whether it is in the kitchen (a starting item; retrieval stops there).
+    pub kitchen: Vec<bool>,
+    pub goals: Vec<Goal>,
+    pub subgraphs: Vec<SubgraphInfo>,
+    /// Units over all files before duplicates were removed.
+    pub units_before_merge: usize,
+    /// Reader warnings of all files (skipped units), sorted by file and line.
+    pub warnings: Vec<FoonError>,
+    node_index: HashMap<ObjectNode, NodeId>,
+}
+
+type UnitKey = (Vec<NodeId>, String, Vec<NodeId>);
+/// A merged unit being built: inputs, outputs, and the subgraphs it was seen in.
+type MergedUnit = (Vec<UnitObject>, Vec<UnitObject>, BTreeSet<String>);
+
+impl KnowledgeBase {
+    /// Merges subgraphs into one universal FOON.
+    pub fn merge(subgraphs: &[Subgraph]) -> Result<KnowledgeBase> {
+        let units_before_merge: usize = subgraphs.iter().map(|g| g.units.len()).sum();
+        if units_before_merge == 0 {
+            return Err(FoonError::new(
+                ErrorCode::EmptyKnowledgeBase,
+                "the knowledge base has no functional units (no FOON files, or only empty ones)",
+            ));
+        }
+        // Number nodes in sorted order so that ids do not depend on file order.
+        let all: BTreeSet<&ObjectNode> = subgraphs
+            .iter()
+            .flat_map(|g| g.units.iter())
+            .flat_map(|u| u.inputs.iter().chain(u.outputs.iter()))
+            .map(|o| &o.node)
+            .collect();
+        let nodes: Vec<ObjectNode> = all.into_iter().cloned().collect();
+        let node_index: HashMap<ObjectNode, NodeId> = nodes
+            .iter()
+            .cloned()
+            .enumerate()
+            .map(|(i, n)| (n, i))
+            .collect();
+
+        // Union of units keyed by (inputs, motion, outputs); motion flags are OR-ed over duplicates.
+        let mut merged: BTreeMap<UnitKey, MergedUnit> = BTreeMap::new();
+        let mut goal_marks: BTreeSet<(String, NodeId, Option<u32>)> = BTreeSet::new();
+        for g in subgraphs {
+            for u in &g.units {
+                let ins = objects(&u.inputs, &node_index);
+                let outs = objects(&u.outputs, &node_index);
+                let key = (sorted_nodes(&ins), u.motion.clone(), sorted_nodes(&outs));
+                let entry = merged
+                    .entry(key)
+                    .or_insert_with(|| (ins.clone(), outs.clone(), BTreeSet::new()));
+                or_flags(&mut entry.0, &ins);
+                or_flags(&mut entry.1, &outs);
+                entry.2.insert(g.name.clone());
+                for o in u.outputs.iter().chain(u.inputs.iter()) {
+                    if let Some(mark) = &o.goal {
+                        goal_marks.insert((g.name.clone(), node_index[&o.node], mark.dish_class));
+                    }
+                }
+            }
+        }
+        let mut units = Vec::with_capacity(merged.len());
+        let mut provenance = Vec::with_capacity(merged.len());
+        for ((_, motion, _), (mut inputs, mut outputs, files)) in merged {
+            inputs.sort();
+            outputs.sort();
+            units.push(FunctionalUnit {
+                inputs,
+                motion,
+                outputs,
+            });
+            provenance.push(files.into_iter().collect());
+        }
+
+        let mut producers = vec![Vec::new(); nodes.len()];
+        let mut consumers = vec![Vec::new(); nodes.len()];
+        for (id, u) in units.iter().enumerate() {
+            for n in u.output_nodes() {
+                producers[n].push(id);
+            }
+            for n in u.input_nodes() {
+                consumers[n].push(id);
+            }
+        }
+        let kitchen = nodes
+            .iter()
+            .enumerate()
+            .map(|(i, n)| producers[i].is_empty() || is_raw(n))
+            .collect();
+
+        let mut subgraph_infos: Vec<SubgraphInfo> = subgraphs
+            .iter()
+            .map(|g| SubgraphInfo {
+                name: g.name.clone(),
+                units: g.units.len(),
+            })
+            .collect();
+        subgraph_infos.sort_by(|a, b| a.name.cmp(&b.name).then(a.units.cmp(&b.units)));
+
+        let mut warnings: Vec<FoonError> = subgraphs
+            .iter()
+            .flat_map(|g| g.warnings.iter().cloned())
+            .collect();
+        warnings.sort_by(|a, b| (&a.file, a.line, &a.message).cmp(&(&b.file, b.line, &b.message)));
+        let mut kb = KnowledgeBase {
+            nodes,
+            units,
+            provenance,
+            producers,
+            consumers,
+            kitchen,
+            goals: Vec::new(),
+            subgraphs: subgraph_infos,
+            units_before_merge,
+            warnings,
+            node_index,
+        };
+        kb.goals = goal_marks
+            .into_iter()
+            .map(|(subgraph, node, dish_class)| {
+                let ingredients = kb.goal_ingredients(node, &subgraph);
+                Goal {
+                    node,
+                    dish_class,
+                    subgraph,
+                    ingredients,
+                }
+            })
+            .collect();
+        Ok(kb)
+    }
+
+    pub fn node_id(&self, node: &ObjectNode) -> Option<NodeId> {
+        self.node_index.get(node).copied()
+    }
+
+    /// Units that occur in the given subgraph.
+    pub fn units_of(&self, subgraph: &str) -> impl Iterator<Item = UnitId> + '_ {
+        let name = subgraph.to_string();
+        (0..self.units.len()).filter(move |&u| self.provenance[u].binary_search(&name).is_ok())
+    }
+
+    /// The annotated `contains {…}` list of a goal, else the ingredients its subgraph starts from.
+    fn goal_ingredients(&self, node: NodeId, subgraph: &str) -> Vec<String> {
+        let annotated = self.nodes[node].ingredients();
+        if !annotated.is_empty() {
+            return annotated;
+        }
+        let units: Vec<UnitId> = self.units_of(subgraph).collect();
+        let produced: BTreeSet<NodeId> = units
+            .iter()
+            .flat_map(|&u| self.units[u].output_nodes())
+            .collect();
+        let starting: BTreeSet<String> = units
+            .iter()
+            .flat_map(|&u| self.units[u].input_nodes())
+            .filter(|n| !produced.contains(n))
+            .map(|n| self.nodes[n].label.clone())
+            .filter(|l| !is_utensil(l))
+            .collect();
+        starting.into_iter().collect()
+    }
+
+    /// Distinct labels of the nodes that are ingredients (not utensils).
+    pub fn ingredient_labels(&self) -> BTreeSet<&str> {
+        self.nodes
+            .iter()
+            .map(|n| n.label.as_str())
+            .filter(|l| !is_utensil(l))
+            .collect()
+    }
+}
+
+fn objects(
+    list: &[crate::parse::ParsedObject],
+    index: &HashMap<ObjectNode, NodeId>,
+) -> Vec<UnitObject> {
+    let mut out: Vec<UnitObject> = list
+        .iter()
+        .map(|o| UnitObject {
+            node: index[&o.node],
+            moves: o.moves,
+        })
+        .collect();
+    out.sort();
+    out
+}
+
+fn sorted_nodes(list: &[UnitObject]) -> Vec<NodeId> {
+    let mut ids: Vec<NodeId> = list.iter().map(|o| o.node).collect();
+    ids.sort_unstable();
+    ids
+}
+
+fn or_flags(into: &mut [UnitObject], from: &[UnitObject]) {
+    for o in into.iter_mut() {
+        if from.iter().any(|f| f.node == o.node && f.moves) {
+            o.moves = true;
+        }
+    }
+}
+
+/// A node in only raw states (whole, clean, empty, off, ...) and in no container: a kitchen item.
+fn is_raw(node: &ObjectNode) -> bool {
+    !node.states.is_empty()
+        && node
+            .states
+            .iter()
+            .all(|s| s.arg.is_none() && RAW_STATES.contains(&s.name.as_str()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::parse::parse_str;
+
+    const A: &str = "//\nO\ttomato\t1\nS\twhole\nO\tknife\t0\nM\tslice\t<Assumed>\nO\ttomato\t1\nS\tsliced\n//\nO\ttomato\t1\nS\tsliced\nO\tbowl\t0\nS\tempty\nM\tadd\t<Assumed>\nO\tbowl\t0\nS\tcontains\t{tomato}\nO\tsalad\t1\t15\nS\tin\t[bowl]\n";
+    const B: &str = "//\nO\ttomato\t0\nS\twhole\nO\tknife\t0\nM\tslice\t<1:00,1:10>\nO\ttomato\t1\nS\tsliced\n//\n";
+
+    fn kb(files: &[(&str, &str)]) -> KnowledgeBase {
+        let graphs: Vec<Subgraph> = files
+            .iter()
+            .map(|(n, t)| parse_str(n, t).unwrap())
+            .collect();
+        KnowledgeBase::merge(&graphs).unwrap()
+    }
+
+    #[test]
+    fn merges_duplicate_units_and_keeps_provenance() {
+        let k = kb(&[("a.txt", A), ("b.txt", B)]);
+        assert_eq!(k.units_before_merge, 3);
+        assert_eq!(k.units.len(), 2);
+        let slice = k.units.iter().position(|u| u.motion == "slice").unwrap();
+        assert_eq!(k.provenance[slice], vec!["a.txt", "b.txt"]);
+        // the flag is 1 in a.txt and 0 in b.txt: OR-ed
+        assert!(k.units[slice]
+            .inputs
+            .iter()
+            .any(|o| k.nodes[o.node].label == "tomato" && o.moves));
+    }
+
+    #[test]
+    fn indexes_producers_consumers_goals_and_kitchen() {
+        let k = kb(&[("a.txt", A)]);
+        let sliced = k
+            .node_id(&ObjectNode::new(
+                "tomato",
+                vec![crate::model::State::plain("sliced")],
+            ))
+            .unwrap();
+        assert_eq!(k.producers[sliced].len(), 1);
+        assert_eq!(k.consumers[sliced].len(), 1);
+        assert!(!k.kitchen[sliced]);
+        let whole = k
+            .node_id(&ObjectNode::new(
+                "tomato",
+                vec![crate::model::State::plain("whole")],
+            ))
+            .unwrap();
+        assert!(k.kitchen[whole]);
+        assert_eq!(k.goals.len(), 1);
+        assert_eq!(k.goals[0].dish_class, Some(15));
+        assert_eq!(k.nodes[k.goals[0].node].label, "salad");
+        // no contains {…} on the goal: derived from the subgraph's starting ingredients, utensils left out
+        assert_eq!(k.goals[0].ingredients, vec!["tomato"]);
+    }
+
+    #[test]
+    fn merge_does_not_depend_on_file_order() {
+        assert_eq!(
+            kb(&[("a.txt", A), ("b.txt", B)]),
+            kb(&[("b.txt", B), ("a.txt", A)])
+        );
+    }
+
+    #[test]
+    fn an_empty_knowledge_base_is_an_error() {
+        let e = KnowledgeBase::merge(&[parse_str("e.txt", "# nothing\n").unwrap()]).unwrap_err();
+        assert_eq!(e.code, ErrorCode::EmptyKnowledgeBase);
+    }
+}

@@ -1,0 +1,142 @@
+//! One normal form for object labels, states and motions, used by the reader, the planner and the
+//! similarity table alike, so that "Tomatoes ", "tomato" and "TOMATO" are the same object.
+
+/// Words whose final "s" is not a plural ending (or whose plural is the everyday name of the food).
+const KEEP_AS_IS: &[&str] = &[
+    "asparagus",
+    "bass",
+    "brussels",
+    "citrus",
+    "couscous",
+    "fries",
+    "greens",
+    "grits",
+    "hummus",
+    "molasses",
+    "oats",
+    "octopus",
+    "scissors",
+    "swiss",
+    "tongs",
+    "hibiscus",
+    "series",
+    "species",
+    "news",
+    "lens",
+    "plus",
+    "this",
+];
+
+/// Irregular plurals whose singular the suffix rules would get wrong.
+const IRREGULAR: &[(&str, &str)] = &[
+    ("leaves", "leaf"),
+    ("halves", "half"),
+    ("loaves", "loaf"),
+    ("knives", "knife"),
+    ("shelves", "shelf"),
+    ("calves", "calf"),
+    ("geese", "goose"),
+    ("teeth", "tooth"),
+    ("feet", "foot"),
+    ("mice", "mouse"),
+    ("children", "child"),
+    ("people", "person"),
+    ("dice", "dice"),
+    ("cookies", "cookie"),
+    ("pies", "pie"),
+    ("brownies", "brownie"),
+    ("smoothies", "smoothie"),
+    ("veggies", "veggie"),
+    ("calories", "calorie"),
+    ("hoagies", "hoagie"),
+    ("rotisseries", "rotisserie"),
+    ("shoes", "shoe"),
+    ("canoes", "canoe"),
+    ("oboes", "oboe"),
+    ("toes", "toe"),
+    ("sprouts", "sprout"),
+];
+
+/// Lower case, trimmed, inner white space and underscores folded to single spaces.
+pub fn fold(text: &str) -> String {
+    let lowered = text.to_lowercase().replace('_', " ");
+    lowered.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// Singular form of one English word; never invents a non-word for the exceptions above
+/// (e.g. "glass" stays "glass", "molasses" stays "molasses").
+pub fn singular(word: &str) -> String {
+    if word.len() < 4 || !word.is_ascii() || KEEP_AS_IS.contains(&word) {
+        return word.to_string();
+    }
+    if let Some((_, s)) = IRREGULAR.iter().find(|(p, _)| *p == word) {
+        return s.to_string();
+    }
+    let ends = |suffix: &str| word.ends_with(suffix);
+    let cut = |n: usize| word[..word.len() - n].to_string();
+    if ends("ss") || ends("us") || ends("is") || ends("ous") {
+        return word.to_string();
+    }
+    if ends("ies") {
+        return format!("{}y", cut(3));
+    }
+    if ends("oes") || ends("ches") || ends("shes") || ends("xes") || ends("sses") || ends("zzes") {
+        return cut(2);
+    }
+    if ends("s") && !ends("'s") {
+        return cut(1);
+    }
+    word.to_string()
+}
+
+/// The normal form of an object label: folded, with its head (last) word singular.
+/// Modifiers are left alone ("brussels sprouts" -> "brussels sprout").
+pub fn normalize_label(text: &str) -> String {
+    let folded = fold(text);
+    match folded.rsplit_once(' ') {
+        Some((head, last)) => format!("{head} {}", singular(last)),
+        None => singular(&folded),
+    }
+}
+
+/// States and motions are verbs/adjectives: folded only, never singularised.
+pub fn normalize_word(text: &str) -> String {
+    fold(text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plurals_become_singular_without_mangling() {
+        for (given, want) in [
+            ("Tomatoes", "tomato"),
+            ("cherries", "cherry"),
+            ("peaches", "peach"),
+            ("sesame seeds", "sesame seed"),
+            ("glass", "glass"),
+            ("drinking glass", "drinking glass"),
+            ("molasses", "molasses"),
+            ("asparagus", "asparagus"),
+            ("watercress", "watercress"),
+            ("lemongrass", "lemongrass"),
+            ("cookies", "cookie"),
+            ("leaves", "leaf"),
+            ("olives", "olive"),
+            ("salad greens", "salad greens"),
+            ("  Sweet_potato   FRIES ", "sweet potato fries"),
+            ("egg", "egg"),
+            ("hummus", "hummus"),
+        ] {
+            assert_eq!(normalize_label(given), want, "{given}");
+        }
+    }
+
+    #[test]
+    fn states_are_folded_not_singularised() {
+        assert_eq!(normalize_word(" Sliced  "), "sliced");
+        assert_eq!(normalize_word("leaves"), "leaves");
+        assert_eq!(normalize_word("off (ready)"), "off (ready)");
+    }
+}

@@ -1,0 +1,20 @@
+//! foon-core: a FOON knowledge base (reader, universal FOON, indexes) and the approximate task-tree
+//! retrieval of Sakib, Paulius and Sun (RA-L 2022). Plain Rust, no browser types: the `foon-wasm` crate
+//! exposes it to JavaScript.
+
+pub mod bundle;
+pub mod error;
+pub mod kb;
+pub mod label;
+pub mod limits;
+pub mod model;
+pub mod parse;
+pub mod similarity;
+pub mod stats;
+pub mod taxonomy;
+
+pub use bundle::load;
+pub use error::{ErrorCode, FoonError, Result};
+pub use kb::{Goal, KnowledgeBase};
+pub use model::{FunctionalUnit, NodeId, ObjectNode, State, StateArg, UnitId, UnitObject};
+pub use stats::{stats, Stats};

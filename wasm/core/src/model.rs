@@ -1,0 +1,145 @@
+//! FOON's building blocks: object nodes (a label in a set of states), motion nodes, functional units.
+
+use serde::Serialize;
+use std::collections::BTreeSet;
+
+/// What a state says about its object beyond its name: where it is, or what it holds.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StateArg {
+    /// `in [bowl]`, `on [cutting board]`: the container or surface.
+    Container(String),
+    /// `contains {tomato,onion}`, `coated {flour}`: the ingredients involved, sorted, unique.
+    Ingredients(Vec<String>),
+}
+
+/// One state of an object node, e.g. `sliced`, `in [bowl]`, `contains {egg,milk}`.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+pub struct State {
+    /// The state word or relation word (`sliced`, `in`, `contains`, `coated`, ...).
+    pub name: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub arg: Option<StateArg>,
+}
+
+impl State {
+    pub fn plain(name: &str) -> State {
+        State {
+            name: name.to_string(),
+            arg: None,
+        }
+    }
+
+    /// FOON text for the state's argument, `[bowl]` or `{egg,milk}`.
+    pub fn arg_text(&self) -> Option<String> {
+        match &self.arg {
+            None => None,
+            Some(StateArg::Container(c)) => Some(format!("[{c}]")),
+            Some(StateArg::Ingredients(list)) => Some(format!("{{{}}}", list.join(","))),
+        }
+    }
+}
+
+impl std::fmt::Display for State {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.arg_text() {
+            Some(arg) => write!(f, "{} {}", self.name, arg),
+            None => f.write_str(&self.name),
+        }
+    }
+}
+
+/// An object node: identity is the label together with the whole set of states.
+/// States are kept sorted so that the same object annotated in another order is the same node.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+pub struct ObjectNode {
+    pub label: String,
+    pub states: Vec<State>,
+}
+
+impl ObjectNode {
+    pub fn new(label: impl Into<String>, mut states: Vec<State>) -> ObjectNode {
+        states.sort();
+        states.dedup();
+        ObjectNode {
+            label: label.into(),
+            states,
+        }
+    }
+
+    /// Physical states (those without a container or ingredient argument), e.g. `sliced`, `whole`.
+    pub fn physical_states(&self) -> impl Iterator<Item = &str> {
+        self.states
+            .iter()
+            .filter(|s| s.arg.is_none())
+            .map(|s| s.name.as_str())
+    }
+
+    /// The first container or surface the object is in or on.
+    pub fn container(&self) -> Option<&str> {
+        self.states.iter().find_map(|s| match &s.arg {
+            Some(StateArg::Container(c)) => Some(c.as_str()),
+            _ => None,
+        })
+    }
+
+    /// Ingredients the object holds (`contains {…}`), sorted and unique.
+    pub fn ingredients(&self) -> Vec<String> {
+        let set: BTreeSet<&String> = self
+            .states
+            .iter()
+            .filter(|s| s.name == "contains")
+            .filter_map(|s| match &s.arg {
+                Some(StateArg::Ingredients(list)) => Some(list.iter()),
+                _ => None,
+            })
+            .flatten()
+            .collect();
+        set.into_iter().cloned().collect()
+    }
+
+    pub fn has_state(&self, name: &str) -> bool {
+        self.states.iter().any(|s| s.name == name)
+    }
+}
+
+impl std::fmt::Display for ObjectNode {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let states: Vec<String> = self.states.iter().map(|s| s.to_string()).collect();
+        if states.is_empty() {
+            f.write_str(&self.label)
+        } else {
+            write!(f, "{} ({})", self.label, states.join(", "))
+        }
+    }
+}
+
+/// Index of an object node in a knowledge base.
+pub type NodeId = usize;
+/// Index of a functional unit in a knowledge base.
+pub type UnitId = usize;
+
+/// An object node as used by one functional unit: `moves` is FOON's motion flag
+/// (1 = the object is manipulated or changes, 0 = it is only present).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+pub struct UnitObject {
+    pub node: NodeId,
+    pub moves: bool,
+}
+
+/// A functional unit: input object nodes, one motion node, output object nodes.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct FunctionalUnit {
+    pub inputs: Vec<UnitObject>,
+    pub motion: String,
+    pub outputs: Vec<UnitObject>,
+}
+
+impl FunctionalUnit {
+    pub fn input_nodes(&self) -> impl Iterator<Item = NodeId> + '_ {
+        self.inputs.iter().map(|o| o.node)
+    }
+    pub fn output_nodes(&self) -> impl Iterator<Item = NodeId> + '_ {
+        self.outputs.iter().map(|o| o.node)
+    }
+}

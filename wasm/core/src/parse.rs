@@ -1,0 +1,682 @@
+//! Reader for FOON subgraph text, in both public dialects:
+//! plain (`O<TAB>tomato<TAB>1[<TAB>dish-class]`, `M<TAB>slice<TAB><0:10,0:20>`) and
+//! indexed (`O448<TAB>tomato<TAB>0`, `S117<TAB>sliced`, `M79<TAB>slice<TAB>1:07<TAB>1:14`).
+//! A malformed file is an error naming file, line, column and reason; no unit is ever dropped silently.
+
+use crate::error::{ErrorCode, FoonError, Result};
+use crate::label::{normalize_label, normalize_word};
+use crate::limits;
+use crate::model::{ObjectNode, State, StateArg};
+
+/// A goal mark on an object line: the finished dish of the subgraph, with its dish class if given.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GoalMark {
+    pub dish_class: Option<u32>,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ParsedObject {
+    pub node: ObjectNode,
+    pub moves: bool,
+    pub goal: Option<GoalMark>,
+    pub line: usize,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ParsedUnit {
+    pub inputs: Vec<ParsedObject>,
+    pub motion: String,
+    /// Motion timestamps as written (`0:10-0:20`, `Assumed`, ...), kept for provenance only.
+    pub times: Vec<String>,
+    pub outputs: Vec<ParsedObject>,
+    /// Line of the motion node.
+    pub line: usize,
+}
+
+/// One subgraph file: a named sequence of functional units.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Subgraph {
+    pub name: String,
+    pub units: Vec<ParsedUnit>,
+    /// Problems that did not stop the read, each with its place (e.g. a unit skipped because its
+    /// motion has no outputs, as happens in FOON-111). Never empty when something was skipped.
+    pub warnings: Vec<FoonError>,
+}
+
+/// Reads a file's bytes: checks size and UTF-8 first, then parses.
+pub fn parse_bytes(name: &str, bytes: &[u8]) -> Result<Subgraph> {
+    if bytes.len() > limits::MAX_FILE_BYTES {
+        return Err(FoonError::new(
+            ErrorCode::TooLarge,
+            format!(
+                "file is {} bytes; the limit is {} bytes",
+                bytes.len(),
+                limits::MAX_FILE_BYTES
+            ),
+        )
+        .in_file(name));
+    }
+    match std::str::from_utf8(bytes) {
+        Ok(text) => parse_str(name, text),
+        Err(e) => {
+            let good = &bytes[..e.valid_up_to()];
+            let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
+            let column = good.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
+            Err(FoonError::at(
+                ErrorCode::InvalidUtf8,
+                name,
+                line,
+                column,
+                "bytes that are not UTF-8 text (save the file as UTF-8)",
+            ))
+        }
+    }
+}
+
+impl FoonError {
+    fn in_file(mut self, name: &str) -> FoonError {
+        self.file = Some(name.to_string());
+        self
+    }
+}
+
+/// Which block of the current unit the reader is filling.
+#[derive(PartialEq)]
+enum Block {
+    Inputs,
+    Outputs,
+}
+
+/// An object line whose state lines are still being read: label, flag, goal mark, line, states.
+type OpenObject = (String, bool, Option<GoalMark>, usize, Vec<State>);
+
+struct UnitBuilder {
+    inputs: Vec<ParsedObject>,
+    motion: Option<(String, Vec<String>, usize)>,
+    outputs: Vec<ParsedObject>,
+    block: Block,
+    /// States of the object being read, before it is closed into a node.
+    open: Option<OpenObject>,
+}
+
+impl UnitBuilder {
+    fn new() -> UnitBuilder {
+        UnitBuilder {
+            inputs: Vec::new(),
+            motion: None,
+            outputs: Vec::new(),
+            block: Block::Inputs,
+            open: None,
+        }
+    }
+
+    fn is_empty(&self) -> bool {
+        self.inputs.is_empty()
+            && self.motion.is_none()
+            && self.outputs.is_empty()
+            && self.open.is_none()
+    }
+
+    fn close_object(&mut self) {
+        if let Some((label, moves, goal, line, states)) = self.open.take() {
+            let object = ParsedObject {
+                node: ObjectNode::new(label, states),
+                moves,
+                goal,
+                line,
+            };
+            match self.block {
+                Block::Inputs => self.inputs.push(object),
+                Block::Outputs => self.outputs.push(object),
+            }
+        }
+    }
+
+    /// Closes the unit: `Ok(None)` when it must be skipped with a warning (no outputs).
+    fn finish(
+        mut self,
+        file: &str,
+        line: usize,
+        warnings: &mut Vec<FoonError>,
+    ) -> Result<Option<ParsedUnit>> {
+        self.close_object();
+        let Some((motion, times, motion_line)) = self.motion else {
+            // FOON-111 has units whose motion line was never written: without a motion there is no
+            // action to plan, so the unit is skipped and reported.
+            let first = self.inputs.first().map(|o| o.line).unwrap_or(line);
+            warnings.push(FoonError::at(
+                ErrorCode::BadMotion,
+                file,
+                first,
+                1,
+                format!("functional unit has object lines but no motion line (M) before line {line}; unit skipped"),
+            ));
+            return Ok(None);
+        };
+        if self.outputs.is_empty() {
+            // FOON-111 has such units; a unit that makes nothing cannot be planned with, so it is
+            // skipped and reported rather than failing the whole knowledge base.
+            warnings.push(FoonError::at(
+                ErrorCode::UnitWithoutOutputs,
+                file,
+                motion_line,
+                1,
+                format!("motion '{motion}' has no output object after it; unit skipped"),
+            ));
+            return Ok(None);
+        }
+        Ok(Some(ParsedUnit {
+            inputs: self.inputs,
+            motion,
+            times,
+            outputs: self.outputs,
+            line: motion_line,
+        }))
+    }
+}
+
+/// Splits a line into tab-separated fields with their 1-based character columns; trims each field and
+/// drops empty trailing fields (FOON files often end lines with a stray tab).
+fn fields(line: &str) -> Vec<(usize, &str)> {
+    let mut out = Vec::new();
+    let mut start = 0usize;
+    for part in line.split('\t') {
+        let col = line[..start].chars().count() + 1;
+        out.push((col, part.trim()));
+        start += part.len() + 1;
+    }
+    while out.last().is_some_and(|(_, f)| f.is_empty()) {
+        out.pop();
+    }
+    out
+}
+
+/// The line type: `O`, `S` or `M`, optionally followed by an index (indexed dialect) and optionally
+/// preceded by `!` (goal mark). Returns (kind, goal-mark).
+fn line_kind(head: &str) -> Option<(char, bool)> {
+    let (goal, rest) = match head.strip_prefix('!') {
+        Some(rest) => (true, rest),
+        None => (false, head),
+    };
+    let mut chars = rest.chars();
+    let kind = chars.next()?;
+    if !matches!(kind, 'O' | 'S' | 'M') || !chars.all(|c| c.is_ascii_digit()) {
+        return None;
+    }
+    Some((kind, goal))
+}
+
+fn check_text(file: &str, line: usize, col: usize, what: &str, text: &str) -> Result<()> {
+    if text.is_empty() {
+        return Err(FoonError::at(
+            ErrorCode::EmptyLabel,
+            file,
+            line,
+            col,
+            format!("empty {what}"),
+        ));
+    }
+    if text.chars().count() > limits::MAX_LABEL_CHARS {
+        return Err(FoonError::at(
+            ErrorCode::TooLarge,
+            file,
+            line,
+            col,
+            format!(
+                "{what} is longer than {} characters",
+                limits::MAX_LABEL_CHARS
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// Parses a state's argument: `[container]` or `{a,b,c}`.
+fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<StateArg> {
+    let bad = |why: &str| {
+        FoonError::at(
+            ErrorCode::BadBrackets,
+            file,
+            line,
+            col,
+            format!("state argument '{text}': {why}"),
+        )
+    };
+    let (open, close) = match text.chars().next() {
+        Some('[') => ('[', ']'),
+        Some('{') => ('{', '}'),
+        _ => return Err(bad("must be [container] or {ingredients}")),
+    };
+    let Some(inner) = text.strip_prefix(open).and_then(|t| t.strip_suffix(close)) else {
+        return Err(bad(&format!(
+            "'{open}' is not closed by '{close}' at the end"
+        )));
+    };
+    if inner.contains(['[', ']', '{', '}']) {
+        return Err(bad("nested brackets"));
+    }
+    if open == '[' {
+        let container = normalize_label(inner);
+        check_text(file, line, col, "container", &container)?;
+        return Ok(StateArg::Container(container));
+    }
+    let mut list: Vec<String> = inner
+        .split(',')
+        .map(normalize_label)
+        .filter(|s| !s.is_empty())
+        .collect();
+    for item in &list {
+        check_text(file, line, col, "ingredient", item)?;
+    }
+    list.sort();
+    list.dedup();
+    Ok(StateArg::Ingredients(list))
+}
+
+/// Index of the first object whose label already occurred earlier in the list.
+fn repeated_label_at(objects: &[ParsedObject]) -> Option<usize> {
+    (1..objects.len()).find(|&i| {
+        objects[..i]
+            .iter()
+            .any(|o| o.node.label == objects[i].node.label)
+    })
+}
+
+/// Reads one subgraph from text. Tolerates a BOM, CRLF line ends, trailing white space and empty files.
+pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
+    if text.len() > limits::MAX_FILE_BYTES {
+        return Err(FoonError::new(
+            ErrorCode::TooLarge,
+            format!("file is over {} bytes", limits::MAX_FILE_BYTES),
+        )
+        .in_file(name));
+    }
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut units = Vec::new();
+    let mut warnings = Vec::new();
+    let mut unit = UnitBuilder::new();
+    let mut last_line = 0;
+    for (index, raw) in text.split('\n').enumerate() {
+        let line_no = index + 1;
+        last_line = line_no;
+        if raw.len() > limits::MAX_LINE_BYTES {
+            return Err(FoonError::at(
+                ErrorCode::TooLarge,
+                name,
+                line_no,
+                1,
+                format!(
+                    "line is {} bytes long; the limit is {}",
+                    raw.len(),
+                    limits::MAX_LINE_BYTES
+                ),
+            ));
+        }
+        let line = raw.trim_end_matches(['\r', ' ', '\t']);
+        let trimmed = line.trim_start();
+        if trimmed.is_empty() || trimmed.starts_with('#') {
+            continue;
+        }
+        if trimmed.starts_with("//") {
+            if !unit.is_empty() {
+                units.extend(std::mem::replace(&mut unit, UnitBuilder::new()).finish(
+                    name,
+                    line_no,
+                    &mut warnings,
+                )?);
+            }
+            continue;
+        }
+        let f = fields(line);
+        let (head_col, head) = f[0];
+        let Some((kind, bang)) = line_kind(head) else {
+            return Err(FoonError::at(
+                ErrorCode::UnknownLine,
+                name,
+                line_no,
+                head_col,
+                format!("unknown line type '{}': expected O (object), S (state), M (motion), '#' or '//'", head.chars().take(20).collect::<String>()),
+            ));
+        };
+        let field = |i: usize, what: &str| -> Result<(usize, &str)> {
+            f.get(i)
+                .copied()
+                .filter(|(_, s)| !s.is_empty())
+                .ok_or_else(|| {
+                    let col = f.last().map(|(c, s)| c + s.chars().count()).unwrap_or(1);
+                    FoonError::at(
+                        ErrorCode::MissingField,
+                        name,
+                        line_no,
+                        col,
+                        format!("missing {what}"),
+                    )
+                })
+        };
+        match kind {
+            'O' => {
+                unit.close_object();
+                if unit.motion.is_some() {
+                    unit.block = Block::Outputs;
+                }
+                let (lcol, raw_label) = field(1, "object label after 'O'")?;
+                let label = normalize_label(raw_label);
+                check_text(name, line_no, lcol, "object label", &label)?;
+                // FOON's motion flag; some files write it as "00"
+                let moves = match f.get(2).map(|(c, t)| (c, t.parse::<u8>())) {
+                    None => false,
+                    Some((_, Ok(0))) => false,
+                    Some((_, Ok(1))) => true,
+                    Some((c, _)) => {
+                        let other = f[2].1;
+                        return Err(FoonError::at(
+                            ErrorCode::BadNumber,
+                            name,
+                            line_no,
+                            *c,
+                            format!("object flag must be 0 or 1, found '{other}'"),
+                        ));
+                    }
+                };
+                let goal = match f.get(3) {
+                    Some((c, class)) => match class.parse::<u32>() {
+                        Ok(n) => Some(GoalMark {
+                            dish_class: Some(n),
+                        }),
+                        Err(_) => {
+                            return Err(FoonError::at(
+                                ErrorCode::BadNumber,
+                                name,
+                                line_no,
+                                *c,
+                                format!(
+                                    "dish class of a goal node must be a number, found '{class}'"
+                                ),
+                            ))
+                        }
+                    },
+                    None if bang => Some(GoalMark { dish_class: None }),
+                    None => None,
+                };
+                if f.len() > 4 {
+                    return Err(FoonError::at(
+                        ErrorCode::UnknownLine,
+                        name,
+                        line_no,
+                        f[4].0,
+                        "object line has more than four fields",
+                    ));
+                }
+                unit.open = Some((label, moves, goal, line_no, Vec::new()));
+            }
+            'S' => {
+                let Some(open) = unit.open.as_mut() else {
+                    return Err(FoonError::at(
+                        ErrorCode::StateWithoutObject,
+                        name,
+                        line_no,
+                        head_col,
+                        "state line with no object line (O) before it in this unit",
+                    ));
+                };
+                let (scol, raw_state) = field(1, "state name after 'S'")?;
+                // Some files write the argument in the same field: `in [bowl]`.
+                let (word, inline_arg) = match raw_state.find(['[', '{']) {
+                    Some(at) => (&raw_state[..at], Some(raw_state[at..].trim())),
+                    None => (raw_state, None),
+                };
+                let state_name = normalize_word(word);
+                check_text(name, line_no, scol, "state name", &state_name)?;
+                let arg = match (inline_arg, f.get(2)) {
+                    // `on []` occurs in FOON-111: keep the state, drop the empty argument, report it
+                    (None, Some((acol, "[]" | "{}"))) => {
+                        warnings.push(FoonError::at(
+                            ErrorCode::EmptyLabel,
+                            name,
+                            line_no,
+                            *acol,
+                            format!("state '{state_name}' has an empty argument; it was left out"),
+                        ));
+                        None
+                    }
+                    (Some(a), None) => Some(state_arg(name, line_no, scol, a)?),
+                    (None, Some((acol, a))) => Some(state_arg(name, line_no, *acol, a)?),
+                    (None, None) => None,
+                    (Some(_), Some((acol, _))) => {
+                        return Err(FoonError::at(
+                            ErrorCode::BadBrackets,
+                            name,
+                            line_no,
+                            *acol,
+                            "state has two arguments",
+                        ));
+                    }
+                };
+                if f.len() > 3 {
+                    return Err(FoonError::at(
+                        ErrorCode::UnknownLine,
+                        name,
+                        line_no,
+                        f[3].0,
+                        "state line has more than three fields",
+                    ));
+                }
+                open.4.push(State {
+                    name: state_name,
+                    arg,
+                });
+            }
+            _ => {
+                unit.close_object();
+                let (mcol, raw_motion) = field(1, "motion label after 'M'")?;
+                let motion = normalize_word(raw_motion);
+                check_text(name, line_no, mcol, "motion label", &motion)?;
+                if let Some((first, _, first_line)) = &unit.motion {
+                    // A missing '//' (FOON-111 has a few): the next unit's inputs start where an output
+                    // label repeats. Without such a repeat the split is ambiguous, so it is an error.
+                    let Some(split) = repeated_label_at(&unit.outputs) else {
+                        return Err(FoonError::at(
+                            ErrorCode::BadMotion,
+                            name,
+                            line_no,
+                            head_col,
+                            format!("second motion line in one unit (the first, '{first}', is on line {first_line}); separate units with '//'"),
+                        ));
+                    };
+                    let next_inputs = unit.outputs.split_off(split);
+                    warnings.push(FoonError::at(
+                        ErrorCode::BadMotion,
+                        name,
+                        next_inputs[0].line,
+                        1,
+                        format!("missing '//' before this line (the unit of line {first_line} has a second motion on line {line_no}); a new unit was started here"),
+                    ));
+                    units.extend(std::mem::replace(&mut unit, UnitBuilder::new()).finish(
+                        name,
+                        line_no,
+                        &mut warnings,
+                    )?);
+                    unit.inputs = next_inputs;
+                }
+                if unit.inputs.is_empty() {
+                    return Err(FoonError::at(
+                        ErrorCode::MotionWithoutInputs,
+                        name,
+                        line_no,
+                        head_col,
+                        format!("motion '{motion}' has no input object before it"),
+                    ));
+                }
+                let times = f[2..]
+                    .iter()
+                    .map(|(_, t)| t.trim_matches(['<', '>']).to_string())
+                    .filter(|t| !t.is_empty())
+                    .collect();
+                unit.motion = Some((motion, times, line_no));
+            }
+        }
+        if units.len() > limits::MAX_UNITS {
+            return Err(FoonError::at(
+                ErrorCode::TooLarge,
+                name,
+                line_no,
+                1,
+                format!("more than {} functional units", limits::MAX_UNITS),
+            ));
+        }
+    }
+    if !unit.is_empty() {
+        units.extend(unit.finish(name, last_line, &mut warnings)?);
+    }
+    Ok(Subgraph {
+        name: name.to_string(),
+        units,
+        warnings,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const PLAIN: &str = "# a comment\n//\nO\ttomato\t1\nS\twhole\nO\tknife\t0\nS\tclean\nM\tslice\t<0:10,0:20>\nO\ttomato\t1\nS\tsliced\nS\ton\t[cutting board]\n//\n";
+
+    #[test]
+    fn reads_a_plain_unit() {
+        let g = parse_str("a.txt", PLAIN).unwrap();
+        assert_eq!(g.units.len(), 1);
+        let u = &g.units[0];
+        assert_eq!(u.motion, "slice");
+        assert_eq!(u.times, vec!["0:10,0:20"]);
+        assert_eq!(u.inputs.len(), 2);
+        assert!(u.inputs[0].moves);
+        assert_eq!(u.outputs[0].node.container(), Some("cutting board"));
+        assert_eq!(u.outputs[0].line, 8);
+    }
+
+    #[test]
+    fn reads_the_indexed_dialect_and_goal_marks() {
+        let text = "//\r\nO448\tTomatoes\t0\r\nS117\tsliced\r\nM79\tslice\t1:07\t1:14\r\nO2\tsalad\t1\t15\r\nS23\tcontains\t{tomato, Onions}\r\n//\r\n";
+        let g = parse_str("b.txt", text).unwrap();
+        let u = &g.units[0];
+        assert_eq!(u.inputs[0].node.label, "tomato");
+        assert_eq!(u.times, vec!["1:07", "1:14"]);
+        assert_eq!(
+            u.outputs[0].goal,
+            Some(GoalMark {
+                dish_class: Some(15)
+            })
+        );
+        assert_eq!(u.outputs[0].node.ingredients(), vec!["onion", "tomato"]);
+    }
+
+    #[test]
+    fn tolerates_bom_trailing_space_and_empty_files() {
+        assert_eq!(parse_str("e.txt", "").unwrap().units.len(), 0);
+        assert_eq!(
+            parse_str("e.txt", "\u{feff}# only a comment\n\n")
+                .unwrap()
+                .units
+                .len(),
+            0
+        );
+        let spaced = PLAIN.replace('\n', "  \t\r\n");
+        assert_eq!(
+            parse_str("s.txt", &format!("\u{feff}{spaced}")).unwrap(),
+            parse_str("s.txt", PLAIN).unwrap()
+        );
+    }
+
+    #[test]
+    fn a_unit_without_a_final_separator_is_kept() {
+        let text = PLAIN.trim_end_matches("//\n");
+        assert_eq!(parse_str("t.txt", text).unwrap().units.len(), 1);
+    }
+
+    fn error(text: &str) -> FoonError {
+        parse_str("bad.txt", text).unwrap_err()
+    }
+
+    #[test]
+    fn each_malformation_has_its_own_error_with_a_place() {
+        let cases: &[(&str, ErrorCode, usize)] = &[
+            ("X\tfoo\n", ErrorCode::UnknownLine, 1),
+            ("O\ttomato\t1\nS\n", ErrorCode::MissingField, 2),
+            ("O\ttomato\t2\n", ErrorCode::BadNumber, 1),
+            ("O\ttomato\t1\tsalad\n", ErrorCode::BadNumber, 1),
+            ("O\t \t1\n", ErrorCode::MissingField, 1),
+            ("S\twhole\n", ErrorCode::StateWithoutObject, 1),
+            ("O\ttomato\t1\nS\tin\t[bowl\n", ErrorCode::BadBrackets, 2),
+            ("O\ttomato\t1\nS\tin\tbowl\n", ErrorCode::BadBrackets, 2),
+            ("O\ttomato\t1\nS\tin\t[[bowl]]\n", ErrorCode::BadBrackets, 2),
+            ("M\tslice\n", ErrorCode::MotionWithoutInputs, 1),
+            ("O\ta\t1\nM\tslice\nM\tdice\n", ErrorCode::BadMotion, 3),
+            (
+                "O\ta\t1\nM\tslice\nO\tb\t1\nO\tc\t1\nM\tdice\n",
+                ErrorCode::BadMotion,
+                5,
+            ),
+            ("O\ta\t1\nM\t\t<1>\n", ErrorCode::MissingField, 2),
+        ];
+        for (text, code, line) in cases {
+            let e = error(text);
+            assert_eq!((e.code, e.line), (*code, Some(*line)), "{text:?} gave {e}");
+            assert_eq!(e.file.as_deref(), Some("bad.txt"));
+        }
+    }
+
+    #[test]
+    fn a_unit_without_a_motion_is_skipped_with_a_warning() {
+        let g = parse_str("w.txt", &format!("{PLAIN}O\ttomato\t1\nO\tknife\t0\n//\n")).unwrap();
+        assert_eq!(g.units.len(), 1);
+        assert_eq!(
+            (g.warnings[0].code, g.warnings[0].line),
+            (ErrorCode::BadMotion, Some(12))
+        );
+    }
+
+    #[test]
+    fn a_unit_without_outputs_is_skipped_with_a_warning() {
+        let g = parse_str("w.txt", &format!("O\ta\t1\nM\tslice\n//\n{PLAIN}")).unwrap();
+        assert_eq!(g.units.len(), 1);
+        assert_eq!(g.warnings.len(), 1);
+        assert_eq!(
+            (g.warnings[0].code, g.warnings[0].line),
+            (ErrorCode::UnitWithoutOutputs, Some(2))
+        );
+    }
+
+    #[test]
+    fn a_missing_separator_is_recovered_at_a_repeated_label_with_a_warning() {
+        let text = "O\ta\t1\nM\tcut\nO\ta\t1\nS\tcut\nO\ta\t1\nS\tcut\nO\tbowl\t0\nM\tadd\nO\tbowl\t0\nS\tfull\n";
+        let g = parse_str("m.txt", text).unwrap();
+        assert_eq!(g.units.len(), 2);
+        assert_eq!(g.units[0].outputs.len(), 1);
+        assert_eq!(g.units[1].inputs.len(), 2);
+        assert_eq!(g.warnings[0].line, Some(5));
+    }
+
+    #[test]
+    fn errors_name_the_column() {
+        let e = error("O\ttomato\t7\n");
+        assert_eq!(e.column, Some(10));
+        assert!(
+            e.to_string()
+                .starts_with("bad.txt:1:10: object flag must be 0 or 1"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn rejects_non_utf8_and_oversized_input() {
+        let e = parse_bytes("x.txt", b"O\tto\xffmato\t1\n").unwrap_err();
+        assert_eq!(
+            (e.code, e.line, e.column),
+            (ErrorCode::InvalidUtf8, Some(1), Some(5))
+        );
+        let long = format!("O\t{}\t1\n", "a".repeat(limits::MAX_LINE_BYTES + 1));
+        assert_eq!(error(&long).code, ErrorCode::TooLarge);
+        let label = format!("O\t{}\t1\n", "a".repeat(limits::MAX_LABEL_CHARS + 1));
+        assert_eq!(error(&label).code, ErrorCode::TooLarge);
+    }
+}

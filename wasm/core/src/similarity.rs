@@ -1,0 +1,36 @@
+//! How alike two ingredient names are. The planner takes this as a dependency (goal selection, the
+//! retrieval heuristic and substitution all go through it), so the embedding table can replace the
+//! exact-match default without touching the planner.
+
+/// A similarity between ingredient names in the normal form of `label::normalize_label`.
+pub trait Similarity {
+    /// Similarity in [0, 1]; 1 when both names are the same.
+    fn similarity(&self, a: &str, b: &str) -> f32;
+
+    /// The `top` best of `candidates` for `query`, best first; ties broken by label so that the order
+    /// never depends on the order of `candidates`.
+    fn rank(&self, query: &str, candidates: &[&str], top: usize) -> Vec<(String, f32)> {
+        let mut scored: Vec<(String, f32)> = candidates
+            .iter()
+            .map(|c| (c.to_string(), self.similarity(query, c)))
+            .collect();
+        scored.sort_by(|a, b| b.1.total_cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
+        scored.dedup_by(|a, b| a.0 == b.0);
+        scored.truncate(top);
+        scored
+    }
+}
+
+/// 1 for equal names, 0 otherwise: the planner's behaviour without an embedding table.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ExactMatch;
+
+impl Similarity for ExactMatch {
+    fn similarity(&self, a: &str, b: &str) -> f32 {
+        if a == b {
+            1.0
+        } else {
+            0.0
+        }
+    }
+}

@@ -1,0 +1,152 @@
+//! The project's own vocabularies: the 30 dish classes with their keywords, and the utensils,
+//! containers and appliances that are never ingredients. Both are project files under `data/`.
+
+use crate::label::{fold, normalize_label};
+use std::collections::HashSet;
+use std::sync::OnceLock;
+
+const DISH_CLASSES_TSV: &str = include_str!("../data/dish_classes.tsv");
+const UTENSILS_TXT: &str = include_str!("../data/utensils.txt");
+
+/// One dish class: its index (the number on FOON goal lines), name and keywords.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct DishClass {
+    pub index: u32,
+    pub name: String,
+    pub keywords: Vec<String>,
+}
+
+fn data_lines(text: &str) -> impl Iterator<Item = &str> {
+    text.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+}
+
+/// The dish taxonomy, in index order.
+pub fn dish_classes() -> &'static [DishClass] {
+    static CLASSES: OnceLock<Vec<DishClass>> = OnceLock::new();
+    CLASSES.get_or_init(|| {
+        data_lines(DISH_CLASSES_TSV)
+            .filter_map(|line| {
+                let mut parts = line.split('\t');
+                let index = parts.next()?.parse().ok()?;
+                let name = parts.next()?.to_string();
+                let keywords = parts
+                    .next()
+                    .unwrap_or("")
+                    .split(',')
+                    .map(normalize_label)
+                    .filter(|k| !k.is_empty())
+                    .collect();
+                Some(DishClass {
+                    index,
+                    name,
+                    keywords,
+                })
+            })
+            .collect()
+    })
+}
+
+pub fn dish_class_name(index: u32) -> Option<&'static str> {
+    dish_classes()
+        .iter()
+        .find(|c| c.index == index)
+        .map(|c| c.name.as_str())
+}
+
+/// Maps a dish type or a dish title ("drinks", "Greek salads", "chicken noodle soup") to a class.
+/// An exact class name or keyword wins; otherwise the keyword found last in the title (the head noun
+/// of "chicken noodle soup" is "soup"), longest keyword first at the same place.
+pub fn dish_class_of(text: &str) -> Option<u32> {
+    let wanted = normalize_label(text);
+    if wanted.is_empty() {
+        return None;
+    }
+    let classes = dish_classes();
+    if let Some(c) = classes
+        .iter()
+        .find(|c| c.name == wanted || normalize_label(&c.name) == wanted)
+    {
+        return Some(c.index);
+    }
+    if let Some(c) = classes.iter().find(|c| c.keywords.contains(&wanted)) {
+        return Some(c.index);
+    }
+    let words: Vec<String> = fold(text).split(' ').map(crate::label::singular).collect();
+    let joined = format!(" {} ", words.join(" "));
+    let mut best: Option<(usize, usize, u32)> = None; // (end position, keyword length, class)
+    for c in classes {
+        for k in &c.keywords {
+            if let Some(at) = joined.rfind(&format!(" {k} ")) {
+                let candidate = (at + k.len(), k.len(), c.index);
+                if best.is_none_or(|b| (candidate.0, candidate.1) > (b.0, b.1)) {
+                    best = Some(candidate);
+                }
+            }
+        }
+    }
+    best.map(|b| b.2)
+}
+
+/// Labels that are utensils, containers or appliances rather than ingredients.
+pub fn utensils() -> &'static HashSet<String> {
+    static UTENSILS: OnceLock<HashSet<String>> = OnceLock::new();
+    UTENSILS.get_or_init(|| data_lines(UTENSILS_TXT).map(normalize_label).collect())
+}
+
+pub fn is_utensil(label: &str) -> bool {
+    utensils().contains(label)
+}
+
+/// States an object has before any cooking action: a node with only these states (and no container
+/// or contents) is available in the kitchen even when some unit produces it.
+pub const RAW_STATES: &[&str] = &[
+    "whole",
+    "raw",
+    "clean",
+    "empty",
+    "off",
+    "off (ready)",
+    "unopened",
+    "closed",
+    "dry",
+    "uncooked",
+    "fresh",
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn has_thirty_classes_in_order() {
+        let classes = dish_classes();
+        assert_eq!(classes.len(), 30);
+        assert!(classes
+            .iter()
+            .enumerate()
+            .all(|(i, c)| c.index as usize == i));
+        assert_eq!(dish_class_name(15), Some("salad"));
+    }
+
+    #[test]
+    fn maps_types_and_titles_to_classes() {
+        assert_eq!(dish_class_of("salad"), Some(15));
+        assert_eq!(dish_class_of("Drinks"), Some(9));
+        assert_eq!(dish_class_of("smoothies"), Some(9));
+        assert_eq!(dish_class_of("omelette"), Some(23));
+        assert_eq!(dish_class_of("chicken noodle soup"), Some(1));
+        assert_eq!(dish_class_of("blood orange salad"), Some(15));
+        assert_eq!(dish_class_of("garlic bread"), Some(0));
+        assert_eq!(dish_class_of("spaceship"), None);
+        assert_eq!(dish_class_of("  "), None);
+    }
+
+    #[test]
+    fn utensils_are_not_ingredients() {
+        assert!(is_utensil("cutting board"));
+        assert!(is_utensil("glass"));
+        assert!(!is_utensil("tomato"));
+    }
+}
