@@ -1,17 +1,26 @@
+import { fileURLToPath } from "node:url";
 import { defineConfig } from "vitest/config";
 
-// Relative base: the built app works from any static sub-path and from file-less offline caches.
+const here = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
+
+// Pages live in src/ (the project's top level stays as fixed); static assets in public/.
+// Relative base: the built app works from any static sub-path and offline.
 export default defineConfig({
+  root: here("src"),
+  publicDir: here("public"),
   base: "./",
   build: {
     target: "es2022",
-    outDir: "dist",
+    outDir: here("dist"),
+    emptyOutDir: true,
     assetsInlineLimit: 0, // keep the wasm, knowledge base and embedding table as separate cacheable files
+    rollupOptions: { input: { main: here("src/index.html") } },
   },
   worker: { format: "es" },
   server: { host: "127.0.0.1" },
   preview: { host: "127.0.0.1" },
   test: {
+    root: here("."),
     include: ["tests/unit/**/*.test.ts"],
     environment: "node",
   },

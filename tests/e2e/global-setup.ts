@@ -9,7 +9,7 @@ let server: PreviewServer | undefined;
 
 export async function setup(project: TestProject): Promise<void> {
   if (!existsSync(join(ROOT, "dist/index.html"))) throw new Error("dist/ is missing: run `npm run build` before the e2e tests");
-  server = await preview({ root: ROOT, logLevel: "warn", preview: { host: "127.0.0.1", port: 0, strictPort: false, open: false } });
+  server = await preview({ configFile: join(ROOT, "vite.config.ts"), logLevel: "warn", preview: { host: "127.0.0.1", port: 0, strictPort: false, open: false } });
   const url = server.resolvedUrls?.local[0];
   if (url === undefined) throw new Error("the preview server did not report its address");
   project.provide("baseUrl", url);
