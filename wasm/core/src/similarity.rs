@@ -19,6 +19,16 @@ pub trait Similarity {
         scored.truncate(top);
         scored
     }
+
+    /// Whether a substitute this similar should be flagged for the user to check.
+    fn low_confidence(&self, sim: f32) -> bool {
+        sim < 0.5
+    }
+
+    /// Whether a candidate this similar may stand in for an ingredient at all.
+    fn accepts(&self, sim: f32) -> bool {
+        sim >= 0.3
+    }
 }
 
 /// 1 for equal names, 0 otherwise: the planner's behaviour without an embedding table.
