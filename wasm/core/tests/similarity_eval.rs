@@ -26,14 +26,39 @@ struct Score {
     top1: f32,
     top5: f32,
     misses: Vec<String>,
+    /// (similarity of the first candidate, whether it is acceptable) per query
+    firsts: Vec<(f32, bool)>,
+}
+
+/// For the low-confidence flag: share of queries flagged and top-1 accuracy of those not flagged.
+fn calibration(name: &str, firsts: &[(f32, bool)], thresholds: &[f32]) {
+    for &t in thresholds {
+        let kept: Vec<bool> = firsts
+            .iter()
+            .filter(|(s, _)| *s >= t)
+            .map(|(_, ok)| *ok)
+            .collect();
+        let right = kept.iter().filter(|ok| **ok).count();
+        let wrong_flagged = firsts.iter().filter(|(s, ok)| *s < t && !ok).count();
+        let wrong = firsts.iter().filter(|(_, ok)| !ok).count();
+        eprintln!(
+            "  {name}: flag below {t:.2}: {:4.1}% flagged, unflagged top-1 {:5.1}%, {wrong_flagged}/{wrong} errors flagged",
+            100.0 * (firsts.len() - kept.len()) as f32 / firsts.len() as f32,
+            100.0 * right as f32 / kept.len().max(1) as f32,
+        );
+    }
 }
 
 fn evaluate(sim: &dyn Similarity, labels: &[&str], dev: &[(String, Vec<String>)]) -> Score {
     let (mut t1, mut t5) = (0, 0);
     let mut misses = Vec::new();
+    let mut firsts = Vec::new();
     for (q, ok) in dev {
         let ranked = sim.rank(&foon_core::label::normalize_label(q), labels, 5);
         let hit = |(l, _): &(String, f32)| ok.contains(l);
+        if let Some(first) = ranked.first() {
+            firsts.push((first.1, hit(first)));
+        }
         if ranked.first().is_some_and(hit) {
             t1 += 1;
         } else {
@@ -49,6 +74,7 @@ fn evaluate(sim: &dyn Similarity, labels: &[&str], dev: &[(String, Vec<String>)]
         top1: t1 as f32 / n,
         top5: t5 as f32 / n,
         misses,
+        firsts,
     }
 }
 
@@ -128,12 +154,62 @@ fn substitution_quality_on_the_dev_set() {
             shipped = Some(s);
         }
     }
+    // Generalisation: the same with the dev names taken out of the taxonomy (and of the alias list),
+    // so that they are handled as unlisted names are (inferred category, vectors, lexical rules).
+    let names: Vec<&str> = dev.iter().map(|(q, _)| q.as_str()).collect();
+    let taxonomy = foon_core::substitute::Taxonomy::builtin().without(&names);
+    let all_aliases = foon_core::substitute::aliases();
+    let dev_keys: Vec<String> = names
+        .iter()
+        .map(|n| foon_core::label::normalize_label(n))
+        .collect();
+    let kept_aliases = all_aliases
+        .iter()
+        .filter(|(a, _)| !dev_keys.contains(a))
+        .map(|(a, b)| (a.clone(), b.clone()))
+        .collect();
+    sim = sim.with_options(base.clone());
+    let sim = sim.with_taxonomy_and_aliases(taxonomy.clone(), (**all_aliases).clone());
+    let s = evaluate(&sim, &labels, &dev);
+    eprintln!(
+        "{:<50} top-1 {:5.1}%  top-5 {:5.1}%",
+        "shipped, dev names not in the taxonomy",
+        100.0 * s.top1,
+        100.0 * s.top5
+    );
+    let sim = sim.with_taxonomy_and_aliases(taxonomy, kept_aliases);
+    let held = evaluate(&sim, &labels, &dev);
+    eprintln!(
+        "{:<50} top-1 {:5.1}%  top-5 {:5.1}%",
+        "shipped, dev names in neither taxonomy nor aliases",
+        100.0 * held.top1,
+        100.0 * held.top5
+    );
+    if std::env::var_os("FOON_SHOW_MISSES").is_some() {
+        for m in &held.misses {
+            eprintln!("unlisted miss: {m}");
+        }
+    }
     let s = shipped.unwrap();
+    let thresholds = [0.6, 0.7, 0.75, 0.8, 0.85, 0.9];
+    calibration("listed", &s.firsts, &thresholds);
+    calibration("unlisted", &held.firsts, &thresholds);
     if std::env::var_os("FOON_SHOW_MISSES").is_some() {
         for m in &s.misses {
             eprintln!("miss: {m}");
         }
     }
-    assert!(s.top1 >= 0.80, "top-1 {:.3} fell below the floor", s.top1);
-    assert!(s.top5 >= 0.93, "top-5 {:.3} fell below the floor", s.top5);
+    // floors a few points below the measured figures, so that regressions fail
+    assert!(
+        held.top1 >= 0.68,
+        "unlisted top-1 {:.3} fell below the floor",
+        held.top1
+    );
+    assert!(
+        held.top5 >= 0.80,
+        "unlisted top-5 {:.3} fell below the floor",
+        held.top5
+    );
+    assert!(s.top1 >= 0.83, "top-1 {:.3} fell below the floor", s.top1);
+    assert!(s.top5 >= 0.94, "top-5 {:.3} fell below the floor", s.top5);
 }
