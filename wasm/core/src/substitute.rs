@@ -34,6 +34,77 @@ const FORM_WORDS: &[&str] = &[
     "ring", "shred", "shaving", "crumb", "bit", "nib", "part", "portion", "topping", "cut",
 ];
 
+/// Words that describe the state or size of an ingredient, not which ingredient it is; left out of the
+/// vector of a phrase the taxonomy does not list ("whole clove", "fresh dill", "large egg").
+const DESCRIPTORS: &[&str] = &[
+    "fresh",
+    "freshly",
+    "dried",
+    "whole",
+    "large",
+    "small",
+    "medium",
+    "big",
+    "chopped",
+    "minced",
+    "sliced",
+    "diced",
+    "cubed",
+    "grated",
+    "shredded",
+    "crushed",
+    "frozen",
+    "canned",
+    "tinned",
+    "cooked",
+    "uncooked",
+    "raw",
+    "organic",
+    "boneless",
+    "skinless",
+    "lean",
+    "extra",
+    "finely",
+    "coarsely",
+    "thinly",
+    "roughly",
+    "peeled",
+    "pitted",
+    "seeded",
+    "halved",
+    "quartered",
+    "melted",
+    "softened",
+    "cold",
+    "warm",
+    "hot",
+    "room",
+    "temperature",
+    "packed",
+    "heaping",
+    "level",
+    "optional",
+    "good",
+    "quality",
+    "best",
+    "plain",
+    "regular",
+    "homemade",
+    "store",
+    "bought",
+    "prepared",
+    "instant",
+    "quick",
+    "low",
+    "fat",
+    "free",
+    "reduced",
+    "sodium",
+    "light",
+    "lite",
+    "nonfat",
+];
+
 /// Groups whose members are not base ingredients.
 const COMPOSITE_GROUPS: &[&str] = &["dish", "mixture"];
 /// The group of kitchen tools, containers and appliances: never a substitute for an ingredient.
@@ -430,6 +501,16 @@ impl EmbeddingSimilarity {
             .into_iter()
             .filter(|w| !is_stop_word(w))
             .collect();
+        if !self.taxonomy.lists(&stem_key(&canonical)) {
+            let described: Vec<String> = kept
+                .iter()
+                .filter(|w| !DESCRIPTORS.contains(&w.as_str()))
+                .cloned()
+                .collect();
+            if !described.is_empty() {
+                kept = described;
+            }
+        }
         let whole = self.taxonomy.lookup_key(&stem_key(&canonical));
         let listed_whole = self.taxonomy.lists(&stem_key(&canonical));
         while kept.len() > 1 && kept.last().is_some_and(|w| is_form_word(w)) {
