@@ -12,6 +12,7 @@ pub mod parse;
 pub mod similarity;
 pub mod stats;
 pub mod taxonomy;
+pub mod write;
 
 pub use bundle::load;
 pub use error::{ErrorCode, FoonError, Result};
