@@ -8,6 +8,7 @@ use foon_core::{limits, write};
 use proptest::prelude::*;
 
 type Obj = (String, bool, Option<Option<u32>>);
+type Shape = Vec<(Vec<Obj>, String, Vec<String>, Vec<Obj>)>;
 
 fn objects(list: &[ParsedObject]) -> Vec<Obj> {
     list.iter()
@@ -22,7 +23,7 @@ fn objects(list: &[ParsedObject]) -> Vec<Obj> {
 }
 
 /// A subgraph without line numbers: what must survive writing and reading back.
-fn shape(g: &Subgraph) -> Vec<(Vec<Obj>, String, Vec<String>, Vec<Obj>)> {
+fn shape(g: &Subgraph) -> Shape {
     g.units
         .iter()
         .map(|u| {

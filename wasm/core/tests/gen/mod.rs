@@ -196,7 +196,7 @@ pub fn render(file: &File, style: Style) -> String {
             kind.to_string()
         }
     };
-    let mut object = |lines: &mut Vec<String>, o: &Obj, tag: &mut dyn FnMut(char) -> String| {
+    let object = |lines: &mut Vec<String>, o: &Obj, tag: &mut dyn FnMut(char) -> String| {
         let flag = u8::from(o.moves);
         let head = tag('O');
         lines.push(match o.goal {
