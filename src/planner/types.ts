@@ -51,3 +51,98 @@ export interface FoonErrorData {
   line?: number;
   column?: number;
 }
+
+// ---- Plans (docs/plan-format.md; wasm/core/src/plan.rs) ----
+
+export interface QueryIngredient {
+  object: string;
+  state: string;
+}
+
+/** A recipe query: the shape of the Recipe1M+-derived query files. */
+export interface Query {
+  id?: string;
+  type: string;
+  ingredients: QueryIngredient[];
+}
+
+export interface PlanRequest {
+  query: Query;
+  /** false returns the reference task tree as retrieved (default true). */
+  modify?: boolean;
+  /** Query object -> the equivalent label the user chose. */
+  overrides?: Record<string, string>;
+}
+
+export interface PlanNode {
+  label: string;
+  states: string[];
+  ingredients: string[];
+  container: string | null;
+}
+
+export type UnitOrigin = "reference" | "renamed" | "grafted" | "copied" | "attached";
+
+export interface PlanUnit {
+  inputs: PlanNode[];
+  motion: string;
+  outputs: PlanNode[];
+  origin: UnitOrigin;
+  sources: string[];
+}
+
+export interface Alternative {
+  label: string;
+  similarity: number;
+}
+
+export type SubstitutionCase = 1 | 2 | 3 | 4;
+
+export interface IngredientOutcome {
+  object: string;
+  state: string;
+  case: SubstitutionCase | null;
+  match: { label: string; state: string; similarity: number } | null;
+  alternatives: Alternative[];
+  low_confidence: boolean;
+  overridden: boolean;
+  status: "planned" | "unplannable";
+  reason?: string;
+}
+
+export interface ProgressLine {
+  ingredient: string;
+  state: { physical_state: string; location: string }[];
+  motion: string[];
+  end_product: string;
+}
+
+export interface Plan {
+  format_version: number;
+  query: Query;
+  dish_class: { index: number; name: string } | null;
+  notes: string[];
+  modified: boolean;
+  goal: {
+    label: string;
+    states: string[];
+    ingredients: string[];
+    subgraph: string;
+    score: number;
+    dish_class: number | null;
+  };
+  units: PlanUnit[];
+  ingredients: IngredientOutcome[];
+  removed: string[];
+  progress_lines: ProgressLine[];
+  steps: string[];
+}
+
+/** Export formats of a plan. */
+export type ExportFormat = "json" | "foon" | "pddl" | "pddl-domain" | "pddl-problem" | "progress";
+
+/** Equivalents for a name, as `cli similar` prints them. */
+export interface SimilarResult {
+  query: string;
+  candidates: Alternative[];
+}

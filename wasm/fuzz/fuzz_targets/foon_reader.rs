@@ -12,25 +12,47 @@ use foon_core::parse::{parse_bytes, parse_str, ParsedObject, Subgraph};
 use foon_core::{limits, load, write, KnowledgeBase};
 use libfuzzer_sys::fuzz_target;
 
-type Shape = Vec<(Vec<(String, bool, Option<Option<u32>>)>, String, Vec<String>, Vec<(String, bool, Option<Option<u32>>)>)>;
+type Shape = Vec<(
+    Vec<(String, bool, Option<Option<u32>>)>,
+    String,
+    Vec<String>,
+    Vec<(String, bool, Option<Option<u32>>)>,
+)>;
 
 fn objects(list: &[ParsedObject]) -> Vec<(String, bool, Option<Option<u32>>)> {
     list.iter()
-        .map(|o| (o.node.to_string(), o.moves, o.goal.as_ref().map(|g| g.dish_class)))
+        .map(|o| {
+            (
+                o.node.to_string(),
+                o.moves,
+                o.goal.as_ref().map(|g| g.dish_class),
+            )
+        })
         .collect()
 }
 
 fn shape(g: &Subgraph) -> Shape {
     g.units
         .iter()
-        .map(|u| (objects(&u.inputs), u.motion.clone(), u.times.clone(), objects(&u.outputs)))
+        .map(|u| {
+            (
+                objects(&u.inputs),
+                u.motion.clone(),
+                u.times.clone(),
+                objects(&u.outputs),
+            )
+        })
         .collect()
 }
 
 fn check_label(text: &str, label: bool) {
     assert!(!text.is_empty());
     assert!(text.chars().count() <= limits::MAX_LABEL_CHARS);
-    let again = if label { normalize_label(text) } else { normalize_word(text) };
+    let again = if label {
+        normalize_label(text)
+    } else {
+        normalize_word(text)
+    };
     assert_eq!(again, text, "not in normal form");
 }
 
@@ -62,7 +84,8 @@ fn check_kb(kb: &KnowledgeBase) {
     }
     // exported as a bundle and read back: the same universal FOON
     let text = write::kb_bundle(kb);
-    let again = load(&[("export.foon".to_string(), text.into_bytes())]).expect("an exported KB reads back");
+    let again =
+        load(&[("export.foon".to_string(), text.into_bytes())]).expect("an exported KB reads back");
     assert_eq!(again.nodes, kb.nodes);
     assert_eq!(again.units, kb.units);
     assert_eq!(again.provenance, kb.provenance);
@@ -77,7 +100,11 @@ fuzz_target!(|data: &[u8]| {
             let text = write::subgraph_text(&g);
             let again = parse_str("fuzz.txt", &text).expect("written FOON text reads back");
             assert_eq!(shape(&again), shape(&g));
-            assert!(again.warnings.is_empty(), "written text has warnings: {:?}", again.warnings);
+            assert!(
+                again.warnings.is_empty(),
+                "written text has warnings: {:?}",
+                again.warnings
+            );
         }
         Err(e) => assert!(e.file.as_deref() == Some("fuzz.txt") && !e.message.is_empty()),
     }
@@ -87,16 +114,26 @@ fuzz_target!(|data: &[u8]| {
     // two files, merged in both orders (split after a line end chosen by the first byte)
     if let Some(&pick) = data.first() {
         let want = data.len() * pick as usize / 256;
-        let cut = data[want..].iter().position(|&b| b == b'\n').map_or(data.len(), |p| want + p + 1);
+        let cut = data[want..]
+            .iter()
+            .position(|&b| b == b'\n')
+            .map_or(data.len(), |p| want + p + 1);
         let (a, b) = data.split_at(cut);
-        let files = [("a.txt".to_string(), a.to_vec()), ("b.txt".to_string(), b.to_vec())];
+        let files = [
+            ("a.txt".to_string(), a.to_vec()),
+            ("b.txt".to_string(), b.to_vec()),
+        ];
         let forward = load(&files);
         let backward = load(&[files[1].clone(), files[0].clone()]);
         match (forward, backward) {
             (Ok(x), Ok(y)) => assert_eq!(x, y, "merge depends on file order"),
             // with two bad files the first one's error is reported, so the errors may differ
             (Err(_), Err(_)) => {}
-            (x, y) => panic!("one order loads, the other does not: {:?} / {:?}", x.err(), y.err()),
+            (x, y) => panic!(
+                "one order loads, the other does not: {:?} / {:?}",
+                x.err(),
+                y.err()
+            ),
         }
     }
 });
