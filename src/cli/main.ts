@@ -4,16 +4,19 @@
 import { parseArgs } from "node:util";
 import { describeError } from "../planner/index";
 import { loadPlannerFromDisk, STARTER_KB_DIR } from "../planner/node";
+import { evalCommand } from "./eval";
 
 const USAGE = `usage: npm run cli -- <command> [options]
 
 commands:
   stats [--kb <dir-or-file>]      knowledge-base statistics as JSON (default: the starter knowledge base)
+  eval --queries <dir> [--kb ...] metrics of the plans of many queries (see \`npm run eval -- --help\`)
 `;
 
 type Command = (args: string[]) => void;
 
 const commands: Record<string, Command> = {
+  eval: evalCommand,
   stats(args) {
     const { values } = parseArgs({ args, options: { kb: { type: "string" } }, strict: true });
     const planner = loadPlannerFromDisk(values.kb ?? STARTER_KB_DIR);
