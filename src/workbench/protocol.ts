@@ -1,0 +1,17 @@
+// Messages between the workbench page and its batch worker.
+
+import type { KnowledgeBaseFile, Plan } from "../planner/types";
+import type { EvalRecord, LoadedQuery, Variant } from "../eval/types";
+
+export interface RunRequest {
+  kind: "run";
+  knowledgeBase: KnowledgeBaseFile[];
+  queries: LoadedQuery[];
+  variants: Variant[];
+}
+
+export type WorkerMessage =
+  | { kind: "loaded"; subgraphs: number; units: number }
+  | { kind: "result"; record: EvalRecord; plan: Plan | null; done: number; total: number }
+  | { kind: "finished" }
+  | { kind: "failed"; message: string };
