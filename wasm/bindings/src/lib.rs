@@ -3,7 +3,8 @@
 //! carrying a stable `code` and, for file errors, `file`, `line` and `column`.
 
 use foon_core::parse::{parse_bytes, Subgraph};
-use foon_core::{bundle, FoonError, KnowledgeBase};
+use foon_core::similarity::{ExactMatch, Similarity};
+use foon_core::{bundle, EmbeddingSimilarity, ErrorCode, FoonError, KnowledgeBase};
 use wasm_bindgen::prelude::*;
 
 /// Converts a core error into a JS `Error` with `code`, `file`, `line`, `column` properties.
@@ -62,10 +63,17 @@ impl KnowledgeBaseLoader {
         Ok(())
     }
 
-    /// Merges the files into a universal FOON and returns the planner handle.
-    pub fn finish(self) -> Result<Planner, JsValue> {
+    /// Merges the files into a universal FOON and returns the planner handle. With `embeddings` (the
+    /// food embedding table) ingredients are matched by meaning, otherwise by exact name only.
+    pub fn finish(self, embeddings: Option<Vec<u8>>) -> Result<Planner, JsValue> {
+        let similarity: Box<dyn Similarity> = match embeddings {
+            Some(bytes) => {
+                Box::new(EmbeddingSimilarity::from_bytes(&bytes).map_err(|e| js_error(&e))?)
+            }
+            None => Box::new(ExactMatch),
+        };
         let kb = KnowledgeBase::merge(&self.graphs).map_err(|e| js_error(&e))?;
-        Ok(Planner { kb })
+        Ok(Planner { kb, similarity })
     }
 }
 
@@ -73,6 +81,12 @@ impl KnowledgeBaseLoader {
 #[wasm_bindgen]
 pub struct Planner {
     kb: KnowledgeBase,
+    similarity: Box<dyn Similarity>,
+}
+
+fn from_json<'a, T: serde::Deserialize<'a>>(text: &'a str, what: &str) -> Result<T, JsValue> {
+    serde_json::from_str(text)
+        .map_err(|e| js_error(&FoonError::new(ErrorCode::BadQuery, format!("{what}: {e}"))))
 }
 
 #[wasm_bindgen]
@@ -80,6 +94,18 @@ impl Planner {
     /// Statistics of the knowledge base, as JSON (`foon_core::Stats`).
     pub fn stats(&self) -> Result<String, JsValue> {
         to_json(&foon_core::stats(&self.kb))
+    }
+
+    /// The knowledge-base ingredients most similar to each name (`names_json`: a JSON array of
+    /// strings), best first, as JSON `[{query, candidates: [{label, similarity}]}]`.
+    pub fn similar(&self, names_json: &str, top: usize) -> Result<String, JsValue> {
+        let names: Vec<String> = from_json(names_json, "names must be a JSON array of strings")?;
+        to_json(&foon_core::similar(
+            &self.kb,
+            self.similarity.as_ref(),
+            &names,
+            top,
+        ))
     }
 
     /// Reader warnings (units skipped, empty arguments), as JSON error objects.

@@ -3,6 +3,7 @@
 //! exposes it to JavaScript.
 
 pub mod bundle;
+pub mod embedding;
 pub mod error;
 pub mod kb;
 pub mod label;
@@ -11,6 +12,7 @@ pub mod model;
 pub mod parse;
 pub mod similarity;
 pub mod stats;
+pub mod substitute;
 pub mod taxonomy;
 
 pub use bundle::load;
@@ -18,3 +20,4 @@ pub use error::{ErrorCode, FoonError, Result};
 pub use kb::{Goal, KnowledgeBase};
 pub use model::{FunctionalUnit, NodeId, ObjectNode, State, StateArg, UnitId, UnitObject};
 pub use stats::{stats, Stats};
+pub use substitute::{similar, EmbeddingSimilarity, SimilarResult};
