@@ -9,6 +9,11 @@ interface WithPlan {
   plan(request: PlanRequest): Plan;
 }
 
+/** Whether this build's planner module can plan (the planner core lands on main in steps). */
+export function plannerCanPlan(planner: object): boolean {
+  return hasPlan(planner);
+}
+
 function hasPlan(value: object): value is WithPlan {
   return typeof (value as Partial<WithPlan>).plan === "function";
 }

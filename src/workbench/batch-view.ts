@@ -207,7 +207,10 @@ export class BatchView {
     if (this.worker === null && this.status.dataset.state === undefined) {
       this.setStatus(`Batch of ${batch.created.slice(0, 16).replace("T", " ")}: ${batch.records.length} plans of ${batch.queries.length} queries (${batch.status}), knowledge base ${batch.knowledge_base}.`, "idle");
     }
-    metrics.replaceChildren(...(blind ? [el("p", { text: "Metrics are hidden in blind mode (they tell which plan was modified)." })] : metricsTables(batch.records)));
+    const tables = metricsTables(batch.records);
+    metrics.replaceChildren(
+      ...(blind ? [el("p", { text: "Metrics are hidden in blind mode (they tell which plan was modified)." })] : tables.length === 0 ? [el("p", { text: "No plans yet." })] : tables),
+    );
     const rater = this.bench.settings.rater;
     const rated = (q: LoadedQuery): number =>
       VARIANTS.reduce((n, variant) => n + ratingItems(q.query.ingredients).filter((i) => this.bench.rating({ rater, type: q.query.type, id: q.query.id, variant, ...i }) !== undefined).length, 0);

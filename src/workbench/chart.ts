@@ -57,8 +57,8 @@ export function thresholdChart(curves: readonly Curve[]): SVGSVGElement {
   types.forEach((type, i) => {
     const row = legend.append("g").attr("transform", `translate(0,${i * 20})`);
     row.append("line").attr("x1", 0).attr("x2", 22).attr("y1", 0).attr("y2", 0).attr("stroke", colour(type)).attr("stroke-width", 3);
-    const n = curves.filter((c) => c.type === type).map((c) => `${c.variant === "modified" ? "m" : "u"} ${c.recipes}`).join(", ");
-    row.append("text").attr("x", 28).attr("y", 4).text(`${type} (${n})`);
+    const n = (variant: string): string => String(curves.find((c) => c.type === type && c.variant === variant)?.recipes ?? 0);
+    row.append("text").attr("x", 28).attr("y", 4).text(`${type} (n = ${n("modified")} / ${n("unmodified")})`);
   });
   const keys = legend.append("g").attr("transform", `translate(0,${types.length * 20 + 16})`);
   keys.append("line").attr("x1", 0).attr("x2", 22).attr("stroke", "#333").attr("stroke-width", 2);

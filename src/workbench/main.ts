@@ -4,7 +4,7 @@
 import { parseRatingsFile, ratingsToCsv, ratingsToJson, type Rating } from "../eval/ratings";
 import { BatchView } from "./batch-view";
 import { CurvesView } from "./curves-view";
-import { byId, download, el, timestamp } from "./dom";
+import { byId, download, timestamp } from "./dom";
 import { RateView } from "./rate-view";
 import { Workbench } from "./state";
 
@@ -116,6 +116,5 @@ start().catch((e: unknown) => {
     notice.hidden = false;
     text.textContent = `The workbench could not start: ${e instanceof Error ? e.message : String(e)}`;
   }
-  document.body.append(el("p", { class: "fatal", text: "" }));
   document.body.dataset.ready = "error";
 });

@@ -36,6 +36,8 @@ export class RateView {
   private cursor = 0;
   private showTrees = false;
   private items: Item[] = [];
+  /** The recipe `items` belong to (ratings go to it even if the position moved meanwhile). */
+  private itemsRecipe: LoadedQuery | null = null;
   private renderToken = 0;
   private readonly root = byId("rate-body", HTMLElement);
 
@@ -66,8 +68,14 @@ export class RateView {
     return i < 0 ? 0 : i;
   }
 
+  private forgetItems(): void {
+    this.items = [];
+    this.itemsRecipe = null;
+  }
+
   async open(key: string): Promise<void> {
     this.cursor = 0;
+    this.forgetItems();
     await this.bench.saveSettings({ position: key });
   }
 
@@ -76,6 +84,7 @@ export class RateView {
     if (queue.length === 0) return;
     const next = Math.min(queue.length - 1, Math.max(0, this.position(queue) + step));
     this.cursor = 0;
+    this.forgetItems(); // keys pressed before the next recipe is shown rate nothing
     await this.bench.saveSettings({ position: recipeKey(queue[next]!.query) });
   }
 
@@ -118,10 +127,9 @@ export class RateView {
   }
 
   private async rate(i: number, score: Score, advance: boolean): Promise<void> {
-    const queue = this.queue();
     const item = this.items[i];
-    const recipe = queue[this.position(queue)];
-    if (item === undefined || recipe === undefined) return;
+    const recipe = this.itemsRecipe;
+    if (item === undefined || recipe === null) return;
     if (advance) this.cursor = Math.min(this.items.length - 1, i + 1);
     const { type, id } = recipe.query;
     await this.bench.rate([{ rater: this.bench.settings.rater, type, id, variant: item.variant, object: item.object, state: item.state, score, updated: new Date().toISOString() }]);
@@ -133,7 +141,8 @@ export class RateView {
     const counter = byId("rate-position", HTMLElement);
     if (queue.length === 0) {
       counter.textContent = "";
-      this.items = [];
+      this.forgetItems();
+      delete this.root.dataset.recipe;
       this.root.replaceChildren(el("p", { text: "Run a batch first: its recipes are rated here." }));
       return;
     }
@@ -147,6 +156,7 @@ export class RateView {
     const records = this.bench.batch?.records.filter((r) => recipeKey(r.recipe) === key) ?? [];
     const items = queryItems(recipe.query);
     this.items = order.flatMap((variant) => items.map((i) => ({ variant, ...i })));
+    this.itemsRecipe = recipe;
     this.cursor = Math.min(this.cursor, this.items.length - 1);
 
     const ratedCount = this.items.filter((i) => this.bench.rating({ rater, type: recipe.query.type, id: recipe.query.id, ...i }) !== undefined).length;
@@ -159,6 +169,7 @@ export class RateView {
       el("p", { class: "query", text: `Asked for: ${recipe.query.ingredients.map((i) => `${i.state} ${i.object}`).join(", ")}` }),
       el("div", { class: "panels" }, ...panels),
     );
+    this.root.dataset.recipe = key;
     this.setCursor(this.cursor);
   }
 
