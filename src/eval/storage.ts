@@ -92,8 +92,11 @@ export class EvalStore {
         db.createObjectStore("meta");
       }
     };
+    req.onblocked = () => undefined; // an older tab holds the database: open() resolves once it closes it
     try {
-      return new EvalStore(await request(req));
+      const db = await request(req);
+      db.onversionchange = () => db.close(); // a newer workbench in another tab upgrades the schema
+      return new EvalStore(db);
     } catch (e) {
       throw toStorageError(e, "cannot open the browser database");
     }
