@@ -15,10 +15,11 @@ import { parseQuery, sortQueries } from "../eval/queries";
 import { runBatch } from "../eval/runner";
 import type { LoadedQuery, Variant } from "../eval/types";
 
-export const EVAL_USAGE = `usage: npm run eval -- --queries <dir> [--kb <dir-or-file>] [--no-modify | --both] [--out <dir>] [--write-plans] [--quiet]
+export const EVAL_USAGE = `usage: npm run eval -- --queries <dir> [--kb <dir-or-file>] [--exact] [--no-modify | --both] [--out <dir>] [--write-plans] [--quiet]
 
   --queries <dir>   recipe-query JSON files (searched recursively), e.g. ../shared/recipes/dev
   --kb <path>       knowledge base: folder of FOON files, a file or a .foon bundle (default: the starter KB)
+  --exact           match ingredient names exactly (no embedding table)
   --no-modify       evaluate the reference task trees as retrieved (no tree modification)
   --both            evaluate both, with and without modification
   --out <dir>       where to write eval-<variant>.json, -summary.csv, -recipes.csv (default: test-results/eval)
@@ -28,7 +29,7 @@ Exits with 1 when a structural invariant breaks (duplicated units, units before 
 `;
 
 /** Every `.json` file under a folder (sorted), or the file itself. */
-export function readQueries(path: string): LoadedQuery[] {
+export function readQueryFolder(path: string): LoadedQuery[] {
   const files: string[] = [];
   const walk = (p: string): void => {
     if (statSync(p).isDirectory()) for (const name of readdirSync(p).sort()) walk(join(p, name));
@@ -44,6 +45,7 @@ export function evalCommand(args: string[]): void {
     args,
     options: {
       kb: { type: "string" },
+      exact: { type: "boolean", default: false },
       queries: { type: "string" },
       "no-modify": { type: "boolean", default: false },
       both: { type: "boolean", default: false },
@@ -64,8 +66,8 @@ export function evalCommand(args: string[]): void {
   const kbPath = resolve(values.kb ?? STARTER_KB_DIR);
   const out = resolve(values.out ?? join(ROOT, "test-results/eval"));
 
-  const queries = readQueries(resolve(values.queries));
-  const planner = loadPlannerFromDisk(kbPath);
+  const queries = readQueryFolder(resolve(values.queries));
+  const planner = loadPlannerFromDisk(kbPath, { exact: values.exact });
   for (const w of planner.warnings()) if (!values.quiet) console.error(`warning: ${describeError(w)}`);
   const plan = planFunction(planner);
 

@@ -11,6 +11,17 @@ export function nodeKey(node: PlanNode): string {
   return JSON.stringify([node.label, sorted(node.states), sorted(node.ingredients), node.container]);
 }
 
+/**
+ * States of things a kitchen has before cooking starts. A node in only such states, not inside anything
+ * and containing nothing (an empty bowl, a clean knife, a pot lid, a whole onion), is available from the
+ * start even when a later unit makes it again (a bowl emptied, a lid put back).
+ */
+export const START_STATES: ReadonlySet<string> = new Set(["empty", "clean", "whole", "raw", "off", "off (ready)", "unopened", "closed", "dry"]);
+
+export function availableAtStart(node: PlanNode): boolean {
+  return node.ingredients.length === 0 && node.container === null && node.states.every((s) => START_STATES.has(s));
+}
+
 /** Identity of a unit: motion and its input and output nodes (as sets). */
 export function unitKey(unit: PlanUnit): string {
   return JSON.stringify([unit.motion, sorted(unit.inputs.map(nodeKey)), sorted(unit.outputs.map(nodeKey))]);
@@ -54,9 +65,9 @@ export function structureMetrics(units: readonly PlanUnit[], goal: Plan["goal"])
     if (seen.has(key)) duplicates += 1;
     seen.add(key);
 
-    const early = [...inputKeys[i]!].some((k) => {
-      const first = firstProducer.get(k);
-      return first !== undefined && first >= i;
+    const early = unit.inputs.some((node) => {
+      const first = firstProducer.get(nodeKey(node));
+      return first !== undefined && first >= i && !availableAtStart(node);
     });
     if (early) beforeInputs += 1;
 

@@ -2,7 +2,7 @@
 // and errors as `PlannerError` with a stable code. Views and the CLI use only this module.
 
 import initWasmModule, { initSync, KnowledgeBaseLoader, type Planner as WasmPlanner } from "../../wasm/pkg/foon_wasm.js";
-import type { ErrorCode, FoonErrorData, KnowledgeBaseFile, Stats } from "./types";
+import type { ErrorCode, ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanRequest, SimilarResult, Stats } from "./types";
 
 export type * from "./types";
 
@@ -59,10 +59,12 @@ export function toPlannerError(thrown: unknown): PlannerError {
 
 let ready: Promise<void> | null = null;
 let initialised = false;
+let memory: WebAssembly.Memory | null = null;
 
 /** Initialises the WASM module once (browser: fetches it next to the glue code, or from `source`). */
 export function initPlanner(source?: URL | string | Response | BufferSource): Promise<void> {
-  ready ??= initWasmModule(source === undefined ? undefined : { module_or_path: source }).then(() => {
+  ready ??= initWasmModule(source === undefined ? undefined : { module_or_path: source }).then((exports) => {
+    memory = exports.memory;
     initialised = true;
   });
   return ready;
@@ -71,9 +73,14 @@ export function initPlanner(source?: URL | string | Response | BufferSource): Pr
 /** Initialises the WASM module synchronously from its bytes (Node, Vitest, workers that hold the bytes). */
 export function initPlannerSync(bytes: BufferSource): void {
   if (initialised) return;
-  initSync({ module: bytes });
+  memory = initSync({ module: bytes }).memory;
   initialised = true;
   ready = Promise.resolve();
+}
+
+/** Size of the WASM linear memory in bytes (it only grows, so this is also its peak). */
+export function wasmMemoryBytes(): number {
+  return memory?.buffer.byteLength ?? 0;
 }
 
 function assertInitialised(): void {
@@ -99,8 +106,12 @@ function parseJson<T>(call: () => string): T {
 export class FoonPlanner {
   private constructor(private readonly handle: WasmPlanner) {}
 
-  /** Parses and merges knowledge-base files; a malformed file throws a PlannerError naming file and line. */
-  static load(files: readonly KnowledgeBaseFile[]): FoonPlanner {
+  /**
+   * Parses and merges knowledge-base files; a malformed file throws a PlannerError naming file and line.
+   * `embeddings` is the food embedding table (public/data/food-embeddings.bin); without it the planner
+   * matches ingredient names exactly.
+   */
+  static load(files: readonly KnowledgeBaseFile[], embeddings?: Uint8Array): FoonPlanner {
     assertInitialised();
     const loader = new KnowledgeBaseLoader();
     try {
@@ -110,7 +121,7 @@ export class FoonPlanner {
       throw toPlannerError(thrown);
     }
     try {
-      return new FoonPlanner(loader.finish()); // finish() consumes the loader, even when it fails
+      return new FoonPlanner(loader.finish(embeddings)); // finish() consumes the loader, even when it fails
     } catch (thrown) {
       throw toPlannerError(thrown);
     }
@@ -118,6 +129,25 @@ export class FoonPlanner {
 
   stats(): Stats {
     return parseJson<Stats>(() => this.handle.stats());
+  }
+
+  /** Plans a query: reference goal, reference task tree, modification (unless `modify: false`). */
+  plan(request: PlanRequest): Plan {
+    return parseJson<Plan>(() => this.handle.plan(JSON.stringify(request)));
+  }
+
+  /** Plans a query and renders it: plan JSON, FOON text (plain dialect), PDDL, or progress-line JSON. */
+  exportPlan(request: PlanRequest, format: ExportFormat): string {
+    try {
+      return this.handle.export(JSON.stringify(request), format);
+    } catch (thrown) {
+      throw toPlannerError(thrown);
+    }
+  }
+
+  /** The knowledge-base ingredients most similar to each name, best first, as the planner ranks them. */
+  similar(names: readonly string[], top = 5): SimilarResult[] {
+    return parseJson<SimilarResult[]>(() => this.handle.similar(JSON.stringify(names), top));
   }
 
   /** Problems that did not stop the load (units skipped, with file and line). */

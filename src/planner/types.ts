@@ -139,7 +139,7 @@ export interface Plan {
 }
 
 /** Export formats of a plan. */
-export type ExportFormat = "json" | "foon" | "pddl" | "progress";
+export type ExportFormat = "json" | "foon" | "pddl" | "pddl-domain" | "pddl-problem" | "progress";
 
 /** Equivalents for a name, as `cli similar` prints them. */
 export interface SimilarResult {

@@ -14,6 +14,7 @@ import type { Workbench } from "./state";
 import { metricsTables, recipeRows, recipeTable, type SortState } from "./tables";
 
 const BUNDLED_KB = "kb/default.foon";
+const EMBEDDINGS = "data/food-embeddings.bin";
 const VARIANTS: Variant[] = ["modified", "unmodified"];
 /** Results are stored in groups of this many (and at the end). */
 const SAVE_EVERY = 10;
@@ -46,6 +47,16 @@ async function knowledgeBase(files: readonly File[]): Promise<{ name: string; fi
   const response = await fetch(url);
   if (!response.ok) throw new Error(`${url.pathname}: HTTP ${response.status}`);
   return { name: "default.foon (bundled)", files: [{ name: "default.foon", bytes: new Uint8Array(await response.arrayBuffer()) }] };
+}
+
+/** The embedding table the app ships; null (exact matching) if it cannot be fetched. */
+async function embeddings(): Promise<Uint8Array | null> {
+  try {
+    const response = await fetch(new URL(EMBEDDINGS, document.baseURI));
+    return response.ok ? new Uint8Array(await response.arrayBuffer()) : null;
+  } catch {
+    return null;
+  }
 }
 
 export class BatchView {
@@ -110,10 +121,11 @@ export class BatchView {
       this.setStatus(`Cannot read the knowledge base: ${e instanceof Error ? e.message : String(e)}`, "failed");
       return;
     }
+    const table = await embeddings();
     const batch: StoredBatch = {
       id: `${timestamp()}-${Math.random().toString(36).slice(2, 8)}`,
       created: new Date().toISOString(),
-      knowledge_base: kb.name,
+      knowledge_base: table === null ? `${kb.name}, exact names (no embedding table)` : kb.name,
       variants: VARIANTS,
       queries,
       records: [],
@@ -162,8 +174,8 @@ export class BatchView {
       this.finish();
       void flush("failed").then(() => this.setStatus(`The batch worker failed: ${event.message}`, "failed"));
     };
-    const request: RunRequest = { kind: "run", knowledgeBase: kb.files, queries, variants: VARIANTS };
-    worker.postMessage(request);
+    const request: RunRequest = { kind: "run", knowledgeBase: kb.files, embeddings: table, queries, variants: VARIANTS };
+    worker.postMessage(request, [...kb.files.map((f) => f.bytes.buffer), ...(table === null ? [] : [table.buffer])]);
   }
 
   private finish(): void {

@@ -6,6 +6,8 @@ import type { EvalRecord, LoadedQuery, Variant } from "../eval/types";
 export interface RunRequest {
   kind: "run";
   knowledgeBase: KnowledgeBaseFile[];
+  /** The food embedding table; null plans with exact name matching. */
+  embeddings: Uint8Array | null;
   queries: LoadedQuery[];
   variants: Variant[];
 }

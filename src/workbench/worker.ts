@@ -11,7 +11,7 @@ const post = (message: WorkerMessage): void => postMessage(message);
 
 async function run(request: RunRequest): Promise<void> {
   await initPlanner();
-  const planner = FoonPlanner.load(request.knowledgeBase);
+  const planner = FoonPlanner.load(request.knowledgeBase, request.embeddings ?? undefined);
   const stats = planner.stats();
   post({ kind: "loaded", subgraphs: stats.subgraphs, units: stats.units });
   const plan = planFunction(planner);

@@ -8,16 +8,12 @@ import { join } from "node:path";
 import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
 import type { Browser, Download, Page } from "playwright-core";
 import { ROOT } from "../../src/planner/node";
-import { FoonPlanner } from "../../src/planner/index";
-import { plannerCanPlan } from "../../src/eval/planner-adapter";
 import type { EvalResults } from "../../src/eval/format";
 import type { RatingsFile } from "../../src/eval/ratings";
 import { launch, launchPersistent, screenshot, watchErrors } from "./browser";
 import { sharedPath } from "../unit/helpers";
 
 const TYPES = ["cake", "drinks", "salad", "soup"];
-/** Until plan() lands on main, the batch tests cannot run. */
-const canPlan = plannerCanPlan(FoonPlanner.prototype);
 let browser: Browser;
 let queryDir: string;
 let queryFiles: string[];
@@ -90,7 +86,7 @@ async function pressedScores(page: Page): Promise<string[]> {
 }
 
 describe("evaluation workbench", () => {
-  it.skipIf(!canPlan)("runs a batch in a worker; its metrics equal the CLI's", async () => {
+  it("runs a batch in a worker; its metrics equal the CLI's", async () => {
     const context = await browser.newContext({ acceptDownloads: true });
     const page = await context.newPage();
     const errors = watchErrors(page);
@@ -127,7 +123,7 @@ describe("evaluation workbench", () => {
     await context.close();
   });
 
-  it.skipIf(!canPlan)("keyboard ratings survive a reload and a browser restart, and make the threshold curves", async () => {
+  it("keyboard ratings survive a reload and a browser restart, and make the threshold curves", async () => {
     const profile = mkdtempSync(join(tmpdir(), "wb-profile-"));
     try {
       let context = await launchPersistent(profile);

@@ -1,26 +1,23 @@
 // The evaluation on the real planner: a few dev queries per dish type, FOON-111 and the starter KB.
 import { describe, expect, it } from "vitest";
 import { metricsTable } from "../../src/eval/aggregate";
-import { brokenInvariants } from "../../src/eval/format";
-import { planFunction, plannerCanPlan } from "../../src/eval/planner-adapter";
+import { planFunction } from "../../src/eval/planner-adapter";
 import { runBatch } from "../../src/eval/runner";
-import { readQueries } from "../../src/cli/eval";
-import { FoonPlanner } from "../../src/planner/index";
+import { readQueryFolder } from "../../src/cli/eval";
 import { loadPlannerFromDisk, STARTER_KB_DIR } from "../../src/planner/node";
 import { sharedPath } from "./helpers";
 
-const canPlan = plannerCanPlan(FoonPlanner.prototype);
-
-describe.skipIf(!canPlan)("evaluation with the real planner", () => {
-  const queries = readQueries(sharedPath("recipes/dev")).filter((_, i) => i % 20 === 0);
+describe("evaluation with the real planner", () => {
+  const queries = readQueryFolder(sharedPath("recipes/dev")).filter((_, i) => i % 20 === 0);
 
   for (const [name, kb] of [["FOON-111", () => sharedPath("foon/subgraphs-plain")], ["starter KB", () => STARTER_KB_DIR]] as const) {
-    it(`plans ${queries.length} dev queries with ${name} in both variants, structural invariants hold`, () => {
+    it(`plans ${queries.length} dev queries with ${name} in both variants`, () => {
       const planner = loadPlannerFromDisk(kb());
       const records = runBatch(planFunction(planner), queries, ["modified", "unmodified"], () => performance.now());
       planner.free();
       const table = [...metricsTable(records, "modified"), ...metricsTable(records, "unmodified")];
-      expect(brokenInvariants(table)).toEqual([]);
+      // the invariants themselves are checked on all dev queries by `npm test` (scripts/test.sh)
+      expect(table.every((r) => r.duplicate_units === 0 && r.dead_units === 0)).toBe(true);
       const all = table.filter((r) => r.group === "all");
       for (const row of all) expect(row.plans).toBeGreaterThan(0);
       // modification brings the query's ingredients into the tree

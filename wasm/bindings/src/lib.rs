@@ -4,7 +4,10 @@
 
 use foon_core::parse::{parse_bytes, Subgraph};
 use foon_core::similarity::{ExactMatch, Similarity};
-use foon_core::{bundle, EmbeddingSimilarity, ErrorCode, FoonError, KnowledgeBase};
+use foon_core::{
+    bundle, EmbeddingSimilarity, ErrorCode, FoonError, KnowledgeBase, Plan, PlanRequest,
+    PlannerIndex,
+};
 use wasm_bindgen::prelude::*;
 
 /// Converts a core error into a JS `Error` with `code`, `file`, `line`, `column` properties.
@@ -73,7 +76,12 @@ impl KnowledgeBaseLoader {
             None => Box::new(ExactMatch),
         };
         let kb = KnowledgeBase::merge(&self.graphs).map_err(|e| js_error(&e))?;
-        Ok(Planner { kb, similarity })
+        let index = PlannerIndex::new(&kb);
+        Ok(Planner {
+            kb,
+            index,
+            similarity,
+        })
     }
 }
 
@@ -81,6 +89,7 @@ impl KnowledgeBaseLoader {
 #[wasm_bindgen]
 pub struct Planner {
     kb: KnowledgeBase,
+    index: PlannerIndex,
     similarity: Box<dyn Similarity>,
 }
 
@@ -94,6 +103,38 @@ impl Planner {
     /// Statistics of the knowledge base, as JSON (`foon_core::Stats`).
     pub fn stats(&self) -> Result<String, JsValue> {
         to_json(&foon_core::stats(&self.kb))
+    }
+
+    fn run(&self, request_json: &str) -> Result<Plan, JsValue> {
+        let request: PlanRequest = from_json(request_json, "plan request")?;
+        foon_core::plan(&self.kb, &self.index, self.similarity.as_ref(), &request)
+            .map_err(|e| js_error(&e))
+    }
+
+    /// Plans a request (`{query, modify?, overrides?}` as JSON) and returns the plan as JSON.
+    pub fn plan(&self, request_json: &str) -> Result<String, JsValue> {
+        to_json(&self.run(request_json)?)
+    }
+
+    /// Plans a request and renders it: `json`, `foon` (plain FOON text), `pddl` (domain and problem),
+    /// `pddl-domain`, `pddl-problem`, or `progress` (the published progress-line JSON).
+    pub fn export(&self, request_json: &str, format: &str) -> Result<String, JsValue> {
+        let plan = self.run(request_json)?;
+        match format {
+            "json" => serde_json::to_string_pretty(&plan).map_err(|e| JsValue::from_str(&e.to_string())),
+            "foon" => Ok(foon_core::foon_text(&plan)),
+            "pddl" => {
+                let p = foon_core::pddl(&plan);
+                Ok(format!("{}\n{}", p.domain, p.problem))
+            }
+            "pddl-domain" => Ok(foon_core::pddl(&plan).domain),
+            "pddl-problem" => Ok(foon_core::pddl(&plan).problem),
+            "progress" => serde_json::to_string_pretty(&foon_core::progress_json(&plan)).map_err(|e| JsValue::from_str(&e.to_string())),
+            other => Err(js_error(&FoonError::new(
+                ErrorCode::BadQuery,
+                format!("unknown export format '{other}' (json, foon, pddl, pddl-domain, pddl-problem, progress)"),
+            ))),
+        }
     }
 
     /// The knowledge-base ingredients most similar to each name (`names_json`: a JSON array of
