@@ -20,6 +20,7 @@ export default defineConfig({
       input: {
         main: here("src/index.html"),
         embed: here("src/embed.html"),
+        workbench: here("src/workbench.html"),
         // the service worker keeps a fixed name at the top (its scope is the folder it is served from)
         sw: here("src/worker/service-worker.ts"),
       },

@@ -27,7 +27,7 @@ if [ ! -x /usr/bin/chromium ] && [ "${FOON_SKIP_CHROMIUM:-0}" != 1 ]; then
 fi
 
 step "npm packages"
-if [ -f package-lock.json ]; then npm ci --no-audit --no-fund; else npm install --no-audit --no-fund; fi
+if [ -f package-lock.json ]; then npm ci --no-audit --no-fund --loglevel=warn; else npm install --no-audit --no-fund --loglevel=warn; fi
 
 step "WebAssembly build"
 npm run build:wasm

@@ -10,6 +10,7 @@ import "./app/style.css";
 import "./app/page.css";
 
 const KB_URL = new URL("kb/default.foon", document.baseURI).href;
+const EMBEDDINGS_URL = new URL("data/food-embeddings.bin", document.baseURI).href;
 
 function start(): void {
   const host = document.getElementById("app");
@@ -20,6 +21,7 @@ function start(): void {
   const app = createPlannerApp(host, {
     planner: new WorkerPlanner(),
     kbUrl: KB_URL,
+    embeddingsUrl: EMBEDDINGS_URL,
     views: ALL_VIEWS,
     query: initial,
     events: {

@@ -30,6 +30,8 @@ export interface AppOptions {
   planner: PlannerService;
   /** Absolute URL of the bundled (or the embedding page's) knowledge base. */
   kbUrl: string;
+  /** Absolute URL of the food embedding table (substitutes by meaning); none: exact names only. */
+  embeddingsUrl?: string;
   views: readonly ViewName[];
   query?: AppQuery;
   events?: AppEvents;
@@ -115,7 +117,7 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
   async function loadKnowledgeBase(url: string): Promise<void> {
     kbUrl = url;
     try {
-      const kb = await planner.loadUrl(url);
+      const kb = await planner.loadUrl(url, options.embeddingsUrl);
       store.set({ kb, kbSource: "bundled", kbError: null });
       await replan();
     } catch (e) {
@@ -125,7 +127,7 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
 
   async function loadFiles(files: File[]): Promise<void> {
     try {
-      const kb = await planner.loadFiles(await readFiles(files));
+      const kb = await planner.loadFiles(await readFiles(files), options.embeddingsUrl);
       store.set({ kb, kbSource: "custom", kbError: null });
       await replan();
     } catch (e) {
@@ -154,6 +156,8 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
       const names: Record<Exclude<ExportFormat, "json">, [string, string]> = {
         foon: [`${base}-task-tree.txt`, "text/plain"],
         pddl: [`${base}-task-tree.pddl`, "text/plain"],
+        "pddl-domain": [`${base}-domain.pddl`, "text/plain"],
+        "pddl-problem": [`${base}-problem.pddl`, "text/plain"],
         progress: [`${base}-progress-lines.json`, "application/json"],
       };
       const text = await planner.exportPlan(toPlanRequest(store.state.query), format);

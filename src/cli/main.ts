@@ -1,24 +1,143 @@
 // foon-planner command line: `npm run cli -- <command> [options]`. Every command goes through the same
 // WASM build and planner module as the app.
 
+import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
+import { dirname, join } from "node:path";
 import { parseArgs } from "node:util";
-import { describeError } from "../planner/index";
+import { describeError, PlannerError, type FoonPlanner } from "../planner/index";
 import { loadPlannerFromDisk, STARTER_KB_DIR } from "../planner/node";
+import type { ExportFormat, PlanRequest } from "../planner/types";
+import { evalCommand } from "./eval";
+import { readQueries, readQuery } from "./queries";
 
 const USAGE = `usage: npm run cli -- <command> [options]
 
 commands:
-  stats [--kb <dir-or-file>]      knowledge-base statistics as JSON (default: the starter knowledge base)
+  stats   [--kb <dir-or-file>]                       knowledge-base statistics as JSON
+  plan    [--kb <dir-or-file>] --query <file.json>   one plan as JSON
+          [--no-modify] [--override <object>=<label>]... [--format json|foon|pddl|pddl-domain|pddl-problem|progress]
+  batch   [--kb <dir>] --queries <dir> --out <dir> [--no-modify]
+                                                     plans every query, writes <out>/<type>/<id>.json
+  similar [--kb <dir>] [--top 5] [--names <file>] <name>...
+                                                     the equivalents the planner would use, best first
+  eval    [--kb <dir>] --queries <dir> [--no-modify | --both] [--out <dir>]
+                                                     metrics of every query's plan (npm run eval -- --help)
+
+--kb defaults to the project's starter knowledge base (public/kb/starter); it takes a folder of FOON
+.txt files, a single file or a bundle. --exact plans with exact name matching (no embedding table).
 `;
 
-type Command = (args: string[]) => void;
+const KB_OPTIONS = { kb: { type: "string" }, exact: { type: "boolean" } } as const;
 
-const commands: Record<string, Command> = {
+function planner(values: { kb?: string; exact?: boolean }): FoonPlanner {
+  const p = loadPlannerFromDisk(values.kb ?? STARTER_KB_DIR, { exact: values.exact });
+  for (const w of p.warnings()) process.stderr.write(`warning: ${describeError(w)}\n`);
+  return p;
+}
+
+function overrides(list: string[] | undefined): Record<string, string> {
+  const out: Record<string, string> = {};
+  for (const item of list ?? []) {
+    const at = item.indexOf("=");
+    if (at <= 0) throw new Error(`--override '${item}': expected <object>=<label>`);
+    out[item.slice(0, at).trim()] = item.slice(at + 1).trim();
+  }
+  return out;
+}
+
+const FORMATS: readonly ExportFormat[] = ["json", "foon", "pddl", "pddl-domain", "pddl-problem", "progress"];
+
+function progressBar(done: number, total: number, errors: number): string {
+  const width = 30;
+  const filled = Math.round((done / Math.max(total, 1)) * width);
+  return `\r[${"#".repeat(filled)}${".".repeat(width - filled)}] ${done}/${total}  errors: ${errors}`;
+}
+
+const commands: Record<string, (args: string[]) => void> = {
+  eval: evalCommand,
   stats(args) {
-    const { values } = parseArgs({ args, options: { kb: { type: "string" } }, strict: true });
-    const planner = loadPlannerFromDisk(values.kb ?? STARTER_KB_DIR);
-    for (const w of planner.warnings()) console.error(`warning: ${describeError(w)}`);
-    console.log(JSON.stringify(planner.stats(), null, 2));
+    const { values } = parseArgs({ args, options: KB_OPTIONS, strict: true });
+    console.log(JSON.stringify(planner(values).stats(), null, 2));
+  },
+
+  plan(args) {
+    const { values } = parseArgs({
+      args,
+      options: {
+        ...KB_OPTIONS,
+        query: { type: "string" },
+        "no-modify": { type: "boolean" },
+        override: { type: "string", multiple: true },
+        format: { type: "string", default: "json" },
+      },
+      strict: true,
+    });
+    if (values.query === undefined) throw new Error("plan needs --query <file.json>");
+    const format = values.format as ExportFormat;
+    if (!FORMATS.includes(format)) throw new Error(`--format must be one of ${FORMATS.join(", ")}`);
+    const request: PlanRequest = { query: readQuery(values.query), modify: values["no-modify"] !== true, overrides: overrides(values.override) };
+    const p = planner(values);
+    if (format === "json") console.log(JSON.stringify(p.plan(request), null, 2));
+    else process.stdout.write(p.exportPlan(request, format));
+  },
+
+  batch(args) {
+    const { values } = parseArgs({
+      args,
+      options: { ...KB_OPTIONS, queries: { type: "string" }, out: { type: "string" }, "no-modify": { type: "boolean" } },
+      strict: true,
+    });
+    if (values.queries === undefined || values.out === undefined) throw new Error("batch needs --queries <dir> and --out <dir>");
+    const queries = readQueries(values.queries);
+    const p = planner(values);
+    const modify = values["no-modify"] !== true;
+    const errors: Record<string, number> = {};
+    const times: number[] = [];
+    const tty = process.stderr.isTTY === true;
+    queries.forEach((q, i) => {
+      const started = performance.now();
+      let result: unknown;
+      try {
+        result = p.plan({ query: q.query, modify });
+      } catch (e) {
+        if (!(e instanceof PlannerError)) throw e;
+        errors[e.code] = (errors[e.code] ?? 0) + 1;
+        result = { format_version: 1, query: q.query, error: e.toJSON() };
+      }
+      times.push(performance.now() - started);
+      const out = join(values.out as string, q.path);
+      mkdirSync(dirname(out), { recursive: true });
+      writeFileSync(out, `${JSON.stringify(result, null, 2)}\n`);
+      const failed = Object.values(errors).reduce((a, b) => a + b, 0);
+      if (tty || i + 1 === queries.length || (i + 1) % 50 === 0) process.stderr.write(progressBar(i + 1, queries.length, failed));
+    });
+    process.stderr.write("\n");
+    const failed = Object.values(errors).reduce((a, b) => a + b, 0);
+    const sorted = [...times].sort((a, b) => a - b);
+    const summary = {
+      queries: queries.length,
+      planned: queries.length - failed,
+      errors,
+      modify,
+      out: values.out,
+      plan_ms: { median: sorted[Math.floor(sorted.length / 2)] ?? 0, max: sorted[sorted.length - 1] ?? 0 },
+    };
+    console.log(JSON.stringify(summary, null, 2));
+  },
+
+  similar(args) {
+    const { values, positionals } = parseArgs({
+      args,
+      options: { ...KB_OPTIONS, top: { type: "string", default: "5" }, names: { type: "string" } },
+      allowPositionals: true,
+      strict: true,
+    });
+    const top = Number(values.top);
+    if (!Number.isInteger(top) || top < 1) throw new Error("--top must be a positive whole number");
+    const fromFile = values.names === undefined ? [] : readFileSync(values.names, "utf8").split(/\r?\n/).map((l) => l.trim());
+    const names = [...positionals, ...fromFile].filter((n) => n !== "");
+    if (names.length === 0) throw new Error("similar needs at least one name (or --names <file>)");
+    console.log(JSON.stringify(planner(values).similar(names, top), null, 2));
   },
 };
 

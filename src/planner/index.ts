@@ -2,20 +2,23 @@
 // and errors as `PlannerError` with a stable code. Views and the CLI use only this module.
 
 import initWasmModule, { initSync, KnowledgeBaseLoader, type Planner as WasmPlanner } from "../../wasm/pkg/foon_wasm.js";
-import type { ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanRequest, Stats, Vocabulary } from "./types";
-import { scanVocabulary } from "./vocabulary";
+import type { ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanRequest, SimilarResult, Stats, Vocabulary } from "./types";
 import { PlannerError, toPlannerError } from "./errors";
+import { scanVocabulary } from "./vocabulary";
 
+// The error class lives in errors.ts so that the page can use it without the WASM glue (the worker owns it).
 export { describeError, PlannerError, toPlannerError } from "./errors";
 
 export type * from "./types";
 
 let ready: Promise<void> | null = null;
 let initialised = false;
+let memory: WebAssembly.Memory | null = null;
 
 /** Initialises the WASM module once (browser: fetches it next to the glue code, or from `source`). */
 export function initPlanner(source?: URL | string | Response | BufferSource): Promise<void> {
-  ready ??= initWasmModule(source === undefined ? undefined : { module_or_path: source }).then(() => {
+  ready ??= initWasmModule(source === undefined ? undefined : { module_or_path: source }).then((exports) => {
+    memory = exports.memory;
     initialised = true;
   });
   return ready;
@@ -24,9 +27,14 @@ export function initPlanner(source?: URL | string | Response | BufferSource): Pr
 /** Initialises the WASM module synchronously from its bytes (Node, Vitest, workers that hold the bytes). */
 export function initPlannerSync(bytes: BufferSource): void {
   if (initialised) return;
-  initSync({ module: bytes });
+  memory = initSync({ module: bytes }).memory;
   initialised = true;
   ready = Promise.resolve();
+}
+
+/** Size of the WASM linear memory in bytes (it only grows, so this is also its peak). */
+export function wasmMemoryBytes(): number {
+  return memory?.buffer.byteLength ?? 0;
 }
 
 function assertInitialised(): void {
@@ -49,20 +57,18 @@ function parseJson<T>(call: () => string): T {
 }
 
 /** A knowledge base loaded into the planner. Free it with `free()` when replaced. */
-/** The planning calls of the WASM `Planner` (JSON in, JSON or text out), typed here once. */
-interface WasmPlanningApi {
-  plan(request: string): string;
-  export(request: string, format: string): string;
-}
-
 export class FoonPlanner {
   private constructor(
     private readonly handle: WasmPlanner,
     private readonly vocab: Vocabulary,
   ) {}
 
-  /** Parses and merges knowledge-base files; a malformed file throws a PlannerError naming file and line. */
-  static load(files: readonly KnowledgeBaseFile[]): FoonPlanner {
+  /**
+   * Parses and merges knowledge-base files; a malformed file throws a PlannerError naming file and line.
+   * `embeddings` is the food embedding table (public/data/food-embeddings.bin); without it the planner
+   * matches ingredient names exactly.
+   */
+  static load(files: readonly KnowledgeBaseFile[], embeddings?: Uint8Array): FoonPlanner {
     assertInitialised();
     const loader = new KnowledgeBaseLoader();
     try {
@@ -72,20 +78,11 @@ export class FoonPlanner {
       throw toPlannerError(thrown);
     }
     try {
-      const handle = loader.finish(); // finish() consumes the loader, even when it fails
+      const handle = loader.finish(embeddings); // finish() consumes the loader, even when it fails
       return new FoonPlanner(handle, scanVocabulary(files));
     } catch (thrown) {
       throw toPlannerError(thrown);
     }
-  }
-
-  stats(): Stats {
-    return parseJson<Stats>(() => this.handle.stats());
-  }
-
-  /** Problems that did not stop the load (units skipped, with file and line). */
-  warnings(): FoonErrorData[] {
-    return parseJson<FoonErrorData[]>(() => this.handle.warnings());
   }
 
   /** Dish classes with their recipes, labels and states of the loaded files (for the query editor). */
@@ -93,33 +90,32 @@ export class FoonPlanner {
     return this.vocab;
   }
 
-  /** Whether this WASM build has the planning calls (plan, export). */
-  canPlan(): boolean {
-    const api = this.handle as unknown as Partial<WasmPlanningApi>;
-    return typeof api.plan === "function" && typeof api.export === "function";
+  stats(): Stats {
+    return parseJson<Stats>(() => this.handle.stats());
   }
 
-  private planningApi(): WasmPlanningApi {
-    if (!this.canPlan()) {
-      throw new PlannerError({ code: "internal", message: "this WebAssembly build has no planner (plan/export): rebuild it with `npm run build:wasm`" });
-    }
-    return this.handle as unknown as WasmPlanningApi;
-  }
-
-  /** Plans a query: reference goal node, reference task tree, modification (docs/plan-format.md). */
+  /** Plans a query: reference goal, reference task tree, modification (unless `modify: false`). */
   plan(request: PlanRequest): Plan {
-    const api = this.planningApi();
-    return parseJson<Plan>(() => api.plan(JSON.stringify(request)));
+    return parseJson<Plan>(() => this.handle.plan(JSON.stringify(request)));
   }
 
-  /** The plan of `request` as FOON text, JSON, PDDL or progress-line JSON. */
-  export(request: PlanRequest, format: ExportFormat): string {
-    const api = this.planningApi();
+  /** Plans a query and renders it: plan JSON, FOON text (plain dialect), PDDL, or progress-line JSON. */
+  exportPlan(request: PlanRequest, format: ExportFormat): string {
     try {
-      return api.export(JSON.stringify(request), format);
+      return this.handle.export(JSON.stringify(request), format);
     } catch (thrown) {
       throw toPlannerError(thrown);
     }
+  }
+
+  /** The knowledge-base ingredients most similar to each name, best first, as the planner ranks them. */
+  similar(names: readonly string[], top = 5): SimilarResult[] {
+    return parseJson<SimilarResult[]>(() => this.handle.similar(JSON.stringify(names), top));
+  }
+
+  /** Problems that did not stop the load (units skipped, with file and line). */
+  warnings(): FoonErrorData[] {
+    return parseJson<FoonErrorData[]>(() => this.handle.warnings());
   }
 
   free(): void {

@@ -11,6 +11,8 @@ export const ROOT = resolve(fileURLToPath(new URL("../..", import.meta.url)));
 export const WASM_PATH = join(ROOT, "wasm/pkg/foon_wasm_bg.wasm");
 /** The project's own starter knowledge base: the default everywhere. */
 export const STARTER_KB_DIR = join(ROOT, "public/kb/starter");
+/** The compressed food embedding table shipped with the app (built by scripts/build_embeddings.py). */
+export const EMBEDDINGS_PATH = join(ROOT, "public/data/food-embeddings.bin");
 
 export function initPlannerFromDisk(): void {
   let bytes: Buffer;
@@ -32,8 +34,15 @@ export function readKnowledgeBase(path: string): KnowledgeBaseFile[] {
     .map((name) => ({ name, bytes: readFileSync(join(path, name)) }));
 }
 
-/** Loads a knowledge base from disk (default: the starter KB) into an initialised planner. */
-export function loadPlannerFromDisk(kbPath: string = STARTER_KB_DIR): FoonPlanner {
+export function readEmbeddings(): Uint8Array {
+  return new Uint8Array(readFileSync(EMBEDDINGS_PATH));
+}
+
+/**
+ * Loads a knowledge base from disk (default: the starter KB) into an initialised planner, with the
+ * embedding table unless `exact` is set (exact name matching only).
+ */
+export function loadPlannerFromDisk(kbPath: string = STARTER_KB_DIR, options: { exact?: boolean } = {}): FoonPlanner {
   initPlannerFromDisk();
-  return FoonPlanner.load(readKnowledgeBase(kbPath));
+  return FoonPlanner.load(readKnowledgeBase(kbPath), options.exact === true ? undefined : readEmbeddings());
 }

@@ -52,30 +52,28 @@ export interface FoonErrorData {
   column?: number;
 }
 
-// ---- Plans (docs/plan-format.md, wasm/core/src/plan.rs) ----
+// ---- Plans (docs/plan-format.md; wasm/core/src/plan.rs) ----
 
-/** One ingredient of a query: an object and the state it should reach ("" when unspecified). */
 export interface QueryIngredient {
   object: string;
   state: string;
 }
 
+/** A recipe query: the shape of the Recipe1M+-derived query files. */
 export interface Query {
   id?: string;
-  /** The dish type (a dish class name such as "salad", or free text). */
   type: string;
   ingredients: QueryIngredient[];
 }
 
 export interface PlanRequest {
   query: Query;
-  /** `false` returns the reference task tree as retrieved. Default true. */
+  /** false returns the reference task tree as retrieved (default true). */
   modify?: boolean;
   /** Query object -> the equivalent label the user chose. */
   overrides?: Record<string, string>;
 }
 
-/** An object node of the plan. */
 export interface PlanNode {
   label: string;
   states: string[];
@@ -83,7 +81,6 @@ export interface PlanNode {
   container: string | null;
 }
 
-/** How modification touched a functional unit. */
 export type UnitOrigin = "reference" | "renamed" | "grafted" | "copied" | "attached";
 
 export interface PlanUnit {
@@ -94,25 +91,18 @@ export interface PlanUnit {
   sources: string[];
 }
 
-export interface IngredientMatch {
-  label: string;
-  state: string;
-  similarity: number;
-}
-
 export interface Alternative {
   label: string;
   similarity: number;
 }
 
-/** The substitution case of Table I of the paper. */
 export type SubstitutionCase = 1 | 2 | 3 | 4;
 
 export interface IngredientOutcome {
   object: string;
   state: string;
   case: SubstitutionCase | null;
-  match: IngredientMatch | null;
+  match: { label: string; state: string; similarity: number } | null;
   alternatives: Alternative[];
   low_confidence: boolean;
   overridden: boolean;
@@ -120,35 +110,27 @@ export interface IngredientOutcome {
   reason?: string;
 }
 
-export interface ProgressState {
-  physical_state: string;
-  location: string;
-}
-
-/** One ingredient's progress line (section IV-A): motion i leads from state i to state i+1. */
 export interface ProgressLine {
   ingredient: string;
-  state: ProgressState[];
+  state: { physical_state: string; location: string }[];
   motion: string[];
   end_product: string;
 }
 
-export interface GoalInfo {
-  label: string;
-  states: string[];
-  ingredients: string[];
-  subgraph: string;
-  score: number;
-  dish_class: number | null;
-}
-
 export interface Plan {
-  format_version: 1;
+  format_version: number;
   query: Query;
   dish_class: { index: number; name: string } | null;
   notes: string[];
   modified: boolean;
-  goal: GoalInfo;
+  goal: {
+    label: string;
+    states: string[];
+    ingredients: string[];
+    subgraph: string;
+    score: number;
+    dish_class: number | null;
+  };
   units: PlanUnit[];
   ingredients: IngredientOutcome[];
   removed: string[];
@@ -156,8 +138,14 @@ export interface Plan {
   steps: string[];
 }
 
-/** Formats of `FoonPlanner.export`: FOON text, the plan's JSON, PDDL, the progress lines' JSON. */
-export type ExportFormat = "foon" | "json" | "pddl" | "progress";
+/** Export formats of a plan. */
+export type ExportFormat = "json" | "foon" | "pddl" | "pddl-domain" | "pddl-problem" | "progress";
+
+/** Equivalents for a name, as `cli similar` prints them. */
+export interface SimilarResult {
+  query: string;
+  candidates: Alternative[];
+}
 
 /** What the query editor offers: the knowledge base's dish classes with their recipes, labels and states. */
 export interface Vocabulary {

@@ -48,6 +48,8 @@ function styles(): CSSStyleSheet {
 
 /** The bundled knowledge base, next to the built widget's assets folder. */
 export const DEFAULT_KB_URL = new URL(/* @vite-ignore */ "../kb/default.foon", import.meta.url).href;
+/** The bundled food embedding table (substitutes by meaning). */
+export const DEFAULT_EMBEDDINGS_URL = new URL(/* @vite-ignore */ "../data/food-embeddings.bin", import.meta.url).href;
 
 export function mount(element: HTMLElement, initial: WidgetOptions = {}, callbacks: MountCallbacks = {}): PlannerHandle {
   const shadow = element.shadowRoot ?? element.attachShadow({ mode: "open" });
@@ -76,6 +78,7 @@ export function mount(element: HTMLElement, initial: WidgetOptions = {}, callbac
     app = createPlannerApp(appRoot, {
       planner: new WorkerPlanner(),
       kbUrl: kbUrl(),
+      embeddingsUrl: DEFAULT_EMBEDDINGS_URL,
       views: WIDGET_VIEWS[options.view ?? "all"],
       events: {
         plan: (plan) => callbacks.onPlan?.({ plan }),

@@ -7,8 +7,8 @@ import type { KnowledgeBaseSource, LoadedKnowledgeBase, WorkerRequest, WorkerRes
 
 /** What a planner worker (or a fake one in tests) must offer the app. */
 export interface PlannerService {
-  loadUrl(url: string): Promise<LoadedKnowledgeBase>;
-  loadFiles(files: KnowledgeBaseFile[]): Promise<LoadedKnowledgeBase>;
+  loadUrl(url: string, embeddingsUrl?: string): Promise<LoadedKnowledgeBase>;
+  loadFiles(files: KnowledgeBaseFile[], embeddingsUrl?: string): Promise<LoadedKnowledgeBase>;
   /** Resolves `null` when a newer plan request superseded this one. */
   plan(request: PlanRequest): Promise<{ plan: Plan; ms: number } | null>;
   exportPlan(request: PlanRequest, format: ExportFormat): Promise<string>;
@@ -49,18 +49,18 @@ export class WorkerPlanner implements PlannerService {
     });
   }
 
-  private async load(source: KnowledgeBaseSource): Promise<LoadedKnowledgeBase> {
-    const response = await this.send({ type: "load", id: this.nextId++, source });
+  private async load(source: KnowledgeBaseSource, embeddingsUrl: string | undefined): Promise<LoadedKnowledgeBase> {
+    const response = await this.send({ type: "load", id: this.nextId++, source, embeddingsUrl });
     if (response.type === "loaded") return response.kb;
     throw errorOf(response);
   }
 
-  loadUrl(url: string): Promise<LoadedKnowledgeBase> {
-    return this.load({ kind: "url", url });
+  loadUrl(url: string, embeddingsUrl?: string): Promise<LoadedKnowledgeBase> {
+    return this.load({ kind: "url", url }, embeddingsUrl);
   }
 
-  loadFiles(files: KnowledgeBaseFile[]): Promise<LoadedKnowledgeBase> {
-    return this.load({ kind: "files", files });
+  loadFiles(files: KnowledgeBaseFile[], embeddingsUrl?: string): Promise<LoadedKnowledgeBase> {
+    return this.load({ kind: "files", files }, embeddingsUrl);
   }
 
   async plan(request: PlanRequest): Promise<{ plan: Plan; ms: number } | null> {

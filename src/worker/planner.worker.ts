@@ -24,14 +24,27 @@ async function filesOf(source: KnowledgeBaseSource): Promise<{ name: string; fil
   return { name, files: [{ name, bytes: new Uint8Array(await response.arrayBuffer()) }] };
 }
 
-async function load(id: number, source: KnowledgeBaseSource): Promise<void> {
-  await initPlanner();
-  const { name, files } = await filesOf(source);
+// The embedding table is fetched once per URL and reused for every knowledge base loaded after it.
+const embeddingTables = new Map<string, Promise<Uint8Array | undefined>>();
+function embeddingsOf(url: string | undefined): Promise<Uint8Array | undefined> {
+  if (url === undefined) return Promise.resolve(undefined);
+  let table = embeddingTables.get(url);
+  if (table === undefined) {
+    table = fetch(url)
+      .then(async (r) => (r.ok ? new Uint8Array(await r.arrayBuffer()) : undefined))
+      .catch(() => undefined); // no table: the planner still works, with exact name matching
+    embeddingTables.set(url, table);
+  }
+  return table;
+}
+
+async function load(id: number, source: KnowledgeBaseSource, embeddingsUrl: string | undefined): Promise<void> {
+  const [, { name, files }, embeddings] = await Promise.all([initPlanner(), filesOf(source), embeddingsOf(embeddingsUrl)]);
   // A failed load keeps the previous knowledge base: the user sees the error and can fix the file.
-  const next = FoonPlanner.load(files);
+  const next = FoonPlanner.load(files, embeddings);
   planner?.free();
   planner = next;
-  const kb: LoadedKnowledgeBase = { name, stats: next.stats(), vocabulary: next.vocabulary(), warnings: next.warnings() };
+  const kb: LoadedKnowledgeBase = { name, stats: next.stats(), vocabulary: next.vocabulary(), warnings: next.warnings(), embeddings: embeddings !== undefined };
   reply({ type: "loaded", id, kb });
 }
 
@@ -54,7 +67,7 @@ scope.onmessage = (event: MessageEvent<WorkerRequest>): void => {
   const message = event.data;
   switch (message.type) {
     case "load":
-      load(message.id, message.source).catch((e: unknown) => reply({ type: "error", id: message.id, error: toPlannerError(e).toJSON() }));
+      load(message.id, message.source, message.embeddingsUrl).catch((e: unknown) => reply({ type: "error", id: message.id, error: toPlannerError(e).toJSON() }));
       break;
     case "plan":
       if (pendingPlan !== null) reply({ type: "superseded", id: pendingPlan.id });
@@ -68,7 +81,7 @@ scope.onmessage = (event: MessageEvent<WorkerRequest>): void => {
     case "export":
       try {
         if (planner === null) throw new PlannerError({ code: "not_initialised", message: "no knowledge base is loaded yet" });
-        reply({ type: "exported", id: message.id, text: planner.export(message.request, message.format) });
+        reply({ type: "exported", id: message.id, text: planner.exportPlan(message.request, message.format) });
       } catch (e) {
         reply({ type: "error", id: message.id, error: toPlannerError(e).toJSON() });
       }

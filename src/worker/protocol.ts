@@ -5,7 +5,8 @@ import type { ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanRequest,
 export type KnowledgeBaseSource = { kind: "url"; url: string } | { kind: "files"; files: KnowledgeBaseFile[] };
 
 export type WorkerRequest =
-  | { type: "load"; id: number; source: KnowledgeBaseSource }
+  /** `embeddingsUrl`: the food embedding table; without it the planner matches names exactly. */
+  | { type: "load"; id: number; source: KnowledgeBaseSource; embeddingsUrl?: string }
   | { type: "plan"; id: number; request: PlanRequest }
   | { type: "export"; id: number; request: PlanRequest; format: ExportFormat };
 
@@ -15,6 +16,8 @@ export interface LoadedKnowledgeBase {
   stats: Stats;
   vocabulary: Vocabulary;
   warnings: FoonErrorData[];
+  /** Whether the embedding table was loaded (else substitutes are found by exact names only). */
+  embeddings: boolean;
 }
 
 export type WorkerResponse =

@@ -3,7 +3,11 @@
 //! carrying a stable `code` and, for file errors, `file`, `line` and `column`.
 
 use foon_core::parse::{parse_bytes, Subgraph};
-use foon_core::{bundle, FoonError, KnowledgeBase};
+use foon_core::similarity::{ExactMatch, Similarity};
+use foon_core::{
+    bundle, EmbeddingSimilarity, ErrorCode, FoonError, KnowledgeBase, Plan, PlanRequest,
+    PlannerIndex,
+};
 use wasm_bindgen::prelude::*;
 
 /// Converts a core error into a JS `Error` with `code`, `file`, `line`, `column` properties.
@@ -62,10 +66,22 @@ impl KnowledgeBaseLoader {
         Ok(())
     }
 
-    /// Merges the files into a universal FOON and returns the planner handle.
-    pub fn finish(self) -> Result<Planner, JsValue> {
+    /// Merges the files into a universal FOON and returns the planner handle. With `embeddings` (the
+    /// food embedding table) ingredients are matched by meaning, otherwise by exact name only.
+    pub fn finish(self, embeddings: Option<Vec<u8>>) -> Result<Planner, JsValue> {
+        let similarity: Box<dyn Similarity> = match embeddings {
+            Some(bytes) => {
+                Box::new(EmbeddingSimilarity::from_bytes(&bytes).map_err(|e| js_error(&e))?)
+            }
+            None => Box::new(ExactMatch),
+        };
         let kb = KnowledgeBase::merge(&self.graphs).map_err(|e| js_error(&e))?;
-        Ok(Planner { kb })
+        let index = PlannerIndex::new(&kb);
+        Ok(Planner {
+            kb,
+            index,
+            similarity,
+        })
     }
 }
 
@@ -73,6 +89,13 @@ impl KnowledgeBaseLoader {
 #[wasm_bindgen]
 pub struct Planner {
     kb: KnowledgeBase,
+    index: PlannerIndex,
+    similarity: Box<dyn Similarity>,
+}
+
+fn from_json<'a, T: serde::Deserialize<'a>>(text: &'a str, what: &str) -> Result<T, JsValue> {
+    serde_json::from_str(text)
+        .map_err(|e| js_error(&FoonError::new(ErrorCode::BadQuery, format!("{what}: {e}"))))
 }
 
 #[wasm_bindgen]
@@ -80,6 +103,50 @@ impl Planner {
     /// Statistics of the knowledge base, as JSON (`foon_core::Stats`).
     pub fn stats(&self) -> Result<String, JsValue> {
         to_json(&foon_core::stats(&self.kb))
+    }
+
+    fn run(&self, request_json: &str) -> Result<Plan, JsValue> {
+        let request: PlanRequest = from_json(request_json, "plan request")?;
+        foon_core::plan(&self.kb, &self.index, self.similarity.as_ref(), &request)
+            .map_err(|e| js_error(&e))
+    }
+
+    /// Plans a request (`{query, modify?, overrides?}` as JSON) and returns the plan as JSON.
+    pub fn plan(&self, request_json: &str) -> Result<String, JsValue> {
+        to_json(&self.run(request_json)?)
+    }
+
+    /// Plans a request and renders it: `json`, `foon` (plain FOON text), `pddl` (domain and problem),
+    /// `pddl-domain`, `pddl-problem`, or `progress` (the published progress-line JSON).
+    pub fn export(&self, request_json: &str, format: &str) -> Result<String, JsValue> {
+        let plan = self.run(request_json)?;
+        match format {
+            "json" => serde_json::to_string_pretty(&plan).map_err(|e| JsValue::from_str(&e.to_string())),
+            "foon" => Ok(foon_core::foon_text(&plan)),
+            "pddl" => {
+                let p = foon_core::pddl(&plan);
+                Ok(format!("{}\n{}", p.domain, p.problem))
+            }
+            "pddl-domain" => Ok(foon_core::pddl(&plan).domain),
+            "pddl-problem" => Ok(foon_core::pddl(&plan).problem),
+            "progress" => serde_json::to_string_pretty(&foon_core::progress_json(&plan)).map_err(|e| JsValue::from_str(&e.to_string())),
+            other => Err(js_error(&FoonError::new(
+                ErrorCode::BadQuery,
+                format!("unknown export format '{other}' (json, foon, pddl, pddl-domain, pddl-problem, progress)"),
+            ))),
+        }
+    }
+
+    /// The knowledge-base ingredients most similar to each name (`names_json`: a JSON array of
+    /// strings), best first, as JSON `[{query, candidates: [{label, similarity}]}]`.
+    pub fn similar(&self, names_json: &str, top: usize) -> Result<String, JsValue> {
+        let names: Vec<String> = from_json(names_json, "names must be a JSON array of strings")?;
+        to_json(&foon_core::similar(
+            &self.kb,
+            self.similarity.as_ref(),
+            &names,
+            top,
+        ))
     }
 
     /// Reader warnings (units skipped, empty arguments), as JSON error objects.

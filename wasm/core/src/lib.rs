@@ -3,18 +3,28 @@
 //! exposes it to JavaScript.
 
 pub mod bundle;
+pub mod embedding;
 pub mod error;
+pub mod export;
 pub mod kb;
 pub mod label;
 pub mod limits;
 pub mod model;
 pub mod parse;
+pub mod plan;
+pub mod planner;
 pub mod similarity;
 pub mod stats;
+pub mod substitute;
 pub mod taxonomy;
+pub mod write;
 
 pub use bundle::load;
 pub use error::{ErrorCode, FoonError, Result};
+pub use export::{foon_text, pddl, progress_json, Pddl};
 pub use kb::{Goal, KnowledgeBase};
 pub use model::{FunctionalUnit, NodeId, ObjectNode, State, StateArg, UnitId, UnitObject};
+pub use plan::{Plan, PlanRequest, Query, QueryIngredient};
+pub use planner::{plan, PlannerIndex};
 pub use stats::{stats, Stats};
+pub use substitute::{similar, EmbeddingSimilarity, SimilarResult};

@@ -19,6 +19,17 @@ pub trait Similarity {
         scored.truncate(top);
         scored
     }
+
+    /// Whether a ranked substitute should be shown as doubtful (the UI then asks the user to pick from
+    /// the top candidates). The default trusts only exact matches.
+    fn low_confidence(&self, query: &str, label: &str, similarity: f32) -> bool {
+        query != label && similarity < 1.0
+    }
+
+    /// Whether a candidate this similar may stand in for an ingredient at all.
+    fn accepts(&self, sim: f32) -> bool {
+        sim >= 0.3
+    }
 }
 
 /// 1 for equal names, 0 otherwise: the planner's behaviour without an embedding table.

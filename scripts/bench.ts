@@ -1,0 +1,87 @@
+// `npm run bench`: speed and memory of the planner in WASM under Node, printed as figures (never asserted).
+// FOON-111 (plain dialect) with the 320 dev queries, then synthetic universal FOONs of 10x and 100x its size,
+// made by relabelling copies of FOON-111 (every label of copy k gets the suffix " k<k>").
+
+import { join } from "node:path";
+import { FoonPlanner, wasmMemoryBytes } from "../src/planner/index";
+import { initPlannerFromDisk, readEmbeddings, readKnowledgeBase, ROOT } from "../src/planner/node";
+import type { KnowledgeBaseFile, PlanRequest } from "../src/planner/types";
+import { readQueries } from "../src/cli/queries";
+
+const SHARED = process.env.FOON_SHARED ?? join(ROOT, "../shared");
+const ROUNDS = Number(process.env.BENCH_ROUNDS ?? 3);
+
+const percentile = (sorted: number[], p: number): number => sorted[Math.min(sorted.length - 1, Math.floor(p * sorted.length))] ?? 0;
+const ms = (x: number): string => `${x.toFixed(3)} ms`;
+const mb = (bytes: number): string => `${(bytes / 2 ** 20).toFixed(1)} MiB`;
+
+/** Copy k of a FOON file with every object, container and ingredient label suffixed. */
+function relabel(text: string, k: number): string {
+  const tag = (label: string): string => `${label.trim()} k${k}`;
+  return text
+    .split("\n")
+    .map((line) => {
+      const fields = line.split("\t");
+      if (/^O\d*$/.test(fields[0] ?? "") && fields[1] !== undefined) fields[1] = tag(fields[1]);
+      else if (/^S\d*$/.test(fields[0] ?? "") && fields[2] !== undefined) {
+        fields[2] = fields[2]
+          .replace(/\[([^\]]+)\]/, (_, c: string) => `[${tag(c)}]`)
+          .replace(/\{([^}]*)\}/, (_, list: string) => `{${list.split(",").map(tag).join(",")}}`);
+      }
+      return fields.join("\t");
+    })
+    .join("\n");
+}
+
+function scaled(files: KnowledgeBaseFile[], factor: number): KnowledgeBaseFile[] {
+  const decoder = new TextDecoder();
+  const encoder = new TextEncoder();
+  const out = [...files];
+  for (let k = 1; k < factor; k++) {
+    for (const f of files) out.push({ name: `k${k}-${f.name}`, bytes: encoder.encode(relabel(decoder.decode(f.bytes), k)) });
+  }
+  return out;
+}
+
+function bench(name: string, files: KnowledgeBaseFile[], embeddings: Uint8Array, requests: PlanRequest[]): void {
+  const loads: number[] = [];
+  let planner: FoonPlanner | undefined;
+  const loadRounds = files.length > 5000 ? 1 : 5;
+  for (let i = 0; i < loadRounds; i++) {
+    planner?.free();
+    const started = performance.now();
+    planner = FoonPlanner.load(files, embeddings);
+    loads.push(performance.now() - started);
+  }
+  if (planner === undefined) return;
+  const stats = planner.stats();
+  const times: number[] = [];
+  let errors = 0;
+  for (let round = 0; round < ROUNDS; round++) {
+    for (const request of requests) {
+      const started = performance.now();
+      try {
+        planner.plan(request);
+      } catch {
+        errors++;
+      }
+      times.push(performance.now() - started);
+    }
+  }
+  times.sort((a, b) => a - b);
+  loads.sort((a, b) => a - b);
+  console.log(`\n${name}: ${stats.subgraphs} subgraphs, ${stats.units} units, ${stats.object_nodes} object nodes`);
+  console.log(`  knowledge-base load (parse + merge + index + embeddings): median ${ms(percentile(loads, 0.5))} over ${loads.length}`);
+  console.log(`  plan (${requests.length} dev queries x ${ROUNDS} rounds, JSON in/out): median ${ms(percentile(times, 0.5))}, p95 ${ms(percentile(times, 0.95))}, max ${ms(times[times.length - 1] ?? 0)}, typed errors ${errors / ROUNDS}`);
+  console.log(`  memory: WASM linear memory ${mb(wasmMemoryBytes())}, process peak RSS ${mb(process.resourceUsage().maxRSS * 1024)}`);
+  planner.free();
+}
+
+initPlannerFromDisk();
+const embeddings = readEmbeddings();
+const foon111 = readKnowledgeBase(join(SHARED, "foon/subgraphs-plain"));
+const requests: PlanRequest[] = readQueries(join(SHARED, "recipes/dev")).map((q) => ({ query: q.query }));
+console.log(`foon-planner bench (Node ${process.version}, ${requests.length} dev queries)`);
+bench("FOON-111 (plain)", foon111, embeddings, requests);
+bench("synthetic 10x FOON-111", scaled(foon111, 10), embeddings, requests);
+bench("synthetic 100x FOON-111", scaled(foon111, 100), embeddings, requests);

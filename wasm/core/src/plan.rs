@@ -1,0 +1,184 @@
+//! The planner's request and response, exactly the JSON contract of `docs/plan-format.md` (serde).
+
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// Version of the plan JSON; bump on any incompatible change (and in `docs/plan-format.md`).
+pub const FORMAT_VERSION: u32 = 1;
+
+/// One ingredient of a query: an object and the state it should have in the dish.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
+pub struct QueryIngredient {
+    pub object: String,
+    #[serde(default)]
+    pub state: String,
+}
+
+/// A recipe query: dish type and ingredients (the shape of the Recipe1M+-derived query files).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Query {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub id: Option<String>,
+    #[serde(rename = "type", default)]
+    pub dish_type: String,
+    #[serde(default)]
+    pub ingredients: Vec<QueryIngredient>,
+}
+
+fn default_true() -> bool {
+    true
+}
+
+/// What the app and the CLI send.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct PlanRequest {
+    pub query: Query,
+    /// `false` returns the reference task tree as retrieved (the ablation "without modification").
+    #[serde(default = "default_true")]
+    pub modify: bool,
+    /// Query object -> the equivalent label the caller chose.
+    #[serde(default)]
+    pub overrides: BTreeMap<String, String>,
+}
+
+impl PlanRequest {
+    pub fn new(query: Query) -> PlanRequest {
+        PlanRequest {
+            query,
+            modify: true,
+            overrides: BTreeMap::new(),
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct DishClassRef {
+    pub index: u32,
+    pub name: String,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct GoalInfo {
+    pub label: String,
+    /// States rendered as FOON text: `sliced`, `in [bowl]`, `contains {a,b}`.
+    pub states: Vec<String>,
+    /// The reference goal's ingredient list.
+    pub ingredients: Vec<String>,
+    /// Source subgraph (file name).
+    pub subgraph: String,
+    /// Graded similarity of the query's and the goal's ingredient sets, 0..1.
+    pub score: f32,
+    pub dish_class: Option<u32>,
+}
+
+/// An object node as the plan shows it.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+pub struct PlanNode {
+    pub label: String,
+    pub states: Vec<String>,
+    /// Its `contains {…}` list, if any.
+    pub ingredients: Vec<String>,
+    pub container: Option<String>,
+}
+
+/// How modification touched a unit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Origin {
+    /// As retrieved from FOON.
+    Reference,
+    /// An object in it was substituted (case 2/4) or its contents changed.
+    Renamed,
+    /// Added to bring an ingredient to its state (case 3/4), from FOON or made from the most frequent motion.
+    Grafted,
+    /// A copy of a branch, made so that the original ingredient stays in the tree (case 2).
+    Copied,
+    /// A unit that received a new ingredient branch as an extra input.
+    Attached,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct PlanUnit {
+    pub inputs: Vec<PlanNode>,
+    pub motion: String,
+    pub outputs: Vec<PlanNode>,
+    pub origin: Origin,
+    /// Subgraphs the unit comes from (empty for units the planner made).
+    pub sources: Vec<String>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Match {
+    pub label: String,
+    pub state: String,
+    pub similarity: f32,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Alternative {
+    pub label: String,
+    pub similarity: f32,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Status {
+    Planned,
+    Unplannable,
+}
+
+/// The outcome of one query ingredient.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct IngredientOutcome {
+    pub object: String,
+    pub state: String,
+    /// Table I of the paper (1..4); `None` when unplannable before a case applies.
+    pub case: Option<u8>,
+    #[serde(rename = "match")]
+    pub matched: Option<Match>,
+    /// Top-5 other equivalents, best first.
+    pub alternatives: Vec<Alternative>,
+    pub low_confidence: bool,
+    pub overridden: bool,
+    pub status: Status,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct ProgressState {
+    pub physical_state: String,
+    pub location: String,
+}
+
+/// One ingredient's progress line (section IV-A): states and locations, the motions between them, and the
+/// end product it goes into.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct ProgressLine {
+    pub ingredient: String,
+    pub state: Vec<ProgressState>,
+    /// Motion i leads from state i to state i+1.
+    pub motion: Vec<String>,
+    pub end_product: String,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Plan {
+    pub format_version: u32,
+    /// The query as planned, after normalisation of names and removal of duplicates.
+    pub query: Query,
+    pub dish_class: Option<DishClassRef>,
+    pub notes: Vec<String>,
+    /// `false` for the reference task tree as retrieved.
+    pub modified: bool,
+    pub goal: GoalInfo,
+    /// In a valid execution order: every produced input is made by an earlier unit.
+    pub units: Vec<PlanUnit>,
+    /// One per query ingredient (after duplicates were removed), in query order.
+    pub ingredients: Vec<IngredientOutcome>,
+    /// Labels pruned from the reference tree (not asked for).
+    pub removed: Vec<String>,
+    pub progress_lines: Vec<ProgressLine>,
+    /// One plain sentence per unit, same order as `units`.
+    pub steps: Vec<String>,
+}

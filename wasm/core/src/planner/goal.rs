@@ -1,0 +1,113 @@
+//! Algorithm 1: the reference goal node, by a graded similarity of ingredient sets.
+
+use crate::kb::{Goal, KnowledgeBase};
+use crate::similarity::Similarity;
+use crate::taxonomy::{dish_class_name, is_utensil};
+use std::cmp::Ordering;
+
+#[derive(Clone, Debug)]
+pub(crate) struct Chosen<'a> {
+    pub goal: &'a Goal,
+    pub score: f32,
+}
+
+/// Mean over `a` of the best similarity to any of `b` (exact matches count 1 without asking `sim`).
+fn coverage(sim: &dyn Similarity, a: &[&str], b: &[&str]) -> f32 {
+    if a.is_empty() {
+        return 0.0;
+    }
+    let total: f32 = a
+        .iter()
+        .map(|x| {
+            if b.contains(x) {
+                1.0
+            } else {
+                b.iter()
+                    .map(|y| sim.similarity(x, y))
+                    .fold(0.0f32, f32::max)
+            }
+        })
+        .sum();
+    total / a.len() as f32
+}
+
+/// The score of a goal for a query: how much of the query the goal covers (weight 2) and how much of the
+/// goal the query uses (weight 1, fewer ingredients to prune), as a weighted harmonic mean.
+pub(crate) fn score(sim: &dyn Similarity, query: &[&str], goal: &[&str]) -> f32 {
+    let recall = coverage(sim, query, goal);
+    let precision = coverage(sim, goal, query);
+    if recall + precision <= 0.0 {
+        return 0.0;
+    }
+    3.0 * recall * precision / (2.0 * precision + recall)
+}
+
+/// Picks the reference goal among goals of `class` (all goals when the class has none), highest score
+/// first; ties go to more exact matches, then fewer goal ingredients, then label and subgraph name.
+pub(crate) fn select<'a>(
+    kb: &'a KnowledgeBase,
+    sim: &dyn Similarity,
+    class: Option<u32>,
+    query: &[&str],
+    notes: &mut Vec<String>,
+    dish_type: &str,
+) -> Option<Chosen<'a>> {
+    // a goal must be made by some unit, and be a dish rather than a container
+    let usable = |g: &&Goal| {
+        kb.producers.get(g.node).is_some_and(|p| !p.is_empty())
+            && !is_utensil(&kb.nodes[g.node].label)
+    };
+    let mut candidates: Vec<&Goal> = match class {
+        Some(c) => kb
+            .goals
+            .iter()
+            .filter(|g| g.dish_class == Some(c))
+            .filter(usable)
+            .collect(),
+        None => Vec::new(),
+    };
+    if candidates.is_empty() {
+        match class {
+            None => notes.push(format!(
+                "unknown dish type '{dish_type}': searched all goal nodes"
+            )),
+            Some(c) => notes.push(format!(
+                "no recipe of class '{}' in the knowledge base: searched all goal nodes",
+                dish_class_name(c).unwrap_or("?")
+            )),
+        }
+        candidates = kb.goals.iter().filter(usable).collect();
+    }
+    let mut best: Option<(Chosen<'a>, usize, usize)> = None;
+    for g in candidates {
+        let ings: Vec<&str> = g
+            .ingredients
+            .iter()
+            .map(String::as_str)
+            .filter(|l| !is_utensil(l))
+            .collect();
+        let s = score(sim, query, &ings);
+        let exact = query.iter().filter(|q| ings.contains(q)).count();
+        let better = match &best {
+            None => true,
+            Some((b, bexact, bn)) => {
+                let ord = s
+                    .total_cmp(&b.score)
+                    .then(exact.cmp(bexact))
+                    .then(bn.cmp(&ings.len()))
+                    .then_with(|| {
+                        kb.nodes[b.goal.node]
+                            .label
+                            .cmp(&kb.nodes[g.node].label)
+                            .then(b.goal.subgraph.cmp(&g.subgraph))
+                            .then(b.goal.node.cmp(&g.node))
+                    });
+                ord == Ordering::Greater
+            }
+        };
+        if better {
+            best = Some((Chosen { goal: g, score: s }, exact, ings.len()));
+        }
+    }
+    best.map(|b| b.0)
+}

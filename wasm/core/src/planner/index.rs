@@ -1,0 +1,201 @@
+//! Tables the planner derives once from a knowledge base: nodes per label, state frequencies per dish
+//! class, the motion most used to reach each state, the utensil most used with each motion.
+
+use super::states::{category, is_food_state, Category};
+use crate::kb::KnowledgeBase;
+use crate::model::NodeId;
+use crate::taxonomy::is_utensil;
+use std::collections::{BTreeMap, BTreeSet, HashMap};
+
+/// Built once per knowledge base (`PlannerIndex::new`) and passed to every `plan` call.
+#[derive(Clone, Debug, Default)]
+pub struct PlannerIndex {
+    /// Object nodes per label (ids ascending).
+    pub(crate) by_label: HashMap<String, Vec<NodeId>>,
+    /// Distinct ingredient labels (not utensils), sorted.
+    pub(crate) ingredient_labels: Vec<String>,
+    /// (dish class, label, state) -> occurrences in units of recipes of that class; class `None` counts all.
+    label_state: HashMap<(Option<u32>, String, String), u32>,
+    /// (dish class, state) -> occurrences; class `None` counts all.
+    state_freq: HashMap<(Option<u32>, String), u32>,
+    /// State word -> the motion most used to bring an object into it.
+    motion_for_state: HashMap<String, String>,
+    /// Category -> the motion most used to bring an object into a state of it.
+    motion_for_category: HashMap<Category, String>,
+    /// Motion -> the utensil node most used as an input of it.
+    utensil_for_motion: HashMap<String, NodeId>,
+    /// For each node, the subgraphs (sorted) in which some unit makes it (not merely passes it on).
+    made_in: Vec<Vec<String>>,
+}
+
+fn best<K: Ord + Clone>(counts: &BTreeMap<K, u32>) -> Option<K> {
+    // highest count; ties to the smallest key (BTreeMap order), independent of insertion order
+    let mut out: Option<(&K, u32)> = None;
+    for (k, &c) in counts {
+        if out.is_none_or(|(_, b)| c > b) {
+            out = Some((k, c));
+        }
+    }
+    out.map(|(k, _)| k.clone())
+}
+
+impl PlannerIndex {
+    pub fn new(kb: &KnowledgeBase) -> PlannerIndex {
+        let mut by_label: HashMap<String, Vec<NodeId>> = HashMap::new();
+        for (id, n) in kb.nodes.iter().enumerate() {
+            by_label.entry(n.label.clone()).or_default().push(id);
+        }
+        let ingredient_labels: Vec<String> = kb
+            .ingredient_labels()
+            .into_iter()
+            .map(str::to_string)
+            .collect();
+        let mut subgraph_class: HashMap<String, Option<u32>> = HashMap::new();
+        for g in &kb.goals {
+            subgraph_class
+                .entry(g.subgraph.clone())
+                .or_insert(g.dish_class);
+        }
+
+        let mut label_state: HashMap<(Option<u32>, String, String), u32> = HashMap::new();
+        let mut state_freq: HashMap<(Option<u32>, String), u32> = HashMap::new();
+        let mut motion_state: BTreeMap<String, BTreeMap<String, u32>> = BTreeMap::new();
+        let mut motion_cat: BTreeMap<Category, BTreeMap<String, u32>> = BTreeMap::new();
+        let mut motion_utensil: BTreeMap<String, BTreeMap<NodeId, u32>> = BTreeMap::new();
+        let mut made_in: Vec<BTreeSet<&str>> = vec![BTreeSet::new(); kb.nodes.len()];
+        for (uid, u) in kb.units.iter().enumerate() {
+            for o in u.output_nodes() {
+                if !u.input_nodes().any(|i| i == o) {
+                    made_in[o].extend(kb.provenance[uid].iter().map(String::as_str));
+                }
+            }
+            let classes: BTreeSet<Option<u32>> = kb.provenance[uid]
+                .iter()
+                .map(|s| subgraph_class.get(s).copied().flatten())
+                .collect();
+            for o in u.inputs.iter().chain(u.outputs.iter()) {
+                let node = &kb.nodes[o.node];
+                if is_utensil(&node.label) {
+                    continue;
+                }
+                for s in node.physical_states() {
+                    for c in classes.iter().copied().chain([None]) {
+                        *label_state
+                            .entry((c, node.label.clone(), s.to_string()))
+                            .or_insert(0) += 1;
+                        *state_freq.entry((c, s.to_string())).or_insert(0) += 1;
+                    }
+                }
+            }
+            // states an output gains over the input of the same label: the motion reaches them
+            for o in u.outputs.iter() {
+                let out = &kb.nodes[o.node];
+                if is_utensil(&out.label) {
+                    continue;
+                }
+                let before: BTreeSet<&str> = u
+                    .inputs
+                    .iter()
+                    .map(|i| &kb.nodes[i.node])
+                    .filter(|n| n.label == out.label)
+                    .flat_map(|n| n.physical_states())
+                    .collect();
+                for s in out.physical_states() {
+                    if before.contains(s) || !is_food_state(s) {
+                        continue;
+                    }
+                    *motion_state
+                        .entry(s.to_string())
+                        .or_default()
+                        .entry(u.motion.clone())
+                        .or_insert(0) += 1;
+                    *motion_cat
+                        .entry(category(s))
+                        .or_default()
+                        .entry(u.motion.clone())
+                        .or_insert(0) += 1;
+                }
+            }
+            for i in &u.inputs {
+                let n = &kb.nodes[i.node];
+                if is_utensil(&n.label) && n.states.is_empty() {
+                    *motion_utensil
+                        .entry(u.motion.clone())
+                        .or_default()
+                        .entry(i.node)
+                        .or_insert(0) += 1;
+                }
+            }
+        }
+        PlannerIndex {
+            by_label,
+            ingredient_labels,
+            label_state,
+            state_freq,
+            motion_for_state: motion_state
+                .iter()
+                .filter_map(|(s, m)| Some((s.clone(), best(m)?)))
+                .collect(),
+            motion_for_category: motion_cat
+                .iter()
+                .filter_map(|(c, m)| Some((*c, best(m)?)))
+                .collect(),
+            utensil_for_motion: motion_utensil
+                .iter()
+                .filter_map(|(m, u)| Some((m.clone(), best(u)?)))
+                .collect(),
+            made_in: made_in
+                .into_iter()
+                .map(|s| s.into_iter().map(str::to_string).collect())
+                .collect(),
+        }
+    }
+
+    /// Whether node `n` is a starting item of one of the recipes unit `u` comes from (that recipe
+    /// never makes it): retrieval takes it from the kitchen there, as the recipe did.
+    pub(crate) fn starts_in_recipe_of(&self, kb: &KnowledgeBase, u: usize, n: NodeId) -> bool {
+        let made = self.made_in.get(n).map(Vec::as_slice).unwrap_or(&[]);
+        kb.provenance
+            .get(u)
+            .is_some_and(|p| p.iter().any(|s| made.binary_search(s).is_err()))
+    }
+
+    pub(crate) fn nodes_of(&self, label: &str) -> &[NodeId] {
+        self.by_label.get(label).map(Vec::as_slice).unwrap_or(&[])
+    }
+
+    pub(crate) fn is_label(&self, label: &str) -> bool {
+        self.by_label.contains_key(label)
+    }
+
+    /// How often `label` is in `state` in recipes of the class (or in all recipes for `None`).
+    pub(crate) fn label_state_count(&self, class: Option<u32>, label: &str, state: &str) -> u32 {
+        self.label_state
+            .get(&(class, label.to_string(), state.to_string()))
+            .copied()
+            .unwrap_or(0)
+    }
+
+    pub(crate) fn state_count(&self, class: Option<u32>, state: &str) -> u32 {
+        self.state_freq
+            .get(&(class, state.to_string()))
+            .copied()
+            .unwrap_or(0)
+    }
+
+    /// The motion most used to reach `state` (or a state of its category); `None` for starting states.
+    pub(crate) fn motion_for(&self, state: &str) -> Option<String> {
+        let cat = category(state);
+        if cat.is_starting() || cat == Category::Other {
+            return None;
+        }
+        self.motion_for_state
+            .get(state)
+            .or_else(|| self.motion_for_category.get(&cat))
+            .cloned()
+    }
+
+    pub(crate) fn utensil_for(&self, motion: &str) -> Option<NodeId> {
+        self.utensil_for_motion.get(motion).copied()
+    }
+}

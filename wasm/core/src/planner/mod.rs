@@ -1,0 +1,194 @@
+//! Approximate task-tree retrieval (section III of Sakib, Paulius, Sun, RA-L 2022): a reference goal
+//! node (Alg. 1), its task tree (Alg. 2), and the modification of that tree for the query's ingredients
+//! (Table I), followed by pruning, progress lines and recipe-like steps.
+
+mod check;
+mod goal;
+mod index;
+mod modify;
+mod output;
+mod retrieve;
+pub mod states;
+mod tree;
+
+pub use check::violations;
+pub use index::PlannerIndex;
+
+use crate::error::{ErrorCode, FoonError, Result};
+use crate::kb::KnowledgeBase;
+use crate::label::{normalize_label, normalize_word};
+use crate::limits;
+use crate::plan::{DishClassRef, Plan, PlanRequest, Query, QueryIngredient, FORMAT_VERSION};
+use crate::similarity::Similarity;
+use crate::taxonomy::{dish_class_name, dish_class_of};
+use std::collections::{BTreeMap, HashSet};
+
+/// Plans a query against a knowledge base. `index` must have been built from the same `kb`
+/// (`PlannerIndex::new(kb)`, once). Never panics; a malformed request is `ErrorCode::BadQuery`, a knowledge
+/// base without a usable goal node `ErrorCode::NoGoal`.
+pub fn plan(
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    similarity: &dyn Similarity,
+    request: &PlanRequest,
+) -> Result<Plan> {
+    let mut notes = Vec::new();
+    let query = normalize_query(&request.query, &mut notes)?;
+    let overrides = normalize_overrides(&request.overrides)?;
+    let class = dish_class_of(&query.dish_type);
+    let labels: Vec<String> = {
+        let mut seen = HashSet::new();
+        query
+            .ingredients
+            .iter()
+            .filter(|i| seen.insert(i.object.clone()))
+            .map(|i| i.object.clone())
+            .collect()
+    };
+    let label_refs: Vec<&str> = labels.iter().map(String::as_str).collect();
+    let chosen = goal::select(
+        kb,
+        similarity,
+        class,
+        &label_refs,
+        &mut notes,
+        &query.dish_type,
+    )
+    .ok_or_else(|| {
+        FoonError::new(
+            ErrorCode::NoGoal,
+            "the knowledge base has no goal node with a functional unit that makes it",
+        )
+    })?;
+    let reference = retrieve::retrieve(
+        kb,
+        index,
+        similarity,
+        &labels,
+        chosen.goal.node,
+        Some(&chosen.goal.subgraph),
+        &HashSet::new(),
+    );
+    for &n in &reference.blocked {
+        notes.push(format!(
+            "every unit making '{}' needs it again (a cycle): taken as available",
+            kb.nodes[n]
+        ));
+    }
+    let mut tree = tree::Tree::from_retrieved(kb, &reference, chosen.goal.node);
+    let ctx = modify::Context {
+        kb,
+        index,
+        sim: similarity,
+        class,
+        overrides: &overrides,
+        goal_subgraph: &chosen.goal.subgraph,
+    };
+    let (outcomes, removed) = modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
+    tree.normalize();
+    tree.drop_unneeded();
+    let dish_class = class.and_then(|c| {
+        dish_class_name(c).map(|name| DishClassRef {
+            index: c,
+            name: name.to_string(),
+        })
+    });
+    Ok(output::build(output::Parts {
+        kb,
+        tree: &tree,
+        query,
+        dish_class,
+        notes,
+        modified: request.modify,
+        goal: chosen.goal,
+        score: chosen.score,
+        outcomes,
+        removed,
+        format_version: FORMAT_VERSION,
+    }))
+}
+
+fn bad(message: String) -> FoonError {
+    FoonError::new(ErrorCode::BadQuery, message)
+}
+
+fn check_length(what: &str, text: &str) -> Result<()> {
+    if text.chars().count() > limits::MAX_LABEL_CHARS {
+        return Err(bad(format!(
+            "{what} is longer than {} characters",
+            limits::MAX_LABEL_CHARS
+        )));
+    }
+    Ok(())
+}
+
+/// Normal forms of names and states; identical ingredients removed with a note.
+fn normalize_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
+    check_length("the dish type", &q.dish_type)?;
+    if q.ingredients.is_empty() {
+        return Err(bad("the query has no ingredients".into()));
+    }
+    if q.ingredients.len() > limits::MAX_QUERY_INGREDIENTS {
+        return Err(FoonError::new(
+            ErrorCode::TooLarge,
+            format!(
+                "the query has {} ingredients; the limit is {}",
+                q.ingredients.len(),
+                limits::MAX_QUERY_INGREDIENTS
+            ),
+        ));
+    }
+    let mut out: Vec<QueryIngredient> = Vec::with_capacity(q.ingredients.len());
+    for (i, ing) in q.ingredients.iter().enumerate() {
+        check_length(&format!("ingredient {} object", i + 1), &ing.object)?;
+        check_length(&format!("ingredient {} state", i + 1), &ing.state)?;
+        let object = normalize_label(&ing.object);
+        if object.is_empty() {
+            return Err(bad(format!(
+                "ingredient {} has an empty object name",
+                i + 1
+            )));
+        }
+        if object.contains(['{', '}', '[', ']', ',', '\t', '\n']) {
+            return Err(bad(format!(
+                "ingredient {} ('{object}') has a character not allowed in a FOON label",
+                i + 1
+            )));
+        }
+        let state = normalize_word(&ing.state);
+        if state.contains(['{', '}', '[', ']', ',', '\t', '\n']) {
+            return Err(bad(format!(
+                "ingredient {} state ('{state}') has a character not allowed in a FOON state",
+                i + 1
+            )));
+        }
+        let item = QueryIngredient { object, state };
+        if out.contains(&item) {
+            notes.push(format!(
+                "duplicate ingredient '{} ({})' listed once",
+                item.object, item.state
+            ));
+            continue;
+        }
+        out.push(item);
+    }
+    Ok(Query {
+        id: q.id.clone(),
+        dish_type: normalize_word(&q.dish_type),
+        ingredients: out,
+    })
+}
+
+fn normalize_overrides(o: &BTreeMap<String, String>) -> Result<BTreeMap<String, String>> {
+    let mut out = BTreeMap::new();
+    for (k, v) in o {
+        check_length("an override", k)?;
+        check_length("an override", v)?;
+        let (k, v) = (normalize_label(k), normalize_label(v));
+        if k.is_empty() || v.is_empty() {
+            return Err(bad("an override has an empty name".into()));
+        }
+        out.insert(k, v);
+    }
+    Ok(out)
+}

@@ -1,0 +1,1085 @@
+//! Section III-C: modification of the reference task tree for the query's ingredients (Table I),
+//! branches for ingredients from elsewhere in FOON, and pruning of what was not asked for.
+
+use super::index::PlannerIndex;
+use super::retrieve::retrieve;
+use super::states::{category, is_food_state, Category};
+use super::tree::{map_contents, SlotId, TUnitId, Tree};
+use crate::kb::KnowledgeBase;
+use crate::model::{NodeId, ObjectNode, State};
+use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
+use crate::similarity::Similarity;
+use crate::taxonomy::{dish_class_name, is_utensil};
+use std::collections::{BTreeMap, BTreeSet, HashMap, HashSet};
+
+pub(crate) struct Context<'a> {
+    pub kb: &'a KnowledgeBase,
+    pub index: &'a PlannerIndex,
+    pub sim: &'a dyn Similarity,
+    pub class: Option<u32>,
+    pub overrides: &'a BTreeMap<String, String>,
+    pub goal_subgraph: &'a str,
+}
+
+/// Food states of a node (not its place, contents or an appliance's condition).
+pub(crate) fn food_states(node: &ObjectNode) -> Vec<&str> {
+    node.physical_states()
+        .filter(|s| is_food_state(s))
+        .collect()
+}
+
+fn state_text(node: &ObjectNode) -> String {
+    let food = food_states(node);
+    if food.is_empty() {
+        node.physical_states().collect::<Vec<_>>().join(", ")
+    } else {
+        food.join(", ")
+    }
+}
+
+/// The category a node's food states put it in (the furthest along; whole when it has none).
+fn node_category(node: &ObjectNode) -> Category {
+    food_states(node)
+        .into_iter()
+        .map(category)
+        .max_by_key(|c| if c.is_starting() { 0 } else { 1 + *c as u8 })
+        .unwrap_or(Category::Whole)
+}
+
+const SEPARATION: &[Category] = &[
+    Category::Trimmed,
+    Category::Cut,
+    Category::FinelyCut,
+    Category::Ground,
+];
+
+/// Motions that cannot take more ingredients (a robot cuts one item at a time).
+const SINGLE_ITEM_WORDS: &[&str] = &[
+    "slice", "cut", "chop", "dice", "mince", "peel", "crack", "grate", "julienne", "core",
+    "squeeze", "wash", "rinse", "open", "turn", "preheat", "detach", "attach", "remove", "drain",
+    "shave", "zest", "knead", "roll", "shape", "wrap", "unwrap", "throw", "take out", "tear",
+    "flip", "cover",
+];
+
+fn accepts_more(motion: &str) -> bool {
+    !SINGLE_ITEM_WORDS.iter().any(|w| motion.contains(w))
+}
+
+/// How new ingredients join a dish of each class (first preferred): drinks are poured, salads mixed...
+fn dish_pattern(class: Option<u32>) -> &'static [&'static str] {
+    match class.and_then(dish_class_name) {
+        Some("drinks") => &["pour", "blend", "add", "stir", "mix", "shake"],
+        Some("salad") => &["mix", "add", "pick-and-place", "pour", "sprinkle", "stir"],
+        Some("soup") | Some("sauce") => &["pour", "add", "stir", "mix", "sprinkle"],
+        Some("cake") | Some("muffin") | Some("cookie") | Some("bread") | Some("pie")
+        | Some("dessert") => &["mix", "pour", "add", "stir", "beat", "sprinkle", "fold"],
+        Some("omelette") => &["beat", "mix", "pour", "add", "sprinkle", "stir"],
+        Some("rice") | Some("noodle") | Some("pasta") | Some("stir-fry") => {
+            &["add", "stir", "pour", "mix", "sprinkle"]
+        }
+        _ => &["mix", "add", "pour", "stir", "sprinkle"],
+    }
+}
+
+/// What happened to one ingredient while it was being planned.
+struct Work {
+    case: Option<u8>,
+    matched: Option<Match>,
+    alternatives: Vec<Alternative>,
+    low_confidence: bool,
+    overridden: bool,
+    planned: bool,
+    reasons: Vec<String>,
+    /// The label the ingredient has in the final tree.
+    label: String,
+}
+
+pub(crate) fn modify(
+    ctx: &Context,
+    tree: &mut Tree,
+    query: &Query,
+    enabled: bool,
+    notes: &mut Vec<String>,
+) -> (Vec<IngredientOutcome>, Vec<String>) {
+    let reference_labels: Vec<String> = tree.ingredient_labels().into_iter().collect();
+    let requested: HashSet<&str> = query
+        .ingredients
+        .iter()
+        .map(|i| i.object.as_str())
+        .collect();
+    let query_labels: Vec<String> = {
+        let mut seen = HashSet::new();
+        query
+            .ingredients
+            .iter()
+            .filter(|i| seen.insert(i.object.clone()))
+            .map(|i| i.object.clone())
+            .collect()
+    };
+    let mut claimed: HashSet<String> = HashSet::new();
+    let mut restated: HashMap<String, String> = HashMap::new();
+    let mut works: Vec<Work> = Vec::with_capacity(query.ingredients.len());
+    for ing in &query.ingredients {
+        let (o, s) = (ing.object.as_str(), ing.state.as_str());
+        let mut w = Work {
+            case: None,
+            matched: None,
+            alternatives: Vec::new(),
+            low_confidence: false,
+            overridden: false,
+            planned: false,
+            reasons: Vec::new(),
+            label: o.to_string(),
+        };
+        if is_utensil(o) {
+            w.reasons.push(format!(
+                "'{o}' is a utensil or container, not an ingredient"
+            ));
+            works.push(w);
+            continue;
+        }
+        let Some((eq, sim)) = equivalent(ctx, o, &reference_labels, &mut w) else {
+            works.push(w);
+            continue;
+        };
+        w.low_confidence = eq != o && ctx.sim.low_confidence(o, &eq, sim);
+        let in_tree = !tree.slots_with_label(&eq).is_empty();
+        if !enabled {
+            judge_unmodified(tree, o, s, &eq, sim, in_tree, &mut w);
+            works.push(w);
+            continue;
+        }
+        if !in_tree {
+            // case 4 from elsewhere in FOON (or an exact FOON label the reference tree lacks)
+            match add_branch(ctx, tree, &eq, o, s, &query_labels) {
+                Ok((state, reason)) => {
+                    w.case = Some(4);
+                    w.matched = Some(Match {
+                        label: eq.clone(),
+                        state,
+                        similarity: sim,
+                    });
+                    w.planned = true;
+                    w.reasons.push(reason);
+                }
+                Err(reason) => w.reasons.push(reason),
+            }
+            claimed.insert(eq.clone());
+            works.push(w);
+            continue;
+        }
+        // the equivalent is in the tree: substitute (cases 2, 4) or keep (cases 1, 3)
+        let tree_state = best_state_slot(tree, &eq, s)
+            .or_else(|| tree.slots_with_label(&eq).first().copied())
+            .map(|slot| state_text(&tree.slots[slot].node))
+            .unwrap_or_default();
+        w.matched = Some(Match {
+            label: eq.clone(),
+            state: tree_state,
+            similarity: sim,
+        });
+        if eq != o {
+            if requested.contains(eq.as_str()) || claimed.contains(&eq) {
+                match copy_branch(tree, &eq, o) {
+                    Some(_) => w.reasons.push(format!(
+                        "'{eq}' is also needed: its branch was copied for '{o}'"
+                    )),
+                    None => {
+                        w.reasons
+                            .push(format!("'{eq}' could not be copied for '{o}'"));
+                        works.push(w);
+                        continue;
+                    }
+                }
+            } else {
+                tree.rename_everywhere(&eq, o);
+                w.reasons.push(format!("'{eq}' substituted with '{o}'"));
+            }
+            claimed.insert(eq.clone());
+        }
+        claimed.insert(o.to_string());
+        let state_ok = best_state_slot(tree, o, s).is_some();
+        w.case = Some(match (eq == o, state_ok) {
+            (true, true) => 1,
+            (false, true) => 2,
+            (true, false) => 3,
+            (false, false) => 4,
+        });
+        if category(s) == Category::Other && !s.is_empty() {
+            w.reasons.push(format!(
+                "state '{s}' is not in the state taxonomy: kept the tree's state"
+            ));
+        } else if state_ok && best_exact(tree, o, s).is_none() {
+            w.reasons.push(format!(
+                "state '{s}' matched by category ({})",
+                category(s).name()
+            ));
+        }
+        if !state_ok {
+            if let Some(first) = restated.get(o) {
+                w.reasons.push(format!(
+                    "kept in the state '{first}' chosen for the same ingredient earlier"
+                ));
+            } else {
+                match restate(ctx, tree, &eq, o, s, &query_labels) {
+                    Ok(reason) => {
+                        restated.insert(o.to_string(), s.to_string());
+                        w.reasons.push(reason);
+                    }
+                    Err(reason) => w.reasons.push(reason),
+                }
+            }
+        }
+        w.planned = true;
+        works.push(w);
+    }
+
+    let mut removed = Vec::new();
+    let any_planned = works.iter().any(|w| w.planned);
+    if enabled && !any_planned {
+        notes.push(
+            "no ingredient of the query could be planned: the reference task tree is kept unpruned"
+                .to_string(),
+        );
+    } else if enabled {
+        let mut keep: BTreeSet<String> = works
+            .iter()
+            .filter(|w| w.planned)
+            .map(|w| w.label.clone())
+            .collect();
+        keep.insert(tree.slots[tree.goal].node.label.clone());
+        removed = prune(tree, &keep);
+        tree.drop_unneeded();
+        let present = tree.ingredient_labels();
+        for w in works.iter_mut().filter(|w| w.planned) {
+            if !present.contains(&w.label) {
+                w.planned = false;
+                w.reasons
+                    .push("lost while pruning the tree: no unit uses it".to_string());
+            }
+        }
+    } else {
+        notes.push("modification off: the reference task tree as retrieved".to_string());
+    }
+    let outcomes = query
+        .ingredients
+        .iter()
+        .zip(works)
+        .map(|(ing, w)| IngredientOutcome {
+            object: ing.object.clone(),
+            state: ing.state.clone(),
+            case: w.case,
+            matched: w.matched,
+            alternatives: w.alternatives,
+            low_confidence: w.low_confidence,
+            overridden: w.overridden,
+            status: if w.planned {
+                Status::Planned
+            } else {
+                Status::Unplannable
+            },
+            reason: if w.reasons.is_empty() {
+                None
+            } else {
+                Some(w.reasons.join("; "))
+            },
+        })
+        .collect();
+    (outcomes, removed)
+}
+
+/// The equivalent of `o`: an override, itself when it is a FOON label, else the most similar label of the
+/// reference tree, else of the whole knowledge base. Fills the alternatives; `None` when unplannable.
+fn equivalent(
+    ctx: &Context,
+    o: &str,
+    tree_labels: &[String],
+    w: &mut Work,
+) -> Option<(String, f32)> {
+    let all: Vec<&str> = ctx
+        .index
+        .ingredient_labels
+        .iter()
+        .map(String::as_str)
+        .collect();
+    let ranked = ctx.sim.rank(o, &all, 6);
+    let alternatives = |eq: &str| -> Vec<Alternative> {
+        ranked
+            .iter()
+            .filter(|(l, _)| l != eq && l != o)
+            .take(5)
+            .map(|(l, s)| Alternative {
+                label: l.clone(),
+                similarity: *s,
+            })
+            .collect()
+    };
+    if let Some(v) = ctx.overrides.get(o) {
+        w.overridden = true;
+        if !ctx.index.is_label(v) || is_utensil(v) {
+            w.alternatives = alternatives("");
+            w.reasons.push(format!(
+                "override '{v}' is not an ingredient of the knowledge base"
+            ));
+            return None;
+        }
+        let sim = if v == o {
+            1.0
+        } else {
+            ctx.sim.similarity(o, v)
+        };
+        w.alternatives = alternatives(v);
+        return Some((v.clone(), sim));
+    }
+    if ctx.index.is_label(o) {
+        w.alternatives = alternatives(o);
+        return Some((o.to_string(), 1.0));
+    }
+    let tree_refs: Vec<&str> = tree_labels.iter().map(String::as_str).collect();
+    let in_tree = ctx.sim.rank(o, &tree_refs, 1).into_iter().next();
+    let in_kb = ranked.first().cloned();
+    let pick = match (in_tree, in_kb) {
+        (Some(t), k) if ctx.sim.accepts(t.1) && !ctx.sim.low_confidence(o, &t.0, t.1) => {
+            Some(t).or(k)
+        }
+        (t, Some(k)) if ctx.sim.accepts(k.1) && t.as_ref().is_none_or(|t| k.1 > t.1) => Some(k),
+        (Some(t), _) if ctx.sim.accepts(t.1) => Some(t),
+        _ => None,
+    };
+    match pick {
+        Some((label, sim)) => {
+            w.alternatives = alternatives(&label);
+            if !tree_labels.contains(&label) {
+                w.reasons.push(format!(
+                    "equivalent '{label}' found in the universal FOON, not in the reference tree"
+                ));
+            }
+            Some((label, sim))
+        }
+        None => {
+            w.alternatives = alternatives("");
+            w.reasons.push(format!(
+                "no equivalent of '{o}' in the knowledge base{}",
+                ranked
+                    .first()
+                    .map(|(l, s)| format!(" (closest: '{l}', {s:.2})"))
+                    .unwrap_or_default()
+            ));
+            None
+        }
+    }
+}
+
+/// The case and status of an ingredient when modification is off.
+fn judge_unmodified(
+    tree: &Tree,
+    o: &str,
+    s: &str,
+    eq: &str,
+    sim: f32,
+    in_tree: bool,
+    w: &mut Work,
+) {
+    if !in_tree {
+        w.case = Some(4);
+        w.reasons
+            .push("not in the reference task tree (modification off)".to_string());
+        return;
+    }
+    let slot = best_state_slot(tree, eq, s);
+    let state = slot
+        .or_else(|| tree.slots_with_label(eq).first().copied())
+        .map(|x| state_text(&tree.slots[x].node))
+        .unwrap_or_default();
+    w.case = Some(match (eq == o, slot.is_some()) {
+        (true, true) => 1,
+        (false, true) => 2,
+        (true, false) => 3,
+        (false, false) => 4,
+    });
+    w.matched = Some(Match {
+        label: eq.to_string(),
+        state,
+        similarity: sim,
+    });
+    w.planned = true;
+    if eq != o || slot.is_none() {
+        w.reasons
+            .push("used as the reference tree has it (modification off)".to_string());
+    }
+}
+
+fn best_exact(tree: &Tree, label: &str, s: &str) -> Option<SlotId> {
+    tree.slots_with_label(label)
+        .into_iter()
+        .find(|&x| tree.slots[x].node.physical_states().any(|p| p == s))
+}
+
+/// A slot of `label` in the given state: exactly, else by category; a starting state matches a leaf in
+/// a starting state; a state outside the taxonomy matches any.
+fn best_state_slot(tree: &Tree, label: &str, s: &str) -> Option<SlotId> {
+    if let Some(x) = best_exact(tree, label, s) {
+        return Some(x);
+    }
+    let slots = tree.slots_with_label(label);
+    let c = category(s);
+    if c == Category::Other {
+        return slots.first().copied();
+    }
+    if c.is_starting() {
+        return slots.into_iter().find(|&x| {
+            !tree.produced(x)
+                && food_states(&tree.slots[x].node)
+                    .iter()
+                    .all(|f| category(f).is_starting())
+        });
+    }
+    slots.into_iter().find(|&x| {
+        food_states(&tree.slots[x].node)
+            .iter()
+            .any(|f| category(f) == c)
+    })
+}
+
+/// Live slots of `label` downstream of the given units (through units that pass the object on).
+fn downstream(tree: &Tree, start: Vec<TUnitId>, label: &str, order: &[TUnitId]) -> Vec<SlotId> {
+    let mut out = Vec::new();
+    let mut seen_units: HashSet<TUnitId> = HashSet::new();
+    let mut seen_slots: HashSet<SlotId> = HashSet::new();
+    let mut work = start;
+    while let Some(u) = work.pop() {
+        if !seen_units.insert(u) {
+            continue;
+        }
+        for &(x, _) in &tree.units[u].outputs {
+            if tree.slots[x].node.label == label && seen_slots.insert(x) {
+                out.push(x);
+                work.extend(tree.consumers(x, order));
+            }
+        }
+    }
+    out
+}
+
+/// Replaces food states in a node (`old` → `new`; when `old` is empty, `new` is added).
+fn replace_states(node: &ObjectNode, old: &[String], new: &str) -> ObjectNode {
+    let mut states: Vec<State> = node
+        .states
+        .iter()
+        .filter(|st| !(st.arg.is_none() && old.contains(&st.name)))
+        .cloned()
+        .collect();
+    states.push(State::plain(new));
+    ObjectNode::new(node.label.clone(), states)
+}
+
+/// Cases 3 and 4: brings the ingredient `o` (already in the tree; `eq` in FOON) to the state `s`.
+fn restate(
+    ctx: &Context,
+    tree: &mut Tree,
+    eq: &str,
+    o: &str,
+    s: &str,
+    query_labels: &[String],
+) -> Result<String, String> {
+    let order = tree.order();
+    let slots = tree.slots_with_label(o);
+    let first_use = |x: SlotId| {
+        order
+            .iter()
+            .position(|&u| tree.units[u].inputs.iter().any(|i| i.0 == x))
+            .unwrap_or(usize::MAX)
+    };
+    let Some(leaf) = slots
+        .iter()
+        .copied()
+        .filter(|&x| !tree.produced(x))
+        .min_by_key(|&x| (first_use(x), x))
+    else {
+        return Err(format!(
+            "'{o}' has no starting node in the tree; state kept"
+        ));
+    };
+    let leaf_node = tree.slots[leaf].node.clone();
+    let leaf_state = state_text(&leaf_node);
+    let leaf_cat = node_category(&leaf_node);
+    let c = category(s);
+    if c.is_starting() {
+        // Table I, case 3: the tree starts from a processed leaf; add the units making it from raw
+        let Some(kb_node) = tree.slots[leaf].kb else {
+            return Err(format!(
+                "no way to make '{leaf_node}' from '{s}' is known; taken as it is"
+            ));
+        };
+        let taken: HashSet<usize> = HashSet::new();
+        let r = retrieve(
+            ctx.kb,
+            ctx.index,
+            ctx.sim,
+            query_labels,
+            kb_node,
+            Some(ctx.goal_subgraph),
+            &taken,
+        );
+        if r.units.is_empty() {
+            return Err(format!(
+                "FOON has no way to make '{leaf_state}' {o} from '{s}'; it is taken as it is"
+            ));
+        }
+        let mut slot_of: HashMap<NodeId, SlotId> = HashMap::from([(kb_node, leaf)]);
+        let before = tree.slots.len();
+        let added = tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
+        if eq != o {
+            let new: Vec<SlotId> = (before..tree.slots.len()).collect();
+            tree.rename_in(&new, eq, o);
+        }
+        return Ok(format!(
+            "added {} unit(s) making the tree's '{leaf_state}' {o} from '{s}'",
+            added.len()
+        ));
+    }
+    if !leaf_cat.reaches(c) {
+        return Err(format!(
+            "state '{s}' cannot be reached from the tree's '{leaf_state}' (not reversible); kept '{leaf_state}'"
+        ));
+    }
+    let Some(motion) = ctx.index.motion_for(s) else {
+        return Err(format!(
+            "no motion in FOON reaches '{s}'; kept the tree's state"
+        ));
+    };
+    if SEPARATION.contains(&c) {
+        // swap the tree's own cutting step for one reaching the wanted state
+        for &u in &order {
+            let unit = &tree.units[u];
+            let gained: Option<(SlotId, Vec<String>)> = unit.outputs.iter().find_map(|&(x, _)| {
+                let out = &tree.slots[x].node;
+                if out.label != o {
+                    return None;
+                }
+                let before: BTreeSet<&str> = unit
+                    .inputs
+                    .iter()
+                    .map(|i| &tree.slots[i.0].node)
+                    .filter(|n| n.label == o)
+                    .flat_map(|n| n.physical_states())
+                    .collect();
+                if before.is_empty() && !unit.inputs.iter().any(|i| tree.slots[i.0].node.label == o)
+                {
+                    return None;
+                }
+                let g: Vec<String> = food_states(out)
+                    .into_iter()
+                    .filter(|st| !before.contains(st) && SEPARATION.contains(&category(st)))
+                    .map(str::to_string)
+                    .collect();
+                (!g.is_empty()).then_some((x, g))
+            });
+            if let Some((_, old)) = gained {
+                let targets = downstream(tree, vec![u], o, &order);
+                for x in targets {
+                    let node = replace_states(&tree.slots[x].node, &old, s);
+                    tree.slots[x].node = node;
+                }
+                let unit = &mut tree.units[u];
+                let before = std::mem::replace(&mut unit.motion, motion.clone());
+                if unit.origin == Origin::Reference {
+                    unit.origin = Origin::Renamed;
+                }
+                return Ok(format!(
+                    "'{}' ({before}) changed to '{s}' ({motion})",
+                    old.join(", ")
+                ));
+            }
+        }
+    }
+    // prepend a unit bringing the starting node to the wanted state
+    let old: Vec<String> = food_states(&leaf_node)
+        .into_iter()
+        .map(str::to_string)
+        .collect();
+    let new_node = ObjectNode::new(o, vec![State::plain(s)]);
+    let consumers = tree.consumers(leaf, &order);
+    let new_slot = tree.add_slot(new_node);
+    let mut inputs = vec![(leaf, true)];
+    if let Some(t) = ctx.index.utensil_for(&motion) {
+        inputs.push((utensil_slot(ctx.kb, tree, t), false));
+    }
+    tree.add_unit(inputs, &motion, vec![(new_slot, true)], Origin::Grafted);
+    for &v in &consumers {
+        for i in tree.units[v].inputs.iter_mut() {
+            if i.0 == leaf {
+                i.0 = new_slot;
+            }
+        }
+    }
+    for x in downstream(tree, consumers, o, &order) {
+        let node = replace_states(&tree.slots[x].node, &old, s);
+        tree.slots[x].node = node;
+    }
+    Ok(format!("added '{motion}' to make it '{s}'"))
+}
+
+/// A slot for a utensil node: the tree's own when it is a starting item there, else a new one.
+fn utensil_slot(kb: &KnowledgeBase, tree: &mut Tree, n: NodeId) -> SlotId {
+    let node = &kb.nodes[n];
+    if let Some(x) = tree
+        .live_slots()
+        .into_iter()
+        .find(|&x| tree.slots[x].node == *node && !tree.produced(x))
+    {
+        return x;
+    }
+    tree.add_slot(node.clone())
+}
+
+/// Case 2 with the equivalent also requested: copies the branch that prepares `eq` for `o` and feeds the
+/// copy into the unit where `eq` joins the dish. Returns the copy's last node.
+fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
+    let order = tree.order();
+    let is_private = |u: TUnitId| {
+        let unit = &tree.units[u];
+        let ing_in: Vec<&str> = unit
+            .inputs
+            .iter()
+            .map(|i| tree.slots[i.0].node.label.as_str())
+            .filter(|l| !is_utensil(l))
+            .collect();
+        let ing_out_ok = unit
+            .outputs
+            .iter()
+            .map(|x| tree.slots[x.0].node.label.as_str())
+            .filter(|l| !is_utensil(l))
+            .all(|l| l == eq);
+        !ing_in.is_empty() && ing_in.iter().all(|&l| l == eq) && ing_out_ok
+    };
+    let branch: Vec<TUnitId> = order.iter().copied().filter(|&u| is_private(u)).collect();
+    let entry = order.iter().copied().find(|&u| {
+        !branch.contains(&u)
+            && tree.units[u]
+                .inputs
+                .iter()
+                .any(|i| tree.slots[i.0].node.label == eq)
+    })?;
+    let x = tree.units[entry]
+        .inputs
+        .iter()
+        .map(|i| i.0)
+        .find(|&i| tree.slots[i].node.label == eq)?;
+    let produced_in_branch: HashSet<SlotId> = branch
+        .iter()
+        .flat_map(|&u| tree.units[u].outputs.iter().map(|o| o.0))
+        .collect();
+    let mut copy_of: HashMap<SlotId, SlotId> = HashMap::new();
+    let copy = |tree: &mut Tree, s: SlotId, copy_of: &mut HashMap<SlotId, SlotId>| -> SlotId {
+        if let Some(&c) = copy_of.get(&s) {
+            return c;
+        }
+        let node = &tree.slots[s].node;
+        if node.label != eq
+            && !produced_in_branch.contains(&s)
+            && !node.ingredients().iter().any(|i| i == eq)
+        {
+            return s;
+        }
+        let mut renamed = map_contents(node, &mut |list| {
+            for item in list.iter_mut() {
+                if item == eq {
+                    *item = o.to_string();
+                }
+            }
+        });
+        if renamed.label == eq {
+            renamed.label = o.to_string();
+        }
+        let c = tree.add_slot(renamed);
+        copy_of.insert(s, c);
+        c
+    };
+    for &u in &branch {
+        let unit = tree.units[u].clone();
+        let inputs = unit
+            .inputs
+            .iter()
+            .map(|&(s, m)| (copy(tree, s, &mut copy_of), m))
+            .collect();
+        let outputs = unit
+            .outputs
+            .iter()
+            .map(|&(s, m)| (copy(tree, s, &mut copy_of), m))
+            .collect();
+        tree.add_unit(inputs, &unit.motion, outputs, Origin::Copied);
+    }
+    let new_x = copy(tree, x, &mut copy_of);
+    tree.units[entry].inputs.push((new_x, true));
+    tree.add_contents_downstream(entry, o);
+    tree.units[entry].origin = Origin::Attached;
+    Some(new_x)
+}
+
+/// Knowledge-base nodes of `eq` for state `s`, best first: same state, else same category (ties: the
+/// state most frequent in recipes of the dish class, then overall), preferring nodes without a place.
+/// The flag says whether the node is in the wanted state (else it is the ingredient as bought).
+fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
+    let c = category(s);
+    type Key = (
+        bool,
+        bool,
+        bool,
+        bool,
+        u32,
+        u32,
+        usize,
+        std::cmp::Reverse<NodeId>,
+    );
+    let mut ranked: Vec<(Key, NodeId)> = Vec::new();
+    for &n in ctx.index.nodes_of(eq) {
+        let node = &ctx.kb.nodes[n];
+        let food = food_states(node);
+        let exact = food.contains(&s);
+        let cat = c != Category::Other && food.iter().any(|f| category(f) == c);
+        let raw =
+            c.is_starting() && ctx.kb.kitchen[n] && food.iter().all(|f| category(f).is_starting());
+        if !(exact || cat || raw) {
+            continue;
+        }
+        let freq = |class: Option<u32>| -> u32 {
+            food.iter()
+                .map(|f| {
+                    ctx.index.label_state_count(class, eq, f) + ctx.index.state_count(class, f)
+                })
+                .sum()
+        };
+        let bare = node.container().is_none() && node.ingredients().is_empty();
+        let key = (
+            exact,
+            cat,
+            node.ingredients().is_empty(),
+            bare,
+            freq(ctx.class),
+            freq(None),
+            usize::MAX - node.states.len(),
+            std::cmp::Reverse(n),
+        );
+        ranked.push((key, n));
+    }
+    ranked.sort_by_key(|r| std::cmp::Reverse(r.0));
+    let mut out: Vec<(NodeId, bool)> = ranked.into_iter().map(|(_, n)| (n, true)).collect();
+    // the ingredient as it comes from the kitchen, fewest states first
+    if let Some(n) = ctx
+        .index
+        .nodes_of(eq)
+        .iter()
+        .copied()
+        .filter(|&n| ctx.kb.kitchen[n] && ctx.kb.nodes[n].ingredients().is_empty())
+        .min_by_key(|&n| (ctx.kb.nodes[n].states.len(), n))
+        .or_else(|| ctx.index.nodes_of(eq).first().copied())
+    {
+        out.push((n, false));
+    }
+    out
+}
+
+/// Whether every unit of a retrieved branch handles `eq` alone (with utensils): a branch that mixes other
+/// ingredients would bring another recipe's dish along.
+fn private_branch(kb: &KnowledgeBase, r: &super::retrieve::Retrieved, eq: &str) -> bool {
+    r.units.iter().all(|&u| {
+        kb.units[u].input_nodes().all(|n| {
+            let node = &kb.nodes[n];
+            (is_utensil(&node.label) || node.label == eq)
+                && node.ingredients().iter().all(|i| i == eq)
+        })
+    })
+}
+
+/// The unit a new ingredient joins: one that can take more ingredients, where ingredients of the same
+/// kind go in (salt where the pepper is sprinkled), else with the dish's usual motion, closest to the goal.
+fn attach_point(ctx: &Context, tree: &Tree, o: &str, c: Category) -> Option<TUnitId> {
+    let order = tree.order();
+    let pattern = dish_pattern(ctx.class);
+    let goal_label = tree.slots[tree.goal].node.label.clone();
+    let mut best: Option<(TUnitId, (bool, bool, usize, usize))> = None;
+    for (pos, &u) in order.iter().enumerate() {
+        let unit = &tree.units[u];
+        let takes = unit
+            .outputs
+            .iter()
+            .any(|x| !tree.slots[x.0].node.ingredients().is_empty());
+        if !takes || !accepts_more(&unit.motion) {
+            continue;
+        }
+        // a unit that adds an ingredient, not one that only moves the dish itself
+        let adds = unit.inputs.iter().any(|i| {
+            let n = &tree.slots[i.0].node;
+            i.1 && !is_utensil(&n.label) && n.label != goal_label
+        });
+        let kin = unit.inputs.iter().any(|i| {
+            let n = &tree.slots[i.0].node;
+            !is_utensil(&n.label)
+                && n.label != o
+                && ((!matches!(c, Category::Whole | Category::Other) && node_category(n) == c)
+                    || ctx.sim.accepts(ctx.sim.similarity(o, &n.label))
+                        && ctx.sim.similarity(o, &n.label) < 1.0)
+        });
+        let pref = pattern
+            .iter()
+            .position(|m| unit.motion.contains(m))
+            .unwrap_or(pattern.len());
+        let key = (adds, kin, usize::MAX - pref, pos);
+        if best.as_ref().is_none_or(|(_, b)| key > *b) {
+            best = Some((u, key));
+        }
+    }
+    best.map(|b| b.0)
+        .or_else(|| tree.producer.get(tree.goal).copied().flatten())
+}
+
+/// Case 4 from the universal FOON: the equivalent's branch for the state, renamed and attached.
+/// Returns the chosen state text and a reason.
+fn add_branch(
+    ctx: &Context,
+    tree: &mut Tree,
+    eq: &str,
+    o: &str,
+    s: &str,
+    query_labels: &[String],
+) -> Result<(String, String), String> {
+    let c = category(s);
+    let taken: HashSet<usize> = HashSet::new();
+    let mut picked = None;
+    for (n, in_state) in pick_nodes(ctx, eq, s).into_iter().take(8) {
+        if ctx.kb.kitchen[n] {
+            picked = Some((n, in_state, Default::default()));
+            break;
+        }
+        let r = retrieve(ctx.kb, ctx.index, ctx.sim, query_labels, n, None, &taken);
+        if private_branch(ctx.kb, &r, eq) {
+            picked = Some((n, in_state, r));
+            break;
+        }
+    }
+    let Some((n, in_state, r)) = picked else {
+        return Err(format!(
+            "'{eq}' has no usable object node in the knowledge base"
+        ));
+    };
+    let before = tree.slots.len();
+    let mut slot_of: HashMap<NodeId, SlotId> = HashMap::new();
+    // utensils the tree already starts with are shared rather than duplicated
+    for x in tree.live_slots() {
+        if let Some(k) = tree.slots[x].kb {
+            if is_utensil(&tree.slots[x].node.label) && !tree.produced(x) {
+                slot_of.entry(k).or_insert(x);
+            }
+        }
+    }
+    let units = if ctx.kb.kitchen[n] {
+        Vec::new()
+    } else {
+        r.units.clone()
+    };
+    let added = if units.is_empty() {
+        Vec::new()
+    } else {
+        tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted)
+    };
+    let mut last = match slot_of.get(&n) {
+        Some(&x) => x,
+        None => tree.add_slot(ctx.kb.nodes[n].clone()),
+    };
+    let mut chosen_state = state_text(&ctx.kb.nodes[n]);
+    let mut how = format!(
+        "'{}' taken from FOON{}",
+        ctx.kb.nodes[n],
+        if added.is_empty() {
+            String::new()
+        } else {
+            format!(" with {} unit(s) making it", added.len())
+        }
+    );
+    if !in_state && !c.is_starting() && c != Category::Other {
+        if let Some(motion) = ctx.index.motion_for(s) {
+            let node = ObjectNode::new(eq, vec![State::plain(s)]);
+            let x = tree.add_slot(node);
+            let mut inputs = vec![(last, true)];
+            if let Some(t) = ctx.index.utensil_for(&motion) {
+                inputs.push((utensil_slot(ctx.kb, tree, t), false));
+            }
+            tree.add_unit(inputs, &motion, vec![(x, true)], Origin::Grafted);
+            how.push_str(&format!(", then '{motion}' to make it '{s}'"));
+            chosen_state = s.to_string();
+            last = x;
+        } else {
+            how.push_str(&format!(", no motion in FOON reaches '{s}'"));
+        }
+    }
+    if eq != o {
+        let new: Vec<SlotId> = (before..tree.slots.len()).collect();
+        tree.rename_in(&new, eq, o);
+        how = format!("'{eq}' substituted with '{o}': {how}");
+    }
+    let Some(m) = attach_point(ctx, tree, o, c) else {
+        return Err(format!("no unit of the tree can take '{o}'"));
+    };
+    tree.units[m].inputs.push((last, true));
+    tree.add_contents_downstream(m, o);
+    tree.units[m].origin = Origin::Attached;
+    let motion = tree.units[m].motion.clone();
+    Ok((
+        chosen_state,
+        format!("not in the reference tree: {how}; added at '{motion}'"),
+    ))
+}
+
+/// Removes `labels` from every list of contents; units touching a changed node are marked renamed.
+fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
+    let mut touched: HashSet<SlotId> = HashSet::new();
+    for (i, slot) in tree.slots.iter_mut().enumerate() {
+        let mut changed = false;
+        let node = map_contents(&slot.node, &mut |list| {
+            let n = list.len();
+            list.retain(|x| !labels.contains(x));
+            changed |= list.len() != n;
+        });
+        if changed {
+            slot.node = node;
+            touched.insert(i);
+        }
+    }
+    for u in tree.units.iter_mut() {
+        if u.alive
+            && u.origin == Origin::Reference
+            && u.inputs
+                .iter()
+                .chain(u.outputs.iter())
+                .any(|x| touched.contains(&x.0))
+        {
+            u.origin = Origin::Renamed;
+        }
+    }
+}
+
+/// Ingredients a unit handles: its non-utensil inputs and their contents.
+fn handled(tree: &Tree, inputs: &[(SlotId, bool)], gone: &HashSet<SlotId>) -> BTreeSet<String> {
+    let mut set = BTreeSet::new();
+    for &(x, _) in inputs {
+        if gone.contains(&x) {
+            continue;
+        }
+        let n = &tree.slots[x].node;
+        if !is_utensil(&n.label) {
+            set.insert(n.label.clone());
+        }
+        set.extend(n.ingredients());
+    }
+    set
+}
+
+/// Removes every starting ingredient not asked for, with the units that only served it; containers that
+/// held it pass on unchanged, and it leaves every `contains {…}` list. Returns the removed labels.
+fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
+    let order = tree.order();
+    let live = tree.live_slots();
+    let starting: BTreeSet<String> = live
+        .iter()
+        .filter(|&&x| !tree.produced(x))
+        .map(|&x| tree.slots[x].node.label.clone())
+        .filter(|l| !is_utensil(l))
+        .collect();
+    let mut pruned: BTreeSet<String> = starting.difference(keep).cloned().collect();
+    if pruned.is_empty() {
+        return Vec::new();
+    }
+    let had: HashMap<TUnitId, bool> = order
+        .iter()
+        .map(|&u| {
+            (
+                u,
+                !handled(tree, &tree.units[u].inputs, &HashSet::new()).is_empty(),
+            )
+        })
+        .collect();
+    drop_contents(tree, &pruned);
+    let mut gone: HashSet<SlotId> = live
+        .iter()
+        .copied()
+        .filter(|&x| pruned.contains(&tree.slots[x].node.label))
+        .collect();
+    let mut alias: HashMap<SlotId, SlotId> = HashMap::new();
+    let resolve = |alias: &HashMap<SlotId, SlotId>, mut s: SlotId| {
+        for _ in 0..10_000 {
+            match alias.get(&s) {
+                Some(&t) => s = t,
+                None => break,
+            }
+        }
+        s
+    };
+    let goal = tree.goal;
+    for &u in &order {
+        let inputs: Vec<(SlotId, bool)> = tree.units[u]
+            .inputs
+            .iter()
+            .map(|&(x, m)| (resolve(&alias, x), m))
+            .filter(|i| !gone.contains(&i.0))
+            .collect();
+        let outputs: Vec<(SlotId, bool)> = tree.units[u]
+            .outputs
+            .iter()
+            .copied()
+            .filter(|o| !gone.contains(&o.0))
+            .collect();
+        let makes_goal = outputs.iter().any(|o| o.0 == goal);
+        let left = handled(tree, &inputs, &gone);
+        let lost_all = had.get(&u).copied().unwrap_or(false) && left.is_empty();
+        // nothing new comes out: every output is one of the inputs as they are now
+        let no_op = outputs.iter().all(|o| {
+            inputs
+                .iter()
+                .any(|i| i.0 == o.0 || tree.slots[i.0].node == tree.slots[o.0].node)
+        });
+        if (lost_all || no_op || outputs.is_empty()) && !makes_goal {
+            tree.units[u].alive = false;
+            for &(x, _) in &outputs {
+                let node = &tree.slots[x].node;
+                let same = inputs
+                    .iter()
+                    .find(|i| tree.slots[i.0].node == *node)
+                    .or_else(|| {
+                        inputs
+                            .iter()
+                            .find(|i| tree.slots[i.0].node.label == node.label)
+                    });
+                match same {
+                    Some(&(i, _)) if i != x => {
+                        alias.insert(x, i);
+                    }
+                    Some(_) => {}
+                    None => {
+                        let label = node.label.clone();
+                        gone.insert(x);
+                        if !is_utensil(&label) && !keep.contains(&label) {
+                            pruned.insert(label);
+                        }
+                    }
+                }
+            }
+            continue;
+        }
+        let unit = &mut tree.units[u];
+        let mut seen: HashSet<SlotId> = HashSet::new();
+        unit.inputs = inputs.into_iter().filter(|i| seen.insert(i.0)).collect();
+        unit.outputs = outputs;
+    }
+    // the goal may have been passed through a removed unit
+    // labels made only by removed units leave the lists of contents as well
+    let still: BTreeSet<String> = tree
+        .live_slots()
+        .into_iter()
+        .filter(|x| !gone.contains(x))
+        .map(|x| tree.slots[x].node.label.clone())
+        .collect();
+    pruned.retain(|l| !still.contains(l) || starting.contains(l));
+    drop_contents(tree, &pruned);
+    pruned.into_iter().collect()
+}

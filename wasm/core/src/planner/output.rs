@@ -1,0 +1,304 @@
+//! From the modified tree to the plan: units in execution order, progress lines (section IV-A) and one
+//! plain sentence per unit.
+
+use super::modify::food_states;
+use super::tree::{SlotId, TUnitId, Tree};
+use crate::kb::{Goal, KnowledgeBase};
+use crate::model::{ObjectNode, StateArg};
+use crate::plan::{
+    DishClassRef, GoalInfo, IngredientOutcome, Plan, PlanNode, PlanUnit, ProgressLine,
+    ProgressState, Query, Status,
+};
+use crate::taxonomy::is_utensil;
+use std::collections::HashSet;
+
+pub(crate) struct Parts<'a> {
+    pub kb: &'a KnowledgeBase,
+    pub tree: &'a Tree,
+    pub query: Query,
+    pub dish_class: Option<DishClassRef>,
+    pub notes: Vec<String>,
+    pub modified: bool,
+    pub goal: &'a Goal,
+    pub score: f32,
+    pub outcomes: Vec<IngredientOutcome>,
+    pub removed: Vec<String>,
+    pub format_version: u32,
+}
+
+pub(crate) fn plan_node(n: &ObjectNode) -> PlanNode {
+    PlanNode {
+        label: n.label.clone(),
+        states: n.states.iter().map(|s| s.to_string()).collect(),
+        ingredients: n.ingredients(),
+        container: n.container().map(str::to_string),
+    }
+}
+
+pub(crate) fn build(p: Parts) -> Plan {
+    let tree = p.tree;
+    let order = tree.order();
+    let units: Vec<PlanUnit> = order
+        .iter()
+        .map(|&u| {
+            let unit = &tree.units[u];
+            PlanUnit {
+                inputs: unit
+                    .inputs
+                    .iter()
+                    .map(|i| plan_node(&tree.slots[i.0].node))
+                    .collect(),
+                motion: unit.motion.clone(),
+                outputs: unit
+                    .outputs
+                    .iter()
+                    .map(|o| plan_node(&tree.slots[o.0].node))
+                    .collect(),
+                origin: unit.origin,
+                sources: unit.sources.clone(),
+            }
+        })
+        .collect();
+    let goal_node = &tree.slots[tree.goal].node;
+    let steps = order.iter().map(|&u| sentence(tree, u)).collect();
+    let mut progress_lines = Vec::new();
+    let mut done: HashSet<String> = HashSet::new();
+    for o in &p.outcomes {
+        if o.status != Status::Planned || !done.insert(o.object.clone()) {
+            continue;
+        }
+        if let Some(line) = progress_line(tree, &order, &o.object) {
+            progress_lines.push(line);
+        }
+    }
+    let kb_goal = &p.kb.nodes[p.goal.node];
+    Plan {
+        format_version: p.format_version,
+        query: p.query,
+        dish_class: p.dish_class,
+        notes: p.notes,
+        modified: p.modified,
+        goal: GoalInfo {
+            label: goal_node.label.clone(),
+            states: goal_node.states.iter().map(|s| s.to_string()).collect(),
+            ingredients: if p.goal.ingredients.is_empty() {
+                kb_goal.ingredients()
+            } else {
+                p.goal.ingredients.clone()
+            },
+            subgraph: p.goal.subgraph.clone(),
+            score: p.score,
+            dish_class: p.goal.dish_class,
+        },
+        units,
+        ingredients: p.outcomes,
+        removed: p.removed,
+        progress_lines,
+        steps,
+    }
+}
+
+fn location(n: &ObjectNode) -> String {
+    n.states
+        .iter()
+        .find_map(|s| match &s.arg {
+            Some(StateArg::Container(c)) => Some(format!("{} {c}", s.name)),
+            _ => None,
+        })
+        .unwrap_or_default()
+}
+
+fn physical(n: &ObjectNode) -> String {
+    let food = food_states(n);
+    if food.is_empty() {
+        n.physical_states().collect::<Vec<_>>().join(", ")
+    } else {
+        food.join(", ")
+    }
+}
+
+/// The ingredient's states and places from its starting node, the motions between them, and the dish.
+fn progress_line(tree: &Tree, order: &[TUnitId], label: &str) -> Option<ProgressLine> {
+    let slots = tree.slots_with_label(label);
+    let first_use = |x: SlotId| {
+        order
+            .iter()
+            .position(|&u| tree.units[u].inputs.iter().any(|i| i.0 == x))
+            .unwrap_or(usize::MAX)
+    };
+    let start = slots
+        .iter()
+        .copied()
+        .filter(|&x| !tree.produced(x))
+        .min_by_key(|&x| (first_use(x), x))
+        .or_else(|| slots.first().copied())?;
+    let mut states = vec![ProgressState {
+        physical_state: physical(&tree.slots[start].node),
+        location: location(&tree.slots[start].node),
+    }];
+    let mut motions = Vec::new();
+    let mut at = start;
+    let mut seen: HashSet<SlotId> = HashSet::from([start]);
+    let mut from = 0usize;
+    loop {
+        let next = order.iter().enumerate().skip(from).find_map(|(pos, &u)| {
+            let unit = &tree.units[u];
+            if !unit.inputs.iter().any(|i| i.0 == at) {
+                return None;
+            }
+            let out = unit
+                .outputs
+                .iter()
+                .map(|o| o.0)
+                .find(|&o| tree.slots[o].node.label == label && !seen.contains(&o));
+            Some((pos, u, out))
+        });
+        let Some((pos, u, out)) = next else { break };
+        motions.push(tree.units[u].motion.clone());
+        match out {
+            Some(o) => {
+                seen.insert(o);
+                states.push(ProgressState {
+                    physical_state: physical(&tree.slots[o].node),
+                    location: location(&tree.slots[o].node),
+                });
+                at = o;
+                from = pos + 1;
+            }
+            None => {
+                // it went into something else: the last state is that product
+                if let Some(&(o, _)) = tree.units[u].outputs.iter().find(|o| {
+                    tree.slots[o.0]
+                        .node
+                        .ingredients()
+                        .iter()
+                        .any(|i| i == label)
+                        || !is_utensil(&tree.slots[o.0].node.label)
+                }) {
+                    let n = &tree.slots[o].node;
+                    states.push(ProgressState {
+                        physical_state: format!("in {}", n.label),
+                        location: location(n),
+                    });
+                } else {
+                    motions.pop();
+                }
+                break;
+            }
+        }
+    }
+    Some(ProgressLine {
+        ingredient: label.to_string(),
+        state: states,
+        motion: motions,
+        end_product: tree.slots[tree.goal].node.label.clone(),
+    })
+}
+
+fn verb(motion: &str) -> String {
+    let m = motion.trim_end_matches('*').trim();
+    let m = match m {
+        "pick-and-place" => "place",
+        "put inside" => "put",
+        other => other,
+    };
+    let mut c = m.chars();
+    match c.next() {
+        Some(f) => f.to_uppercase().collect::<String>() + c.as_str(),
+        None => String::new(),
+    }
+}
+
+fn list(items: &[String]) -> String {
+    let items: Vec<String> = items.iter().map(|i| format!("the {i}")).collect();
+    match items.len() {
+        0 => String::new(),
+        1 => items[0].clone(),
+        n => format!("{} and {}", items[..n - 1].join(", "), items[n - 1]),
+    }
+}
+
+/// One plain sentence for a unit: "Slice the tomato on the cutting board."
+pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
+    let unit = &tree.units[u];
+    let node = |x: SlotId| &tree.slots[x].node;
+    let mut objects: Vec<String> = Vec::new();
+    fn push(objects: &mut Vec<String>, l: &str) {
+        if !objects.iter().any(|o| o == l) {
+            objects.push(l.to_string());
+        }
+    }
+    for &(x, m) in &unit.inputs {
+        if m && !is_utensil(&node(x).label) {
+            push(&mut objects, &node(x).label);
+        }
+    }
+    if objects.is_empty() {
+        for &(x, _) in &unit.inputs {
+            if !is_utensil(&node(x).label) {
+                push(&mut objects, &node(x).label);
+            }
+        }
+    }
+    if objects.is_empty() {
+        for &(x, m) in &unit.inputs {
+            if m {
+                push(&mut objects, &node(x).label);
+            }
+        }
+    }
+    if objects.is_empty() {
+        if let Some(&(x, _)) = unit.inputs.first() {
+            push(&mut objects, &node(x).label);
+        }
+    }
+    // where the moved objects end up
+    let place = unit.outputs.iter().find_map(|&(x, _)| {
+        let n = node(x);
+        if !objects.contains(&n.label) {
+            return None;
+        }
+        n.states.iter().find_map(|s| match &s.arg {
+            Some(StateArg::Container(c)) if !objects.contains(c) => {
+                Some((s.name.clone(), c.clone()))
+            }
+            _ => None,
+        })
+    });
+    let tools: Vec<String> = unit
+        .inputs
+        .iter()
+        .filter(|&&(x, m)| {
+            let n = node(x);
+            !m && is_utensil(&n.label)
+                && n.states.is_empty()
+                && !objects.contains(&n.label)
+                && place.as_ref().is_none_or(|p| p.1 != n.label)
+        })
+        .map(|&(x, _)| node(x).label.clone())
+        .collect();
+    let mut text = format!("{} {}", verb(&unit.motion), list(&objects));
+    if let Some((rel, c)) = place {
+        let into = matches!(
+            unit.motion.trim_end_matches('*'),
+            "pour"
+                | "pick-and-place"
+                | "put inside"
+                | "insert"
+                | "add"
+                | "scoop and pour"
+                | "place"
+        );
+        let rel = match (rel.as_str(), into) {
+            ("in", true) => "into".to_string(),
+            ("on", true) => "onto".to_string(),
+            (r, _) => r.to_string(),
+        };
+        text.push_str(&format!(" {rel} the {c}"));
+    }
+    if !tools.is_empty() {
+        text.push_str(&format!(" with {}", list(&tools)));
+    }
+    text.push('.');
+    text
+}

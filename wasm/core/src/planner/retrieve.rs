@@ -1,0 +1,236 @@
+//! Algorithm 2: the task tree of a node, by best-first search from it down to the kitchen.
+//!
+//! At each object node not in the kitchen, one of the units producing it is chosen with the heuristic
+//! g(u) = Σ_q max_a sim(q, a): the similarity-weighted overlap of the query ingredients q with the
+//! ingredients a the unit handles. A unit already in the tree is always reused (no unit appears twice),
+//! and a unit that would close a cycle is never chosen, so the search ends on any graph. The result is
+//! a valid execution order (every unit after the units making its inputs), unlike a reversed BFS order.
+
+use super::index::PlannerIndex;
+use crate::kb::KnowledgeBase;
+use crate::model::{NodeId, UnitId};
+use crate::similarity::Similarity;
+use crate::taxonomy::is_utensil;
+use std::collections::{BTreeSet, HashMap, HashSet, VecDeque};
+
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Retrieved {
+    /// Chosen units in execution order.
+    pub units: Vec<UnitId>,
+    /// The unit chosen to make each node that is not taken from the kitchen.
+    pub chosen: HashMap<NodeId, UnitId>,
+    /// Nodes that needed a unit but every unit making them would close a cycle (used as they are).
+    pub blocked: Vec<NodeId>,
+}
+
+/// Ingredient labels a unit handles: its non-utensil inputs and the contents of its inputs.
+fn unit_ingredients(kb: &KnowledgeBase, u: UnitId) -> BTreeSet<&str> {
+    let mut out = BTreeSet::new();
+    if let Some(unit) = kb.units.get(u) {
+        for n in unit.input_nodes() {
+            let node = &kb.nodes[n];
+            if !is_utensil(&node.label) {
+                out.insert(node.label.as_str());
+            }
+            for s in &node.states {
+                if let Some(crate::model::StateArg::Ingredients(list)) = &s.arg {
+                    out.extend(list.iter().map(String::as_str));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// g(u): similarity-weighted overlap of the query ingredients and the unit's ingredients.
+pub(crate) fn heuristic(
+    kb: &KnowledgeBase,
+    sim: &dyn Similarity,
+    query: &[String],
+    u: UnitId,
+) -> f32 {
+    let have = unit_ingredients(kb, u);
+    query
+        .iter()
+        .map(|q| {
+            if have.contains(q.as_str()) {
+                1.0
+            } else {
+                have.iter()
+                    .map(|a| sim.similarity(q, a))
+                    .fold(0.0f32, f32::max)
+            }
+        })
+        .sum()
+}
+
+/// Whether `target` can be reached from `from` following chosen producers (node → unit → inputs).
+fn depends_on(
+    kb: &KnowledgeBase,
+    chosen: &HashMap<NodeId, UnitId>,
+    from: NodeId,
+    target: NodeId,
+) -> bool {
+    let mut stack = vec![from];
+    let mut seen = HashSet::new();
+    while let Some(n) = stack.pop() {
+        if n == target {
+            return true;
+        }
+        if !seen.insert(n) {
+            continue;
+        }
+        if let Some(&u) = chosen.get(&n) {
+            stack.extend(kb.units[u].input_nodes());
+        }
+    }
+    false
+}
+
+/// Retrieves the tree making `root`. `root` is expanded even when it is a kitchen item (a goal, or a
+/// leaf whose making is asked for); every other kitchen node stops the search. `prefer` names a subgraph
+/// whose units win ties (the reference recipe), and `taken` lists units already in the caller's tree.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn retrieve(
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    sim: &dyn Similarity,
+    query: &[String],
+    root: NodeId,
+    prefer: Option<&str>,
+    taken: &HashSet<UnitId>,
+) -> Retrieved {
+    let mut chosen: HashMap<NodeId, UnitId> = HashMap::new();
+    let mut in_tree: HashSet<UnitId> = HashSet::new();
+    let mut selection_order: Vec<UnitId> = Vec::new();
+    let mut blocked = Vec::new();
+    let mut visited: HashSet<NodeId> = HashSet::new();
+    // each node with the unit that needs it (None for the root)
+    let mut queue: VecDeque<(NodeId, Option<UnitId>)> = VecDeque::from([(root, None)]);
+    visited.insert(root);
+    let mut scores: HashMap<UnitId, f32> = HashMap::new();
+    while let Some((node, parent)) = queue.pop_front() {
+        if node != root && kb.kitchen.get(node).copied().unwrap_or(true) {
+            continue;
+        }
+        // a starting item of the recipe that needs it is taken from the kitchen, as that recipe did
+        if parent.is_some_and(|p| index.starts_in_recipe_of(kb, p, node)) {
+            continue;
+        }
+        let Some(producers) = kb.producers.get(node) else {
+            continue;
+        };
+        if producers.is_empty() {
+            continue;
+        }
+        let mut best: Option<(UnitId, (bool, bool, f32, usize))> = None;
+        let mut cyclic = false;
+        let mut cyclic_in_recipe = false;
+        for &u in producers {
+            let unit = &kb.units[u];
+            if unit.input_nodes().any(|n| n == node) {
+                continue; // the unit needs what it makes: it only passes the object on
+            }
+            let same_recipe = match parent {
+                Some(p) => kb.provenance[u]
+                    .iter()
+                    .any(|s| kb.provenance[p].binary_search(s).is_ok()),
+                None => prefer.is_some_and(|p| kb.provenance[u].iter().any(|s| s == p)),
+            };
+            if unit.input_nodes().any(|n| depends_on(kb, &chosen, n, node)) {
+                cyclic = true;
+                cyclic_in_recipe |= same_recipe;
+                continue; // would close a cycle
+            }
+            let g = *scores
+                .entry(u)
+                .or_insert_with(|| heuristic(kb, sim, query, u));
+            let reused = in_tree.contains(&u) || taken.contains(&u);
+            let made_inputs = unit.input_nodes().filter(|&n| !kb.kitchen[n]).count();
+            // larger is better: a unit already in the tree, then one of the reference recipe (so that
+            // the tree stays one coherent recipe), then g(u); ties go to fewer inputs to make, then
+            // to the smaller id (ids follow contents, not file order)
+            let key = (reused, same_recipe, g, usize::MAX - made_inputs);
+            let better = match &best {
+                None => true,
+                Some((bu, bk)) => {
+                    let ord = key
+                        .0
+                        .cmp(&bk.0)
+                        .then(key.1.cmp(&bk.1))
+                        .then(key.2.total_cmp(&bk.2))
+                        .then(key.3.cmp(&bk.3))
+                        .then(bu.cmp(&u));
+                    ord == std::cmp::Ordering::Greater
+                }
+            };
+            if better {
+                best = Some((u, key));
+            }
+        }
+        let Some((u, key)) = best else {
+            if cyclic && !cyclic_in_recipe {
+                blocked.push(node);
+            }
+            continue;
+        };
+        if cyclic_in_recipe && !key.1 {
+            // the recipe only makes it again later (a lid put back): it had it from the start, and
+            // another recipe's way of making it would bring that recipe along
+            continue;
+        }
+        chosen.insert(node, u);
+        if in_tree.insert(u) {
+            selection_order.push(u);
+        }
+        let mut inputs: Vec<NodeId> = kb.units[u].input_nodes().collect();
+        inputs.sort_unstable();
+        for n in inputs {
+            if visited.insert(n) {
+                queue.push_back((n, Some(u)));
+            }
+        }
+    }
+    let units = execution_order(kb, &chosen, root);
+    Retrieved {
+        units,
+        chosen,
+        blocked,
+    }
+}
+
+/// Post-order of the chosen units from `root`: each unit after the units making its inputs.
+fn execution_order(
+    kb: &KnowledgeBase,
+    chosen: &HashMap<NodeId, UnitId>,
+    root: NodeId,
+) -> Vec<UnitId> {
+    let mut order = Vec::new();
+    let mut done: HashSet<UnitId> = HashSet::new();
+    let mut seen_nodes: HashSet<NodeId> = HashSet::new();
+    // iterative DFS: (node, expanded?)
+    let mut stack: Vec<(NodeId, bool)> = vec![(root, false)];
+    while let Some((node, expanded)) = stack.pop() {
+        let Some(&u) = chosen.get(&node) else {
+            continue;
+        };
+        if expanded {
+            if done.insert(u) {
+                order.push(u);
+            }
+            continue;
+        }
+        if !seen_nodes.insert(node) || done.contains(&u) {
+            continue;
+        }
+        stack.push((node, true));
+        let mut inputs: Vec<NodeId> = kb.units[u].input_nodes().collect();
+        inputs.sort_unstable();
+        for n in inputs.into_iter().rev() {
+            if !seen_nodes.contains(&n) {
+                stack.push((n, false));
+            }
+        }
+    }
+    order
+}

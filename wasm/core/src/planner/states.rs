@@ -1,0 +1,161 @@
+//! The project's state taxonomy (`data/states.tsv`): twelve categories of states that can stand in for
+//! each other, and which category can be reached from which (a chopped onion cannot be made whole again).
+
+use crate::label::normalize_word;
+use std::collections::HashMap;
+use std::sync::OnceLock;
+
+const STATES_TSV: &str = include_str!("../../data/states.tsv");
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Category {
+    Whole,
+    Trimmed,
+    Cut,
+    FinelyCut,
+    Ground,
+    Liquid,
+    Mixed,
+    Cooked,
+    Preserved,
+    Shaped,
+    Coated,
+    Other,
+}
+
+impl Category {
+    pub fn name(self) -> &'static str {
+        match self {
+            Category::Whole => "whole",
+            Category::Trimmed => "trimmed",
+            Category::Cut => "cut",
+            Category::FinelyCut => "finely cut",
+            Category::Ground => "ground",
+            Category::Liquid => "liquid",
+            Category::Mixed => "mixed",
+            Category::Cooked => "cooked",
+            Category::Preserved => "preserved",
+            Category::Shaped => "shaped",
+            Category::Coated => "coated",
+            Category::Other => "other",
+        }
+    }
+
+    fn parse(text: &str) -> Option<Category> {
+        Some(match text {
+            "whole" => Category::Whole,
+            "trimmed" => Category::Trimmed,
+            "cut" => Category::Cut,
+            "finely cut" => Category::FinelyCut,
+            "ground" => Category::Ground,
+            "liquid" => Category::Liquid,
+            "mixed" => Category::Mixed,
+            "cooked" => Category::Cooked,
+            "preserved" => Category::Preserved,
+            "shaped" => Category::Shaped,
+            "coated" => Category::Coated,
+            "other" => Category::Other,
+            _ => return None,
+        })
+    }
+
+    /// A starting state: what an ingredient is like when it comes from the store.
+    pub fn is_starting(self) -> bool {
+        matches!(self, Category::Whole | Category::Preserved)
+    }
+
+    /// How far along the one-way path of separation a category is (whole → trimmed → cut → finely cut →
+    /// ground → transformed). `None` for states that say nothing about the food.
+    fn rank(self) -> Option<u8> {
+        match self {
+            Category::Whole | Category::Preserved => Some(0),
+            Category::Trimmed => Some(1),
+            Category::Cut => Some(2),
+            Category::FinelyCut => Some(3),
+            Category::Ground => Some(4),
+            Category::Liquid
+            | Category::Mixed
+            | Category::Cooked
+            | Category::Shaped
+            | Category::Coated => Some(5),
+            Category::Other => None,
+        }
+    }
+
+    /// Whether food in category `self` can be brought into category `to` (states are not reversible:
+    /// a liquid cannot be sliced, a minced clove cannot be made whole).
+    pub fn reaches(self, to: Category) -> bool {
+        match (self.rank(), to.rank()) {
+            (Some(a), Some(b)) => a <= b || b == 5,
+            _ => true,
+        }
+    }
+}
+
+fn table() -> &'static HashMap<String, Category> {
+    static TABLE: OnceLock<HashMap<String, Category>> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        STATES_TSV
+            .lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty() && !l.starts_with('#'))
+            .filter_map(|l| {
+                let (state, cat) = l.split_once('\t')?;
+                Some((normalize_word(state), Category::parse(cat.trim())?))
+            })
+            .collect()
+    })
+}
+
+/// The category of a state word (normalised or not). Unlisted words are classified by their parts
+/// ("thinly sliced" → cut, "whole wheat" → whole); anything else is `Other`.
+pub fn category(state: &str) -> Category {
+    let word = normalize_word(state);
+    if let Some(c) = table().get(&word) {
+        return *c;
+    }
+    // the last listed word decides ("finely chopped", "cooked and sliced")
+    let mut found = None;
+    for part in word.split([' ', '-', ',']) {
+        if let Some(c) = table().get(part) {
+            found = Some(*c);
+        }
+    }
+    found.unwrap_or(Category::Other)
+}
+
+/// States that describe the food itself (not its place or contents, not an appliance's condition).
+pub fn is_food_state(state: &str) -> bool {
+    category(state) != Category::Other
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn groups_similar_states() {
+        assert_eq!(category("sliced"), category("diced"));
+        assert_eq!(category("juice"), category("liquid"));
+        assert_eq!(category("ground"), category("granulated"));
+        assert_eq!(category("whole raw"), Category::Whole);
+        assert_eq!(category("Thinly Sliced"), Category::Cut);
+        assert_eq!(category("in"), Category::Other);
+        assert_eq!(category("spaceship"), Category::Other);
+    }
+
+    #[test]
+    fn separation_is_one_way() {
+        assert!(Category::Whole.reaches(Category::FinelyCut));
+        assert!(Category::Cut.reaches(Category::FinelyCut));
+        assert!(!Category::FinelyCut.reaches(Category::Cut));
+        assert!(!Category::Liquid.reaches(Category::Cut));
+        assert!(Category::Cut.reaches(Category::Cooked));
+        assert!(Category::Liquid.reaches(Category::Mixed));
+    }
+
+    #[test]
+    fn every_listed_category_parses() {
+        assert!(table().len() > 150);
+    }
+}

@@ -1,0 +1,527 @@
+//! The task tree being modified. Object nodes are *slots* shared by the units that make and use them, so
+//! renaming an object or editing a `contains {…}` list changes it everywhere at once and the tree stays a
+//! connected graph. Each slot has at most one designated producer; ordering follows producers only.
+
+use super::retrieve::Retrieved;
+use crate::kb::KnowledgeBase;
+use crate::model::{NodeId, ObjectNode, State, StateArg};
+use crate::plan::Origin;
+use crate::taxonomy::is_utensil;
+use std::collections::{BTreeSet, HashMap, HashSet};
+
+pub(crate) type SlotId = usize;
+pub(crate) type TUnitId = usize;
+
+#[derive(Clone, Debug)]
+pub(crate) struct Slot {
+    pub node: ObjectNode,
+    /// The knowledge-base node it was made from, if any.
+    pub kb: Option<NodeId>,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) struct TUnit {
+    pub inputs: Vec<(SlotId, bool)>,
+    pub motion: String,
+    pub outputs: Vec<(SlotId, bool)>,
+    pub origin: Origin,
+    pub sources: Vec<String>,
+    pub alive: bool,
+}
+
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Tree {
+    pub slots: Vec<Slot>,
+    pub units: Vec<TUnit>,
+    pub producer: Vec<Option<TUnitId>>,
+    pub goal: SlotId,
+}
+
+/// A node with one of its lists of contents rewritten; states stay sorted and unique.
+pub(crate) fn map_contents(node: &ObjectNode, f: &mut dyn FnMut(&mut Vec<String>)) -> ObjectNode {
+    let mut states: Vec<State> = Vec::with_capacity(node.states.len());
+    for s in &node.states {
+        match &s.arg {
+            Some(StateArg::Ingredients(list)) => {
+                let mut list = list.clone();
+                f(&mut list);
+                list.sort();
+                list.dedup();
+                if list.is_empty() {
+                    if s.name == "contains" {
+                        states.push(State::plain("empty"));
+                    }
+                } else {
+                    states.push(State {
+                        name: s.name.clone(),
+                        arg: Some(StateArg::Ingredients(list)),
+                    });
+                }
+            }
+            _ => states.push(s.clone()),
+        }
+    }
+    ObjectNode::new(node.label.clone(), states)
+}
+
+impl Tree {
+    /// A tree from a retrieval result whose root is the goal.
+    pub fn from_retrieved(kb: &KnowledgeBase, r: &Retrieved, root: NodeId) -> Tree {
+        let mut t = Tree::default();
+        let mut slot_of: HashMap<NodeId, SlotId> = HashMap::new();
+        t.goal = t.kb_slot(kb, root, &mut slot_of);
+        t.add_retrieved(kb, r, &mut slot_of, Origin::Reference);
+        t
+    }
+
+    fn new_slot(&mut self, node: ObjectNode, kb: Option<NodeId>) -> SlotId {
+        self.slots.push(Slot { node, kb });
+        self.producer.push(None);
+        self.slots.len() - 1
+    }
+
+    fn kb_slot(
+        &mut self,
+        kb: &KnowledgeBase,
+        n: NodeId,
+        slot_of: &mut HashMap<NodeId, SlotId>,
+    ) -> SlotId {
+        if let Some(&s) = slot_of.get(&n) {
+            return s;
+        }
+        let s = self.new_slot(kb.nodes[n].clone(), Some(n));
+        slot_of.insert(n, s);
+        s
+    }
+
+    /// Adds retrieved units; `slot_of` maps knowledge-base nodes to slots that already stand for them.
+    pub fn add_retrieved(
+        &mut self,
+        kb: &KnowledgeBase,
+        r: &Retrieved,
+        slot_of: &mut HashMap<NodeId, SlotId>,
+        origin: Origin,
+    ) -> Vec<TUnitId> {
+        let mut unit_of: HashMap<usize, TUnitId> = HashMap::new();
+        let mut added = Vec::new();
+        for &u in &r.units {
+            let unit = &kb.units[u];
+            let inputs = unit
+                .inputs
+                .iter()
+                .map(|o| (self.kb_slot(kb, o.node, slot_of), o.moves))
+                .collect();
+            let outputs = unit
+                .outputs
+                .iter()
+                .map(|o| (self.kb_slot(kb, o.node, slot_of), o.moves))
+                .collect();
+            self.units.push(TUnit {
+                inputs,
+                motion: unit.motion.clone(),
+                outputs,
+                origin,
+                sources: kb.provenance[u].clone(),
+                alive: true,
+            });
+            unit_of.insert(u, self.units.len() - 1);
+            added.push(self.units.len() - 1);
+        }
+        let mut chosen: Vec<(&NodeId, &usize)> = r.chosen.iter().collect();
+        chosen.sort();
+        for (n, u) in chosen {
+            if let (Some(&s), Some(&tu)) = (slot_of.get(n), unit_of.get(u)) {
+                if self.producer[s].is_none() {
+                    self.producer[s] = Some(tu);
+                }
+            }
+        }
+        added
+    }
+
+    pub fn add_unit(
+        &mut self,
+        inputs: Vec<(SlotId, bool)>,
+        motion: &str,
+        outputs: Vec<(SlotId, bool)>,
+        origin: Origin,
+    ) -> TUnitId {
+        self.units.push(TUnit {
+            inputs,
+            motion: motion.to_string(),
+            outputs: outputs.clone(),
+            origin,
+            sources: Vec::new(),
+            alive: true,
+        });
+        let id = self.units.len() - 1;
+        for (s, _) in outputs {
+            if self.producer[s].is_none() {
+                self.producer[s] = Some(id);
+            }
+        }
+        id
+    }
+
+    pub fn add_slot(&mut self, node: ObjectNode) -> SlotId {
+        self.new_slot(node, None)
+    }
+
+    pub fn produced(&self, s: SlotId) -> bool {
+        self.producer
+            .get(s)
+            .copied()
+            .flatten()
+            .is_some_and(|u| self.units[u].alive)
+    }
+
+    /// Units in a valid execution order: post-order from the goal through designated producers, inputs
+    /// visited in the order of their contents (so the result never depends on slot numbering).
+    /// Units the goal does not need are not listed.
+    pub fn order(&self) -> Vec<TUnitId> {
+        let mut order = Vec::new();
+        let mut done: HashSet<TUnitId> = HashSet::new();
+        let mut seen: HashSet<SlotId> = HashSet::new();
+        let mut stack: Vec<(SlotId, bool)> = vec![(self.goal, false)];
+        while let Some((slot, expanded)) = stack.pop() {
+            let Some(u) = self.producer.get(slot).copied().flatten() else {
+                continue;
+            };
+            if !self.units[u].alive {
+                continue;
+            }
+            if expanded {
+                if done.insert(u) {
+                    order.push(u);
+                }
+                continue;
+            }
+            if !seen.insert(slot) || done.contains(&u) {
+                continue;
+            }
+            stack.push((slot, true));
+            let mut inputs: Vec<SlotId> = self.units[u].inputs.iter().map(|i| i.0).collect();
+            inputs.sort_by(|a, b| self.slots[*a].node.cmp(&self.slots[*b].node).then(a.cmp(b)));
+            inputs.dedup();
+            for s in inputs.into_iter().rev() {
+                if !seen.contains(&s) {
+                    stack.push((s, false));
+                }
+            }
+        }
+        order
+    }
+
+    /// Marks units the goal does not need as dead.
+    pub fn drop_unneeded(&mut self) {
+        let keep: HashSet<TUnitId> = self.order().into_iter().collect();
+        for (i, u) in self.units.iter_mut().enumerate() {
+            if !keep.contains(&i) {
+                u.alive = false;
+            }
+        }
+    }
+
+    pub fn alive_units(&self) -> impl Iterator<Item = (TUnitId, &TUnit)> {
+        self.units.iter().enumerate().filter(|(_, u)| u.alive)
+    }
+
+    /// Slots used by live units.
+    pub fn live_slots(&self) -> BTreeSet<SlotId> {
+        let mut out = BTreeSet::new();
+        for (_, u) in self.alive_units() {
+            out.extend(u.inputs.iter().map(|i| i.0));
+            out.extend(u.outputs.iter().map(|o| o.0));
+        }
+        out.insert(self.goal);
+        out
+    }
+
+    pub fn slots_with_label(&self, label: &str) -> Vec<SlotId> {
+        self.live_slots()
+            .into_iter()
+            .filter(|&s| self.slots[s].node.label == label)
+            .collect()
+    }
+
+    /// Ingredient labels in the tree (not utensils, not the goal's own label).
+    pub fn ingredient_labels(&self) -> BTreeSet<String> {
+        let goal = &self.slots[self.goal].node.label;
+        self.live_slots()
+            .into_iter()
+            .map(|s| &self.slots[s].node.label)
+            .filter(|l| !is_utensil(l) && *l != goal)
+            .cloned()
+            .collect()
+    }
+
+    /// Live units that take the slot as input, in execution order.
+    pub fn consumers(&self, s: SlotId, order: &[TUnitId]) -> Vec<TUnitId> {
+        order
+            .iter()
+            .copied()
+            .filter(|&u| self.units[u].inputs.iter().any(|i| i.0 == s))
+            .collect()
+    }
+
+    /// Renames an object in the given slots, in their labels and their lists of contents.
+    pub fn rename_in(&mut self, slots: &[SlotId], from: &str, to: &str) {
+        let mut touched: HashSet<SlotId> = HashSet::new();
+        for &s in slots {
+            let Some(slot) = self.slots.get_mut(s) else {
+                continue;
+            };
+            let mut changed = false;
+            let mut node = map_contents(&slot.node, &mut |list| {
+                for item in list.iter_mut() {
+                    if item == from {
+                        *item = to.to_string();
+                        changed = true;
+                    }
+                }
+            });
+            if node.label == from {
+                node.label = to.to_string();
+                changed = true;
+            }
+            if changed {
+                slot.node = node;
+                touched.insert(s);
+            }
+        }
+        for u in self.units.iter_mut() {
+            if u.origin == Origin::Reference
+                && u.inputs
+                    .iter()
+                    .chain(u.outputs.iter())
+                    .any(|x| touched.contains(&x.0))
+            {
+                u.origin = Origin::Renamed;
+            }
+        }
+    }
+
+    pub fn rename_everywhere(&mut self, from: &str, to: &str) {
+        let all: Vec<SlotId> = (0..self.slots.len()).collect();
+        self.rename_in(&all, from, to);
+    }
+
+    /// Adds `label` to the contents of the unit's receiving outputs (those with the longest `contains`
+    /// list) and, downstream, to every node that took over those contents.
+    pub fn add_contents_downstream(&mut self, unit: TUnitId, label: &str) {
+        let Some(u) = self.units.get(unit) else {
+            return;
+        };
+        let with_lists: Vec<(SlotId, usize)> = u
+            .outputs
+            .iter()
+            .map(|o| (o.0, self.slots[o.0].node.ingredients().len()))
+            .filter(|(_, n)| *n > 0)
+            .collect();
+        let longest = with_lists.iter().map(|x| x.1).max().unwrap_or(0);
+        let mut work: Vec<SlotId> = with_lists
+            .into_iter()
+            .filter(|x| x.1 == longest)
+            .map(|x| x.0)
+            .collect();
+        let order = self.order();
+        let mut seen: HashSet<SlotId> = HashSet::new();
+        while let Some(s) = work.pop() {
+            if !seen.insert(s) {
+                continue;
+            }
+            let old: BTreeSet<String> = self.slots[s].node.ingredients().into_iter().collect();
+            if old.contains(label) {
+                continue;
+            }
+            let node = map_contents(&self.slots[s].node, &mut |list| {
+                list.push(label.to_string())
+            });
+            self.slots[s].node = node;
+            for v in self.consumers(s, &order) {
+                for &(o, _) in &self.units[v].outputs {
+                    let theirs: BTreeSet<String> =
+                        self.slots[o].node.ingredients().into_iter().collect();
+                    let same_vessel = self.slots[o].node.label == self.slots[s].node.label;
+                    if !theirs.is_empty() && (old.is_subset(&theirs) || same_vessel) && o != s {
+                        work.push(o);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Makes the tree sound at the level of node *values*, which is what a plan shows: a unit identical
+    /// to an earlier one is dropped (its products are the earlier one's), and a unit that makes nothing
+    /// new that a later unit uses (only passes its inputs on) is dropped, its outputs replaced by the
+    /// equal inputs. Repeats until nothing changes.
+    pub fn normalize(&mut self) {
+        for _ in 0..16 {
+            let mut changed = self.join_equal_leaves();
+            let order = self.order();
+            let mut alias: HashMap<SlotId, SlotId> = HashMap::new();
+            type Key = (Vec<ObjectNode>, String, Vec<ObjectNode>);
+            let mut first: HashMap<Key, TUnitId> = HashMap::new();
+            for (pos, &u) in order.iter().enumerate() {
+                {
+                    let unit = &mut self.units[u];
+                    for i in unit.inputs.iter_mut() {
+                        while let Some(&a) = alias.get(&i.0) {
+                            if a == i.0 {
+                                break;
+                            }
+                            i.0 = a;
+                        }
+                    }
+                    let mut seen = HashSet::new();
+                    unit.inputs.retain(|i| seen.insert(i.0));
+                }
+                let unit = &self.units[u];
+                let value = |x: SlotId| self.slots[x].node.clone();
+                let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
+                let mut ins: Vec<ObjectNode> = unit.inputs.iter().map(|i| value(i.0)).collect();
+                ins.sort();
+                let mut outs: Vec<ObjectNode> = unit.outputs.iter().map(|o| value(o.0)).collect();
+                outs.sort();
+                let key = (ins.clone(), unit.motion.clone(), outs);
+                if !makes_goal {
+                    if let Some(&f) = first.get(&key) {
+                        let theirs = self.units[f].outputs.clone();
+                        for &(o, _) in &self.units[u].outputs {
+                            if let Some(&(t, _)) = theirs
+                                .iter()
+                                .find(|t| self.slots[t.0].node == self.slots[o].node)
+                            {
+                                if t != o {
+                                    alias.insert(o, t);
+                                }
+                            }
+                        }
+                        self.units[u].alive = false;
+                        changed = true;
+                        continue;
+                    }
+                }
+                first.insert(key, u);
+                // new products a later unit uses (or the goal)
+                let later: HashSet<SlotId> = order[pos + 1..]
+                    .iter()
+                    .filter(|&&v| self.units[v].alive)
+                    .flat_map(|&v| self.units[v].inputs.iter().map(|i| i.0))
+                    .collect();
+                let useful = unit.outputs.iter().any(|&(o, _)| {
+                    !ins.contains(&self.slots[o].node) && (o == self.goal || later.contains(&o))
+                });
+                if makes_goal && !useful {
+                    // the goal's last unit changes nothing: the goal is its equal input
+                    let goal_node = self.slots[self.goal].node.clone();
+                    if let Some(&(i, _)) = unit
+                        .inputs
+                        .iter()
+                        .find(|i| self.slots[i.0].node == goal_node)
+                    {
+                        if self.producer[i].is_some() {
+                            self.goal = i;
+                            self.units[u].alive = false;
+                            changed = true;
+                            break;
+                        }
+                    }
+                }
+                if !useful && !makes_goal {
+                    let outputs = unit.outputs.clone();
+                    let inputs = unit.inputs.clone();
+                    for (o, _) in outputs {
+                        if let Some(&(i, _)) = inputs
+                            .iter()
+                            .find(|i| self.slots[i.0].node == self.slots[o].node)
+                        {
+                            if i != o {
+                                alias.insert(o, i);
+                            }
+                        }
+                    }
+                    self.units[u].alive = false;
+                    changed = true;
+                }
+            }
+            if !changed {
+                break;
+            }
+            // apply the last aliases to every live unit, then forget units the goal no longer needs
+            for unit in self.units.iter_mut().filter(|u| u.alive) {
+                for i in unit.inputs.iter_mut() {
+                    let mut guard = 0;
+                    while let Some(&a) = alias.get(&i.0) {
+                        if a == i.0 || guard > 64 {
+                            break;
+                        }
+                        i.0 = a;
+                        guard += 1;
+                    }
+                }
+                let mut seen = HashSet::new();
+                unit.inputs.retain(|i| seen.insert(i.0));
+            }
+            self.drop_unneeded();
+        }
+    }
+
+    /// A starting slot equal in value to a slot some unit makes is the same node in the plan: it is
+    /// joined to the made one, so its users come after its maker, when that makes no cycle.
+    fn join_equal_leaves(&mut self) -> bool {
+        let order = self.order();
+        let mut made: HashMap<ObjectNode, SlotId> = HashMap::new();
+        for &u in &order {
+            let ins: Vec<SlotId> = self.units[u].inputs.iter().map(|i| i.0).collect();
+            for &(o, _) in &self.units[u].outputs {
+                if self.producer[o] == Some(u)
+                    && !ins
+                        .iter()
+                        .any(|&i| self.slots[i].node == self.slots[o].node)
+                {
+                    made.entry(self.slots[o].node.clone()).or_insert(o);
+                }
+            }
+        }
+        let mut changed = false;
+        for &v in &order {
+            for k in 0..self.units[v].inputs.len() {
+                let x = self.units[v].inputs[k].0;
+                if self.produced(x) {
+                    continue;
+                }
+                let Some(&y) = made.get(&self.slots[x].node) else {
+                    continue;
+                };
+                if y == x || self.depends_on_unit(y, v) {
+                    continue;
+                }
+                self.units[v].inputs[k].0 = y;
+                changed = true;
+            }
+        }
+        changed
+    }
+
+    /// Whether making slot `s` needs unit `v` (through designated producers).
+    fn depends_on_unit(&self, s: SlotId, v: TUnitId) -> bool {
+        let mut stack = vec![s];
+        let mut seen = HashSet::new();
+        while let Some(x) = stack.pop() {
+            if !seen.insert(x) {
+                continue;
+            }
+            if let Some(u) = self.producer.get(x).copied().flatten() {
+                if !self.units[u].alive {
+                    continue;
+                }
+                if u == v {
+                    return true;
+                }
+                stack.extend(self.units[u].inputs.iter().map(|i| i.0));
+            }
+        }
+        false
+    }
+}
