@@ -15,7 +15,7 @@ import { mountQueryEditor } from "./views/query-editor";
 import { mountReferenceView } from "./views/reference-view";
 import { mountStepsView } from "./views/steps-view";
 import { mountSubstitutionsView } from "./views/substitutions-view";
-import { mountTreeView, type TreeViewHandle } from "./views/tree-view";
+import type { TreeViewHandle } from "./views/tree-view";
 
 export type ViewName = "query" | "tree" | "progress" | "steps" | "substitutions" | "reference" | "export" | "kb";
 export const ALL_VIEWS: readonly ViewName[] = ["query", "tree", "progress", "steps", "substitutions", "reference", "export", "kb"];
@@ -181,8 +181,12 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
   root.replaceChildren(layout);
   if (has("tree")) {
     const host = section("tree");
+    host.append(el("p", { class: "muted", text: "Loading the graph view…" }));
     results.append(host);
-    tree = mountTreeView(host, store, { select });
+    // Cytoscape is most of the page's script: loaded in parallel with the planner, not before it
+    void import("./views/tree-view").then(({ mountTreeView }) => {
+      if (!destroyed) tree = mountTreeView(host, store, { select });
+    });
   }
   if (has("progress")) {
     const host = section("progress");

@@ -4,12 +4,13 @@
 
 import { FoonPlanner, initPlanner, PlannerError, toPlannerError } from "../planner/index";
 import type { PlanRequest } from "../planner/types";
+import { LatestOnly } from "./latest";
 import type { KnowledgeBaseSource, LoadedKnowledgeBase, WorkerRequest, WorkerResponse } from "./protocol";
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 
 let planner: FoonPlanner | null = null;
-let pendingPlan: { id: number; request: PlanRequest } | null = null;
+const pendingPlans = new LatestOnly<{ id: number; request: PlanRequest }>();
 let planScheduled = false;
 
 function reply(message: WorkerResponse): void {
@@ -50,8 +51,7 @@ async function load(id: number, source: KnowledgeBaseSource, embeddingsUrl: stri
 
 function runLatestPlan(): void {
   planScheduled = false;
-  const job = pendingPlan;
-  pendingPlan = null;
+  const job = pendingPlans.take();
   if (job === null) return;
   try {
     if (planner === null) throw new PlannerError({ code: "not_initialised", message: "no knowledge base is loaded yet" });
@@ -70,8 +70,10 @@ scope.onmessage = (event: MessageEvent<WorkerRequest>): void => {
       load(message.id, message.source, message.embeddingsUrl).catch((e: unknown) => reply({ type: "error", id: message.id, error: toPlannerError(e).toJSON() }));
       break;
     case "plan":
-      if (pendingPlan !== null) reply({ type: "superseded", id: pendingPlan.id });
-      pendingPlan = { id: message.id, request: message.request };
+      {
+        const replaced = pendingPlans.push({ id: message.id, request: message.request });
+        if (replaced !== null) reply({ type: "superseded", id: replaced.id });
+      }
       if (!planScheduled) {
         planScheduled = true;
         // run after the messages already queued, so a burst of edits plans once

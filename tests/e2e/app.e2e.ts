@@ -7,6 +7,7 @@ import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
 import type { Browser, BrowserContext, Page } from "playwright-core";
 import { ARTEFACTS, launch, screenshot, watchErrors } from "./browser";
 import { downloadOf, waitForPlan } from "./app-helpers";
+import { lowContrast, unlabelledControls } from "./app-a11y";
 
 let browser: Browser;
 beforeAll(async () => {
@@ -48,6 +49,7 @@ describe("planner page", () => {
 
     expect(new URL(page.url()).search).toBe("?dish=soup&i=carrot~chopped&i=onion~diced");
     const canvas = page.locator(".cy");
+    await page.locator(".cy canvas").first().waitFor(); // the graph view loads on its own
     expect(Number(await canvas.getAttribute("data-nodes"))).toBeGreaterThan(3);
     expect(await page.locator(".cy canvas").count()).toBeGreaterThan(0);
     expect(await page.locator(".progress-svg g.line").count()).toBeGreaterThan(0);
@@ -144,6 +146,7 @@ describe("planner page", () => {
     const { context, page, errors } = await fresh();
     await page.goto(`${inject("baseUrl")}?dish=salad&i=tomato~whole&i=cucumber~sliced`);
     await waitForPlan(page);
+    await page.locator(".cy canvas").first().waitFor();
     const button = (name: string) => () => page.getByRole("button", { name, exact: true }).click();
 
     const foon = await downloadOf(page, button("FOON text"));
@@ -216,6 +219,31 @@ describe("planner page", () => {
     expect(await page.locator("html").getAttribute("data-theme")).toBe("dark");
     await page.waitForTimeout(300);
     await screenshot(page, "app-dark");
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
+  it("has labelled controls, a visible focus ring and AA contrast in both themes", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(`${inject("baseUrl")}?dish=salad&i=chili+pepper~chopped&i=tomato~whole`);
+    await waitForPlan(page);
+    expect(await page.evaluate(unlabelledControls)).toEqual([]);
+    // Tab reaches the controls, and the focused one shows an outline
+    for (let i = 0; i < 3; i++) await page.keyboard.press("Tab");
+    const ring = await page.evaluate(() => {
+      const e = document.activeElement;
+      return e === null || e === document.body ? null : { tag: e.tagName, style: getComputedStyle(e).outlineStyle, width: parseFloat(getComputedStyle(e).outlineWidth) };
+    });
+    expect(ring).not.toBeNull();
+    expect(ring!.style).not.toBe("none");
+    expect(ring!.width).toBeGreaterThanOrEqual(2);
+    const text = "h1, h2, h3, p, label, a, button, th, td, li, .badge, .reason, .chip, select, input";
+    // the checker sees the page's text (no one reaches 21:1 everywhere)
+    expect((await page.evaluate(lowContrast, { selector: text, min: 21 })).length).toBeGreaterThan(10);
+    for (const theme of ["light", "dark"]) {
+      await page.getByLabel("Theme").selectOption(theme);
+      expect(await page.evaluate(lowContrast, { selector: text, min: 4.5 }), `contrast in the ${theme} theme`).toEqual([]);
+    }
     expect(errors).toEqual([]);
     await context.close();
   });

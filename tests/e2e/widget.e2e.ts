@@ -27,6 +27,7 @@ describe("embedding page", () => {
     expect(await page.evaluate(() => document.querySelectorAll("foon-planner").length)).toBe(2);
     expect(await page.evaluate(() => [...document.querySelectorAll("foon-planner")].every((w) => w.shadowRoot !== null))).toBe(true);
     // view="all": tree, progress, steps, substitutions; view="progress": the progress lines only
+    await salad.locator(".cy canvas").first().waitFor(); // the graph view loads on its own
     expect(await salad.locator(".cy canvas").count()).toBeGreaterThan(0);
     expect(await salad.locator(".steps li").count()).toBeGreaterThan(2);
     expect(await salad.locator(".panel-substitutions tbody tr").count()).toBe(3);
