@@ -13,7 +13,7 @@
 //!
 //! All of it sits behind the `Similarity` trait, so the planner benefits without changes.
 
-use crate::embedding::{cosine, is_stop_word, words, EmbeddingTable};
+use crate::embedding::{is_stop_word, words, EmbeddingTable};
 use crate::error::Result;
 use crate::kb::KnowledgeBase;
 use crate::label::normalize_label;
@@ -362,7 +362,7 @@ pub struct EmbeddingSimilarity {
     aliases: Arc<HashMap<String, String>>,
     options: Options,
     /// Unit vectors of the taxonomy members, for inferring the category of unlisted names.
-    member_vectors: Vec<(Vec<f32>, usize, usize)>,
+    member_vectors: Vec<(Vec<f32>, usize)>,
     /// Below this similarity a substitute is flagged as low confidence (calibrated on the dev set).
     confident_from: f32,
     cache: Mutex<HashMap<String, Arc<Profile>>>,
@@ -373,6 +373,8 @@ const INFER_NEIGHBOURS: usize = 7;
 
 /// Names whose profiles are kept; the cache starts again when it is full.
 const PROFILE_CACHE_LIMIT: usize = 20_000;
+/// Longer names (no real ingredient) are not cached.
+const MAX_CACHED_NAME: usize = 200;
 
 impl std::fmt::Debug for EmbeddingSimilarity {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -422,7 +424,7 @@ impl EmbeddingSimilarity {
             .iter()
             .filter_map(|(name, c)| {
                 let v = table.embed_weighted(name, options.head_weight).vector?;
-                Some((unit(v), *c, stem_key(name).len()))
+                Some((unit(v), *c))
             })
             .collect();
         EmbeddingSimilarity {
@@ -475,6 +477,9 @@ impl EmbeddingSimilarity {
             }
         }
         let p = Arc::new(self.compute_profile(name));
+        if name.len() > MAX_CACHED_NAME {
+            return p;
+        }
         if let Ok(mut cache) = self.cache.lock() {
             if cache.len() >= PROFILE_CACHE_LIMIT {
                 cache.clear();
@@ -539,7 +544,7 @@ impl EmbeddingSimilarity {
         let listed = category.is_some();
         if category.is_none() {
             if let Some(v) = &vector {
-                category = self.infer_category(v, canonical_key.len() <= 1);
+                category = self.infer_category(v);
             }
         }
         Profile {
@@ -555,14 +560,11 @@ impl EmbeddingSimilarity {
 
     /// The category most of the nearest taxonomy members share (similarity-weighted vote of the
     /// `INFER_NEIGHBOURS` nearest), when the nearest is near enough.
-    /// A one-word name is compared with one-word members only ("peach" is near "peach juice" for the
-    /// word it shares, not for what it is).
-    fn infer_category(&self, v: &[f32], single_word: bool) -> Option<usize> {
+    fn infer_category(&self, v: &[f32]) -> Option<usize> {
         let mut near: Vec<(f32, usize)> = self
             .member_vectors
             .iter()
-            .filter(|(_, _, words)| !single_word || *words >= 1)
-            .map(|(m, c, _)| (m.iter().zip(v).map(|(a, b)| a * b).sum::<f32>(), *c))
+            .map(|(m, c)| (m.iter().zip(v).map(|(a, b)| a * b).sum::<f32>(), *c))
             .collect();
         near.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
         near.truncate(INFER_NEIGHBOURS);
@@ -712,13 +714,6 @@ impl Similarity for EmbeddingSimilarity {
         };
         !q.is_known() || q.category.is_none() || q.category != c.category || similarity < needed
     }
-}
-
-/// `cosine` re-exported for callers that compare raw vectors.
-pub fn raw_cosine(sim: &EmbeddingSimilarity, a: &str, b: &str) -> Option<f32> {
-    let va = sim.table.embed(a).vector?;
-    let vb = sim.table.embed(b).vector?;
-    Some(cosine(&va, &vb))
 }
 
 /// One ranked candidate.
