@@ -65,6 +65,8 @@ describe("planner page", () => {
     await carrotStep.click();
     expect(await carrotStep.getAttribute("aria-selected")).toBe("true");
     await page.locator('.progress-svg g.line.on-line[data-ingredient="carrot"]').waitFor();
+    const carrotUnit = await carrotStep.getAttribute("data-unit");
+    expect(await page.locator(".cy").getAttribute("data-selected")).toBe(`m:${carrotUnit}`); // the graph follows
     const before = Number(await page.locator('.steps li[aria-selected="true"]').getAttribute("data-unit"));
     await page.keyboard.press("ArrowDown");
     expect(Number(await page.locator('.steps li[aria-selected="true"]').getAttribute("data-unit"))).toBe(before + 1);
