@@ -14,7 +14,8 @@ pub enum ErrorCode {
     UnknownLine,
     /// A line lacks a field it needs (a label, a flag, a state name, a motion).
     MissingField,
-    /// An object flag that is not 0 or 1, or a dish class that is not a number.
+    /// An object flag that is not 0 or 1, or a dish class that is not a number, not a known class, or
+    /// not the same on two goal marks of one node.
     BadNumber,
     /// An empty or white-space-only label, state or motion.
     EmptyLabel,

@@ -4,6 +4,7 @@
 //! nodes and units are numbered in the sorted order of their contents.
 
 use crate::error::{ErrorCode, FoonError, Result};
+use crate::limits;
 use crate::model::{FunctionalUnit, NodeId, ObjectNode, UnitId, UnitObject};
 use crate::parse::Subgraph;
 use crate::taxonomy::{is_utensil, RAW_STATES};
@@ -58,6 +59,15 @@ impl KnowledgeBase {
     /// Merges subgraphs into one universal FOON.
     pub fn merge(subgraphs: &[Subgraph]) -> Result<KnowledgeBase> {
         let units_before_merge: usize = subgraphs.iter().map(|g| g.units.len()).sum();
+        if units_before_merge > limits::MAX_UNITS {
+            return Err(FoonError::new(
+                ErrorCode::TooLarge,
+                format!(
+                    "the knowledge base has {units_before_merge} functional units over all files; the limit is {}",
+                    limits::MAX_UNITS
+                ),
+            ));
+        }
         if units_before_merge == 0 {
             return Err(FoonError::new(
                 ErrorCode::EmptyKnowledgeBase,
@@ -100,6 +110,15 @@ impl KnowledgeBase {
                 }
             }
         }
+        // A node marked as a goal twice in one file, once with its dish class and once without, is one goal.
+        let classified: BTreeSet<(String, NodeId)> = goal_marks
+            .iter()
+            .filter(|(_, _, class)| class.is_some())
+            .map(|(file, node, _)| (file.clone(), *node))
+            .collect();
+        goal_marks.retain(|(file, node, class)| {
+            class.is_some() || !classified.contains(&(file.clone(), *node))
+        });
         let mut units = Vec::with_capacity(merged.len());
         let mut provenance = Vec::with_capacity(merged.len());
         for ((_, motion, _), (mut inputs, mut outputs, files)) in merged {

@@ -17,6 +17,7 @@ pub mod similarity;
 pub mod stats;
 pub mod substitute;
 pub mod taxonomy;
+pub mod write;
 
 pub use bundle::load;
 pub use error::{ErrorCode, FoonError, Result};

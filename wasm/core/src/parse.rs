@@ -7,6 +7,7 @@ use crate::error::{ErrorCode, FoonError, Result};
 use crate::label::{normalize_label, normalize_word};
 use crate::limits;
 use crate::model::{ObjectNode, State, StateArg};
+use crate::taxonomy::{dish_class_name, dish_classes};
 
 /// A goal mark on an object line: the finished dish of the subgraph, with its dish class if given.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -179,11 +180,11 @@ impl UnitBuilder {
 /// drops empty trailing fields (FOON files often end lines with a stray tab).
 fn fields(line: &str) -> Vec<(usize, &str)> {
     let mut out = Vec::new();
-    let mut start = 0usize;
+    // columns are counted as we go: a line of many short fields must not cost quadratic time
+    let mut col = 1usize;
     for part in line.split('\t') {
-        let col = line[..start].chars().count() + 1;
         out.push((col, part.trim()));
-        start += part.len() + 1;
+        col += part.chars().count() + 1;
     }
     while out.last().is_some_and(|(_, f)| f.is_empty()) {
         out.pop();
@@ -231,8 +232,9 @@ fn check_text(file: &str, line: usize, col: usize, what: &str, text: &str) -> Re
     Ok(())
 }
 
-/// Parses a state's argument: `[container]` or `{a,b,c}`.
-fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<StateArg> {
+/// Parses a state's argument: `[container]` or `{a,b,c}`; `None` when it names nothing (`[]`, `{ , }`),
+/// which the caller reports as a warning.
+fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<Option<StateArg>> {
     let bad = |why: &str| {
         FoonError::at(
             ErrorCode::BadBrackets,
@@ -257,8 +259,11 @@ fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<StateArg
     }
     if open == '[' {
         let container = normalize_label(inner);
+        if container.is_empty() {
+            return Ok(None);
+        }
         check_text(file, line, col, "container", &container)?;
-        return Ok(StateArg::Container(container));
+        return Ok(Some(StateArg::Container(container)));
     }
     let mut list: Vec<String> = inner
         .split(',')
@@ -268,18 +273,88 @@ fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<StateArg
     for item in &list {
         check_text(file, line, col, "ingredient", item)?;
     }
+    if list.is_empty() {
+        return Ok(None);
+    }
     list.sort();
     list.dedup();
-    Ok(StateArg::Ingredients(list))
+    Ok(Some(StateArg::Ingredients(list)))
 }
 
 /// Index of the first object whose label already occurred earlier in the list.
 fn repeated_label_at(objects: &[ParsedObject]) -> Option<usize> {
-    (1..objects.len()).find(|&i| {
-        objects[..i]
-            .iter()
-            .any(|o| o.node.label == objects[i].node.label)
+    // a set, not a scan of the objects before each one: units with very many objects stay linear
+    let mut seen = std::collections::HashSet::new();
+    objects
+        .iter()
+        .position(|o| !seen.insert(o.node.label.as_str()))
+}
+
+/// Lines ended by LF, CRLF or a lone CR (old Mac files), without their ends. A file with CR line ends
+/// would otherwise be one long line, and one that starts with `//` would be read as a single separator.
+fn lines(text: &str) -> impl Iterator<Item = &str> {
+    let mut rest = Some(text);
+    std::iter::from_fn(move || {
+        let t = rest?;
+        match t.find(['\n', '\r']) {
+            None => {
+                rest = None;
+                Some(t)
+            }
+            Some(at) => {
+                let end = if t[at..].starts_with("\r\n") {
+                    at + 2
+                } else {
+                    at + 1
+                };
+                rest = Some(&t[end..]);
+                Some(&t[..at])
+            }
+        }
     })
+}
+
+fn too_many_units(file: &str, line: usize) -> FoonError {
+    FoonError::at(
+        ErrorCode::TooLarge,
+        file,
+        line,
+        1,
+        format!(
+            "more than {} functional units in one file",
+            limits::MAX_UNITS
+        ),
+    )
+}
+
+/// One goal node marked with two different dish classes in a file is an error: the planner could not tell
+/// which kind of dish it is. The same mark repeated is fine (it is one goal).
+fn check_goal_classes(file: &str, units: &[ParsedUnit]) -> Result<()> {
+    let mut marks: Vec<(usize, &ObjectNode, u32)> = units
+        .iter()
+        .flat_map(|u| u.inputs.iter().chain(u.outputs.iter()))
+        .filter_map(|o| match o.goal {
+            Some(GoalMark {
+                dish_class: Some(c),
+            }) => Some((o.line, &o.node, c)),
+            _ => None,
+        })
+        .collect();
+    marks.sort();
+    let mut first: std::collections::HashMap<&ObjectNode, (usize, u32)> = Default::default();
+    for (line, node, class) in marks {
+        let (first_line, first_class) = *first.entry(node).or_insert((line, class));
+        if first_class != class {
+            return Err(FoonError::at(
+                ErrorCode::BadNumber,
+                file,
+                line,
+                1,
+                format!("goal node '{node}' is marked with dish class {class} here and with {first_class} on line {first_line}"),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Reads one subgraph from text. Tolerates a BOM, CRLF line ends, trailing white space and empty files.
@@ -296,9 +371,12 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
     let mut warnings = Vec::new();
     let mut unit = UnitBuilder::new();
     let mut last_line = 0;
-    for (index, raw) in text.split('\n').enumerate() {
+    for (index, raw) in lines(text).enumerate() {
         let line_no = index + 1;
         last_line = line_no;
+        if units.len() > limits::MAX_UNITS {
+            return Err(too_many_units(name, line_no - 1));
+        }
         if raw.len() > limits::MAX_LINE_BYTES {
             return Err(FoonError::at(
                 ErrorCode::TooLarge,
@@ -380,9 +458,19 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
                 };
                 let goal = match f.get(3) {
                     Some((c, class)) => match class.parse::<u32>() {
-                        Ok(n) => Some(GoalMark {
+                        Ok(n) if dish_class_name(n).is_some() => Some(GoalMark {
                             dish_class: Some(n),
                         }),
+                        Ok(n) => {
+                            let last = dish_classes().last().map_or(0, |d| d.index);
+                            return Err(FoonError::at(
+                                ErrorCode::BadNumber,
+                                name,
+                                line_no,
+                                *c,
+                                format!("dish class {n} is not a known dish class (0 to {last})"),
+                            ));
+                        }
                         Err(_) => {
                             return Err(FoonError::at(
                                 ErrorCode::BadNumber,
@@ -427,21 +515,10 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
                 };
                 let state_name = normalize_word(word);
                 check_text(name, line_no, scol, "state name", &state_name)?;
-                let arg = match (inline_arg, f.get(2)) {
-                    // `on []` occurs in FOON-111: keep the state, drop the empty argument, report it
-                    (None, Some((acol, "[]" | "{}"))) => {
-                        warnings.push(FoonError::at(
-                            ErrorCode::EmptyLabel,
-                            name,
-                            line_no,
-                            *acol,
-                            format!("state '{state_name}' has an empty argument; it was left out"),
-                        ));
-                        None
-                    }
-                    (Some(a), None) => Some(state_arg(name, line_no, scol, a)?),
-                    (None, Some((acol, a))) => Some(state_arg(name, line_no, *acol, a)?),
-                    (None, None) => None,
+                let (acol, arg_text) = match (inline_arg, f.get(2)) {
+                    (Some(a), None) => (scol, Some(a)),
+                    (None, Some((acol, a))) => (*acol, Some(*a)),
+                    (None, None) => (scol, None),
                     (Some(_), Some((acol, _))) => {
                         return Err(FoonError::at(
                             ErrorCode::BadBrackets,
@@ -451,6 +528,26 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
                             "state has two arguments",
                         ));
                     }
+                };
+                let arg = match arg_text {
+                    None => None,
+                    Some(text) => match state_arg(name, line_no, acol, text)? {
+                        Some(arg) => Some(arg),
+                        // `on []` occurs in FOON-111: keep the state, drop the empty argument, report
+                        // it (the same for `[ ]`, `{ , }` and an argument written in the state field)
+                        None => {
+                            warnings.push(FoonError::at(
+                                ErrorCode::EmptyLabel,
+                                name,
+                                line_no,
+                                acol,
+                                format!(
+                                    "state '{state_name}' has an empty argument; it was left out"
+                                ),
+                            ));
+                            None
+                        }
+                    },
                 };
                 if f.len() > 3 {
                     return Err(FoonError::at(
@@ -515,19 +612,14 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
                 unit.motion = Some((motion, times, line_no));
             }
         }
-        if units.len() > limits::MAX_UNITS {
-            return Err(FoonError::at(
-                ErrorCode::TooLarge,
-                name,
-                line_no,
-                1,
-                format!("more than {} functional units", limits::MAX_UNITS),
-            ));
-        }
     }
     if !unit.is_empty() {
         units.extend(unit.finish(name, last_line, &mut warnings)?);
     }
+    if units.len() > limits::MAX_UNITS {
+        return Err(too_many_units(name, last_line));
+    }
+    check_goal_classes(name, &units)?;
     Ok(Subgraph {
         name: name.to_string(),
         units,

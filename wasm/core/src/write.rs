@@ -1,0 +1,112 @@
+//! FOON text out of what the reader read: a subgraph, or a whole knowledge base as a bundle (one
+//! `#@file` part per subgraph), in the plain dialect. Reading the text back gives the same units, nodes
+//! and goals (`tests/prop_roundtrip.rs`), so a custom knowledge base can be exported and re-imported.
+
+use crate::bundle::FILE_MARK;
+use crate::kb::KnowledgeBase;
+use crate::model::{ObjectNode, State, StateArg};
+use crate::parse::{GoalMark, ParsedObject, Subgraph};
+use std::collections::BTreeMap;
+use std::fmt::Write;
+
+fn state_line(out: &mut String, s: &State) {
+    match &s.arg {
+        None => {
+            let _ = writeln!(out, "S\t{}", s.name);
+        }
+        Some(StateArg::Container(c)) => {
+            let _ = writeln!(out, "S\t{}\t[{c}]", s.name);
+        }
+        Some(StateArg::Ingredients(list)) => {
+            let _ = writeln!(out, "S\t{}\t{{{}}}", s.name, list.join(","));
+        }
+    }
+}
+
+fn object_lines(out: &mut String, node: &ObjectNode, moves: bool, goal: Option<&GoalMark>) {
+    let flag = u8::from(moves);
+    match goal {
+        None => {
+            let _ = writeln!(out, "O\t{}\t{flag}", node.label);
+        }
+        Some(GoalMark { dish_class: None }) => {
+            let _ = writeln!(out, "!O\t{}\t{flag}", node.label);
+        }
+        Some(GoalMark {
+            dish_class: Some(c),
+        }) => {
+            let _ = writeln!(out, "O\t{}\t{flag}\t{c}", node.label);
+        }
+    }
+    for s in &node.states {
+        state_line(out, s);
+    }
+}
+
+fn motion_line(out: &mut String, motion: &str, times: &[String]) {
+    out.push_str("M\t");
+    out.push_str(motion);
+    for t in times {
+        let _ = write!(out, "\t<{t}>");
+    }
+    out.push('\n');
+}
+
+/// One subgraph as FOON text (plain dialect); motion times are kept.
+pub fn subgraph_text(g: &Subgraph) -> String {
+    let mut out = String::new();
+    let object =
+        |out: &mut String, o: &ParsedObject| object_lines(out, &o.node, o.moves, o.goal.as_ref());
+    for u in &g.units {
+        out.push_str("//\n");
+        for o in &u.inputs {
+            object(&mut out, o);
+        }
+        motion_line(&mut out, &u.motion, &u.times);
+        for o in &u.outputs {
+            object(&mut out, o);
+        }
+    }
+    if !g.units.is_empty() {
+        out.push_str("//\n");
+    }
+    out
+}
+
+/// A knowledge base as a bundle: one part per subgraph with the (merged) units it contributed and its goal
+/// marks. Motion times are not kept by the knowledge base, so they are not written.
+pub fn kb_bundle(kb: &KnowledgeBase) -> String {
+    let mut goals: BTreeMap<(&str, usize), Option<u32>> = BTreeMap::new();
+    for g in &kb.goals {
+        goals.insert((g.subgraph.as_str(), g.node), g.dish_class);
+    }
+    let mut out = String::new();
+    let mut names: Vec<&str> = kb.subgraphs.iter().map(|s| s.name.as_str()).collect();
+    names.dedup();
+    for name in names {
+        let _ = writeln!(out, "{FILE_MARK}{name}");
+        let mut any = false;
+        for u in kb.units_of(name) {
+            any = true;
+            let unit = &kb.units[u];
+            out.push_str("//\n");
+            let object = |out: &mut String, node: usize, moves: bool| {
+                let goal = goals
+                    .get(&(name, node))
+                    .map(|&dish_class| GoalMark { dish_class });
+                object_lines(out, &kb.nodes[node], moves, goal.as_ref());
+            };
+            for o in &unit.inputs {
+                object(&mut out, o.node, o.moves);
+            }
+            motion_line(&mut out, &unit.motion, &[]);
+            for o in &unit.outputs {
+                object(&mut out, o.node, o.moves);
+            }
+        }
+        if any {
+            out.push_str("//\n");
+        }
+    }
+    out
+}
