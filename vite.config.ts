@@ -14,7 +14,7 @@ export default defineConfig({
     outDir: here("dist"),
     emptyOutDir: true,
     assetsInlineLimit: 0, // keep the wasm, knowledge base and embedding table as separate cacheable files
-    rollupOptions: { input: { main: here("src/index.html") } },
+    rollupOptions: { input: { main: here("src/index.html"), workbench: here("src/workbench.html") } },
   },
   worker: { format: "es" },
   server: { host: "127.0.0.1" },

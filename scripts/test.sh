@@ -30,6 +30,10 @@ npx tsc --noEmit
 step "vitest (unit tests on the real WASM build)"
 npx vitest run
 
+step "evaluation: dev queries with FOON-111 (fails on duplicated, out-of-order or dead units)"
+SHARED="${FOON_SHARED:-../shared}"
+npm run --silent eval -- --kb "$SHARED/foon/subgraphs-plain" --queries "$SHARED/recipes/dev" --both --quiet --out test-results/eval
+
 step "app build (vite, starter knowledge base)"
 npm run --silent build:kb
 npx vite build --logLevel warn

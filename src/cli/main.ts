@@ -7,6 +7,7 @@ import { parseArgs } from "node:util";
 import { describeError, PlannerError, type FoonPlanner } from "../planner/index";
 import { loadPlannerFromDisk, STARTER_KB_DIR } from "../planner/node";
 import type { ExportFormat, PlanRequest } from "../planner/types";
+import { evalCommand } from "./eval";
 import { readQueries, readQuery } from "./queries";
 
 const USAGE = `usage: npm run cli -- <command> [options]
@@ -19,6 +20,8 @@ commands:
                                                      plans every query, writes <out>/<type>/<id>.json
   similar [--kb <dir>] [--top 5] [--names <file>] <name>...
                                                      the equivalents the planner would use, best first
+  eval    [--kb <dir>] --queries <dir> [--no-modify | --both] [--out <dir>]
+                                                     metrics of every query's plan (npm run eval -- --help)
 
 --kb defaults to the project's starter knowledge base (public/kb/starter); it takes a folder of FOON
 .txt files, a single file or a bundle. --exact plans with exact name matching (no embedding table).
@@ -51,6 +54,7 @@ function progressBar(done: number, total: number, errors: number): string {
 }
 
 const commands: Record<string, (args: string[]) => void> = {
+  eval: evalCommand,
   stats(args) {
     const { values } = parseArgs({ args, options: KB_OPTIONS, strict: true });
     console.log(JSON.stringify(planner(values).stats(), null, 2));

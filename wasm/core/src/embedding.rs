@@ -224,6 +224,11 @@ impl EmbeddingTable {
         Some(&self.vectors[i * self.dims..(i + 1) * self.dims])
     }
 
+    /// Position of a stem in the table (the source lists words by falling frequency).
+    pub fn rank_of(&self, stem: &str) -> Option<u32> {
+        self.index.get(stem).copied()
+    }
+
     pub fn contains_stem(&self, stem: &str) -> bool {
         self.index.contains_key(stem)
     }
@@ -234,13 +239,17 @@ impl EmbeddingTable {
     /// "crabmeat"), longest known first part preferred. Empty when nothing is known.
     pub fn word_stems(&self, word: &str) -> Vec<String> {
         let stem = self.stem(word);
-        if self.contains_stem(&stem) {
-            return vec![stem];
+        // A word and its plural share a stem; when they do not, the word may be a plural cut short
+        // ("watercres", "lemongras"): the table's words are in frequency order, the commoner wins.
+        let plural = self.stem(&format!("{word}s"));
+        match (self.rank_of(&stem), self.rank_of(&plural)) {
+            (Some(a), Some(b)) if b < a => return vec![plural],
+            (Some(_), _) => return vec![stem],
+            _ => {}
         }
         if self.contains_stem(word) {
             return vec![word.to_string()];
         }
-        let plural = self.stem(&format!("{word}s"));
         if self.contains_stem(&plural) {
             return vec![plural];
         }

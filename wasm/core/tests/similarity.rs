@@ -235,3 +235,13 @@ fn lookup_time() {
         labels.len()
     );
 }
+
+#[test]
+fn the_taxonomy_lists_every_foon111_ingredient_label() {
+    let t = sim().taxonomy();
+    let missing: Vec<&str> = labels()
+        .into_iter()
+        .filter(|l| t.lookup(l).is_none())
+        .collect();
+    assert!(missing.is_empty(), "not in the taxonomy: {missing:?}");
+}

@@ -12,6 +12,30 @@ fn is_raw(n: &PlanNode) -> bool {
         && (!n.states.is_empty() || crate::taxonomy::is_utensil(&n.label))
 }
 
+/// Whether unit `j` needs unit `i` first: some input of `j` is made by `i`, or by a unit before `j`
+/// that needs `i`.
+fn needs(units: &[crate::plan::PlanUnit], j: usize, i: usize) -> bool {
+    let mut stack = vec![j];
+    let mut seen = HashSet::new();
+    while let Some(k) = stack.pop() {
+        if !seen.insert(k) {
+            continue;
+        }
+        let Some(unit) = units.get(k) else { continue };
+        for n in &unit.inputs {
+            for (m, earlier) in units.iter().enumerate().take(k) {
+                if earlier.outputs.contains(n) && !earlier.inputs.contains(n) {
+                    if m == i {
+                        return true;
+                    }
+                    stack.push(m);
+                }
+            }
+        }
+    }
+    false
+}
+
 /// What is wrong with a plan's structure; empty when nothing is.
 pub fn violations(plan: &Plan) -> Vec<String> {
     let mut out = Vec::new();
@@ -32,8 +56,11 @@ pub fn violations(plan: &Plan) -> Vec<String> {
             if is_raw(n) {
                 continue;
             }
-            let made_anywhere = (0..units.len()).any(|j| makes(j, n));
-            if made_anywhere && !(0..i).any(|j| makes(j, n)) {
+            let makers: Vec<usize> = (0..units.len()).filter(|&j| makes(j, n)).collect();
+            // a state the recipe returns to (a lid put back) is there from the start: every unit
+            // making it again needs this one first
+            let returns = makers.iter().all(|&j| j > i && needs(units, j, i));
+            if !makers.is_empty() && !makers.iter().any(|&j| j < i) && !returns {
                 out.push(format!(
                     "unit {} ({}) needs '{}' before any unit makes it",
                     i + 1,

@@ -52,7 +52,11 @@ pub(crate) fn select<'a>(
     notes: &mut Vec<String>,
     dish_type: &str,
 ) -> Option<Chosen<'a>> {
-    let usable = |g: &&Goal| kb.producers.get(g.node).is_some_and(|p| !p.is_empty());
+    // a goal must be made by some unit, and be a dish rather than a container
+    let usable = |g: &&Goal| {
+        kb.producers.get(g.node).is_some_and(|p| !p.is_empty())
+            && !is_utensil(&kb.nodes[g.node].label)
+    };
     let mut candidates: Vec<&Goal> = match class {
         Some(c) => kb
             .goals

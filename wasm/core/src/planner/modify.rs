@@ -235,7 +235,13 @@ pub(crate) fn modify(
     }
 
     let mut removed = Vec::new();
-    if enabled {
+    let any_planned = works.iter().any(|w| w.planned);
+    if enabled && !any_planned {
+        notes.push(
+            "no ingredient of the query could be planned: the reference task tree is kept unpruned"
+                .to_string(),
+        );
+    } else if enabled {
         let mut keep: BTreeSet<String> = works
             .iter()
             .filter(|w| w.planned)

@@ -125,25 +125,27 @@ pub(crate) fn retrieve(
         }
         let mut best: Option<(UnitId, (bool, bool, f32, usize))> = None;
         let mut cyclic = false;
+        let mut cyclic_in_recipe = false;
         for &u in producers {
             let unit = &kb.units[u];
             if unit.input_nodes().any(|n| n == node) {
                 continue; // the unit needs what it makes: it only passes the object on
             }
-            if unit.input_nodes().any(|n| depends_on(kb, &chosen, n, node)) {
-                cyclic = true;
-                continue; // would close a cycle
-            }
-            let g = *scores
-                .entry(u)
-                .or_insert_with(|| heuristic(kb, sim, query, u));
-            let reused = in_tree.contains(&u) || taken.contains(&u);
             let same_recipe = match parent {
                 Some(p) => kb.provenance[u]
                     .iter()
                     .any(|s| kb.provenance[p].binary_search(s).is_ok()),
                 None => prefer.is_some_and(|p| kb.provenance[u].iter().any(|s| s == p)),
             };
+            if unit.input_nodes().any(|n| depends_on(kb, &chosen, n, node)) {
+                cyclic = true;
+                cyclic_in_recipe |= same_recipe;
+                continue; // would close a cycle
+            }
+            let g = *scores
+                .entry(u)
+                .or_insert_with(|| heuristic(kb, sim, query, u));
+            let reused = in_tree.contains(&u) || taken.contains(&u);
             let made_inputs = unit.input_nodes().filter(|&n| !kb.kitchen[n]).count();
             // larger is better: a unit already in the tree, then one of the reference recipe (so that
             // the tree stays one coherent recipe), then g(u); ties go to fewer inputs to make, then
@@ -166,12 +168,17 @@ pub(crate) fn retrieve(
                 best = Some((u, key));
             }
         }
-        let Some((u, _)) = best else {
-            if cyclic {
+        let Some((u, key)) = best else {
+            if cyclic && !cyclic_in_recipe {
                 blocked.push(node);
             }
             continue;
         };
+        if cyclic_in_recipe && !key.1 {
+            // the recipe only makes it again later (a lid put back): it had it from the start, and
+            // another recipe's way of making it would bring that recipe along
+            continue;
+        }
         chosen.insert(node, u);
         if in_tree.insert(u) {
             selection_order.push(u);

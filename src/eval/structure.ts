@@ -1,0 +1,81 @@
+// Structural invariants of a plan, computed from its `units` alone (not from the planner's claims):
+// duplicated units, units scheduled before their inputs exist, dead units.
+
+import type { Plan, PlanNode, PlanUnit } from "../planner/types";
+import type { StructureMetrics } from "./types";
+
+const sorted = (items: readonly string[]): string[] => [...items].sort();
+
+/** Identity of an object node: label, states, ingredients (as sets) and container. */
+export function nodeKey(node: PlanNode): string {
+  return JSON.stringify([node.label, sorted(node.states), sorted(node.ingredients), node.container]);
+}
+
+/**
+ * States of things a kitchen has before cooking starts. A node in only such states, not inside anything
+ * and containing nothing (an empty bowl, a clean knife, a pot lid, a whole onion), is available from the
+ * start even when a later unit makes it again (a bowl emptied, a lid put back).
+ */
+export const START_STATES: ReadonlySet<string> = new Set(["empty", "clean", "whole", "raw", "off", "off (ready)", "unopened", "closed", "dry"]);
+
+export function availableAtStart(node: PlanNode): boolean {
+  return node.ingredients.length === 0 && node.container === null && node.states.every((s) => START_STATES.has(s));
+}
+
+/** Identity of a unit: motion and its input and output nodes (as sets). */
+export function unitKey(unit: PlanUnit): string {
+  return JSON.stringify([unit.motion, sorted(unit.inputs.map(nodeKey)), sorted(unit.outputs.map(nodeKey))]);
+}
+
+/** Output nodes a unit makes: its outputs that are not also among its inputs (utensils pass through). */
+export function producedKeys(unit: PlanUnit): Set<string> {
+  const inputs = new Set(unit.inputs.map(nodeKey));
+  return new Set(unit.outputs.map(nodeKey).filter((key) => !inputs.has(key)));
+}
+
+function isGoal(node: PlanNode, goal: Plan["goal"]): boolean {
+  if (node.label !== goal.label) return false;
+  const a = sorted(node.states);
+  const b = sorted(goal.states);
+  return a.length === b.length && a.every((s, i) => s === b[i]);
+}
+
+export function structureMetrics(units: readonly PlanUnit[], goal: Plan["goal"]): StructureMetrics {
+  const produced = units.map(producedKeys);
+  const inputKeys = units.map((u) => new Set(u.inputs.map(nodeKey)));
+  /** First unit index that produces each node. */
+  const firstProducer = new Map<string, number>();
+  produced.forEach((keys, i) => {
+    for (const key of keys) if (!firstProducer.has(key)) firstProducer.set(key, i);
+  });
+
+  /** Last unit index that uses each node as an input. */
+  const lastUse = new Map<string, number>();
+  inputKeys.forEach((keys, i) => {
+    for (const key of keys) lastUse.set(key, i);
+  });
+
+  const seen = new Set<string>();
+  let duplicates = 0;
+  let beforeInputs = 0;
+  let dead = 0;
+  let goalProduced = false;
+  units.forEach((unit, i) => {
+    const key = unitKey(unit);
+    if (seen.has(key)) duplicates += 1;
+    seen.add(key);
+
+    const early = unit.inputs.some((node) => {
+      const first = firstProducer.get(nodeKey(node));
+      return first !== undefined && first >= i && !availableAtStart(node);
+    });
+    if (early) beforeInputs += 1;
+
+    const outputsGoal = unit.outputs.some((node) => isGoal(node, goal));
+    if (outputsGoal) goalProduced = true;
+    const used = [...produced[i]!].some((k) => (lastUse.get(k) ?? -1) > i);
+    if (!used && !outputsGoal) dead += 1;
+  });
+
+  return { units: units.length, duplicate_units: duplicates, units_before_inputs: beforeInputs, dead_units: dead, goal_produced: goalProduced };
+}

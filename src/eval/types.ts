@@ -1,0 +1,105 @@
+// Types of the evaluation workbench: per-plan metrics, batch records, aggregated metrics tables.
+// Shared by the CLI (src/cli/eval.ts) and the browser workbench (src/workbench/), so both compute
+// the same numbers from the same code.
+
+import type { ErrorCode, Query } from "../planner/types";
+
+/** A plan with tree modification (the method) or the reference tree as retrieved. */
+export type Variant = "modified" | "unmodified";
+export const VARIANTS: readonly Variant[] = ["modified", "unmodified"];
+
+/** Structural invariants, computed from `units` alone. All three must be 0. */
+export interface StructureMetrics {
+  units: number;
+  /** Units whose (inputs, motion, outputs) already occurred earlier in the plan. */
+  duplicate_units: number;
+  /** Units with an input that some unit of the plan produces, but only a later one. */
+  units_before_inputs: number;
+  /** Units none of whose produced outputs is used later, and which do not output the goal. */
+  dead_units: number;
+  /** Whether some unit outputs the goal (label and states of `plan.goal`). */
+  goal_produced: boolean;
+}
+
+export interface CoverageMetrics {
+  /** Distinct query objects. */
+  query_objects: number;
+  /** Of those, the ones that occur in the tree (as a node label or in a node's ingredients). */
+  objects_in_tree: number;
+  /** Distinct query (object, state) pairs. */
+  query_pairs: number;
+  /** Of those, the ones with a node of that label carrying that state. */
+  pairs_in_tree: number;
+  /** Starting ingredients of the tree that the query did not ask for (labels). */
+  extra_ingredients: string[];
+  /** Substitution case per query ingredient (Table I), `none` when no case applied. */
+  cases: CaseCounts;
+  /** Query ingredients planned with an equivalent of another name. */
+  substitutions: number;
+  /** Of those, the ones flagged low-confidence. */
+  low_confidence: number;
+  unplannable: number;
+}
+
+export interface CaseCounts {
+  c1: number;
+  c2: number;
+  c3: number;
+  c4: number;
+  none: number;
+}
+
+export interface PlanMetrics extends StructureMetrics, CoverageMetrics {}
+
+export interface RecipeRef {
+  id: string;
+  type: string;
+}
+
+/** One query planned in one variant: metrics, or the typed error it raised. */
+export type EvalRecord =
+  | { recipe: RecipeRef; variant: Variant; ok: true; ms: number; metrics: PlanMetrics }
+  | { recipe: RecipeRef; variant: Variant; ok: false; ms: number; error: { code: ErrorCode; message: string } };
+
+/** A recipe query as read from a file, with where it came from. */
+export interface LoadedQuery {
+  source: string;
+  query: Query & { id: string };
+}
+
+/** One row of the metrics table: a dish type, or `all`. */
+export interface MetricsRow {
+  group: string;
+  variant: Variant;
+  queries: number;
+  plans: number;
+  errors: number;
+  errors_by_code: Record<string, number>;
+  units_mean: number;
+  duplicate_units: number;
+  units_before_inputs: number;
+  dead_units: number;
+  goal_missing: number;
+  /** Mean over plans of the share of query objects present in the tree, 0..1. */
+  object_share: number;
+  /** Mean over plans of the share of query (object, state) pairs present, 0..1. */
+  pair_share: number;
+  /** Mean number of extra starting ingredients per plan. */
+  extra_mean: number;
+  /** Share of plans with at least one extra starting ingredient, 0..1. */
+  plans_with_extra: number;
+  cases: CaseCounts;
+  substitutions: number;
+  low_confidence: number;
+  /** low_confidence / substitutions, 0..1 (0 without substitutions). */
+  low_confidence_share: number;
+  unplannable: number;
+  ms_mean: number;
+  ms_p95: number;
+  ms_max: number;
+  ms_total: number;
+}
+
+/** Structural invariant totals that must be 0 (what `npm test` checks). */
+export const INVARIANTS = ["duplicate_units", "units_before_inputs", "dead_units"] as const;
+export type Invariant = (typeof INVARIANTS)[number];
