@@ -15,6 +15,12 @@ cargo clippy --manifest-path wasm/Cargo.toml --workspace --all-targets --quiet -
 step "cargo test (native core, including FOON-111 from ../shared)"
 cargo test --manifest-path wasm/Cargo.toml --workspace --quiet
 
+step "robustness, bounded: the bad-input corpus at full size, property tests with more cases"
+# The libFuzzer targets need a nightly toolchain (npm run fuzz); this is their bounded stand-in: random
+# bytes, near-FOON text, random graphs and queries, random JSON through the reader, merge and planner.
+FOON_HEAVY=1 PROPTEST_CASES="${FOON_PROPTEST_CASES:-512}" cargo test --manifest-path wasm/Cargo.toml -p foon-core --quiet \
+  --test bad_inputs --test prop_reader --test prop_merge --test prop_plan
+
 step "WebAssembly build"
 npm run --silent build:wasm
 
