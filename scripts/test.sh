@@ -41,5 +41,11 @@ npx vite build --logLevel warn
 step "end-to-end tests (headless Chromium)"
 npx vitest run --config tests/e2e/vitest.config.ts
 
+step "end-to-end: a build bundling FOON-111 from ../shared plans a dev query"
+FOON_DIR="$SHARED/foon/subgraphs-plain" npm run --silent build:kb
+npx vite build --logLevel warn --outDir "$PWD/dist-foon111"
+E2E_DIST=dist-foon111 npx vitest run --config tests/e2e/vitest.config.ts
+npm run --silent build:kb   # back to the starter knowledge base
+
 echo
 echo "npm test: all checks passed"
