@@ -56,6 +56,22 @@ function parseJson<T>(call: () => string): T {
   return JSON.parse(text) as T;
 }
 
+/** JSON text of a request; a value JSON cannot represent (undefined, a cycle, a BigInt) is a bad query. */
+function requestJson(value: unknown, what: string): string {
+  let text: string | undefined;
+  try {
+    text = JSON.stringify(value);
+  } catch (thrown) {
+    const reason = `${what}: ${thrown instanceof Error ? thrown.message : String(thrown)}`;
+    throw new PlannerError({ code: "bad_query", message: `${reason} (bad_query)`, reason });
+  }
+  if (text === undefined) {
+    const reason = `${what}: not a JSON value`;
+    throw new PlannerError({ code: "bad_query", message: `${reason} (bad_query)`, reason });
+  }
+  return text;
+}
+
 /** A knowledge base loaded into the planner. Free it with `free()` when replaced. */
 export class FoonPlanner {
   private constructor(
@@ -96,13 +112,15 @@ export class FoonPlanner {
 
   /** Plans a query: reference goal, reference task tree, modification (unless `modify: false`). */
   plan(request: PlanRequest): Plan {
-    return parseJson<Plan>(() => this.handle.plan(JSON.stringify(request)));
+    const json = requestJson(request, "plan request");
+    return parseJson<Plan>(() => this.handle.plan(json));
   }
 
   /** Plans a query and renders it: plan JSON, FOON text (plain dialect), PDDL, or progress-line JSON. */
   exportPlan(request: PlanRequest, format: ExportFormat): string {
+    const json = requestJson(request, "plan request");
     try {
-      return this.handle.export(JSON.stringify(request), format);
+      return this.handle.export(json, String(format));
     } catch (thrown) {
       throw toPlannerError(thrown);
     }
@@ -110,7 +128,8 @@ export class FoonPlanner {
 
   /** The knowledge-base ingredients most similar to each name, best first, as the planner ranks them. */
   similar(names: readonly string[], top = 5): SimilarResult[] {
-    return parseJson<SimilarResult[]>(() => this.handle.similar(JSON.stringify(names), top));
+    const json = requestJson(names, "names (a JSON array of strings)");
+    return parseJson<SimilarResult[]>(() => this.handle.similar(json, top));
   }
 
   /** Problems that did not stop the load (units skipped, with file and line). */

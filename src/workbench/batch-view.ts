@@ -61,6 +61,8 @@ async function embeddings(): Promise<Uint8Array | null> {
 
 export class BatchView {
   private worker: Worker | null = null;
+  /** Plans received and not stored yet. */
+  private pending: PlanEntry[] = [];
   private sort: SortState = { column: "type", descending: false };
   private kbFiles: File[] = [];
   private queryFiles: File[] = [];
@@ -141,12 +143,8 @@ export class BatchView {
     this.worker = worker;
     this.cancel.disabled = false;
     this.describeChoice();
-    let pending: PlanEntry[] = [];
-    const flush = async (status: StoredBatch["status"]): Promise<void> => {
-      const entries = pending;
-      pending = [];
-      await this.bench.addResults(entries, status);
-    };
+    this.pending = [];
+    const flush = (status: StoredBatch["status"]): Promise<void> => this.flush(status);
     worker.onmessage = (event: MessageEvent<WorkerMessage>) => {
       const message = event.data;
       switch (message.kind) {
@@ -155,7 +153,7 @@ export class BatchView {
           break;
         case "result":
           batch.records.push(message.record);
-          if (message.plan !== null) pending.push({ recipe: message.record.recipe, variant: message.record.variant, plan: message.plan });
+          if (message.plan !== null) this.pending.push({ recipe: message.record.recipe, variant: message.record.variant, plan: message.plan });
           this.progress.value = message.done;
           this.status.textContent = `Planned ${message.done} of ${message.total}.`;
           if (message.done % SAVE_EVERY === 0) void flush("running");
@@ -178,6 +176,12 @@ export class BatchView {
     worker.postMessage(request, [...kb.files.map((f) => f.bytes.buffer), ...(table === null ? [] : [table.buffer])]);
   }
 
+  private async flush(status: StoredBatch["status"]): Promise<void> {
+    const entries = this.pending;
+    this.pending = [];
+    await this.bench.addResults(entries, status);
+  }
+
   private finish(): void {
     this.worker?.terminate();
     this.worker = null;
@@ -189,7 +193,7 @@ export class BatchView {
     if (this.worker === null) return;
     this.finish();
     const batch = this.bench.batch;
-    await this.bench.addResults([], "cancelled");
+    await this.flush("cancelled");
     this.setStatus(`Cancelled after ${batch?.records.length ?? 0} of ${this.progress.max} plans.`, "cancelled");
   }
 
