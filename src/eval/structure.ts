@@ -55,27 +55,42 @@ export function structureMetrics(units: readonly PlanUnit[], goal: Plan["goal"])
     for (const key of keys) lastUse.set(key, i);
   });
 
-  const seen = new Set<string>();
+  const seen = new Map<string, number>();
+  const violations: string[] = [];
   let duplicates = 0;
   let beforeInputs = 0;
   let dead = 0;
   let goalProduced = false;
   units.forEach((unit, i) => {
+    const name = `unit ${i + 1} (${unit.motion})`;
     const key = unitKey(unit);
-    if (seen.has(key)) duplicates += 1;
-    seen.add(key);
+    const twin = seen.get(key);
+    if (twin !== undefined) {
+      duplicates += 1;
+      violations.push(`${name} repeats unit ${twin + 1}`);
+    } else seen.set(key, i);
 
-    const early = unit.inputs.some((node) => {
+    const early = unit.inputs.filter((node) => {
       const first = firstProducer.get(nodeKey(node));
       return first !== undefined && first >= i && !availableAtStart(node);
     });
-    if (early) beforeInputs += 1;
+    if (early.length > 0) {
+      beforeInputs += 1;
+      for (const node of early) violations.push(`${name} needs ${describeNode(node)}, first made by unit ${firstProducer.get(nodeKey(node))! + 1}`);
+    }
 
     const outputsGoal = unit.outputs.some((node) => isGoal(node, goal));
     if (outputsGoal) goalProduced = true;
     const used = [...produced[i]!].some((k) => (lastUse.get(k) ?? -1) > i);
-    if (!used && !outputsGoal) dead += 1;
+    if (!used && !outputsGoal) {
+      dead += 1;
+      violations.push(`${name} makes nothing a later unit uses`);
+    }
   });
 
-  return { units: units.length, duplicate_units: duplicates, units_before_inputs: beforeInputs, dead_units: dead, goal_produced: goalProduced };
+  return { units: units.length, duplicate_units: duplicates, units_before_inputs: beforeInputs, dead_units: dead, goal_produced: goalProduced, violations };
+}
+
+export function describeNode(node: PlanNode): string {
+  return node.states.length === 0 ? node.label : `${node.label} [${node.states.join("; ")}]`;
 }
