@@ -1,0 +1,279 @@
+// The planner page in headless Chromium against the built dist/: asking by typing, the task tree canvas,
+// progress lines, steps in sync with the selection, substitutes, knowledge-base files, exports, the URL,
+// themes, and offline reloads through the service worker.
+import { mkdirSync, writeFileSync } from "node:fs";
+import { join } from "node:path";
+import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
+import type { Browser, BrowserContext, Page } from "playwright-core";
+import { ARTEFACTS, launch, screenshot, watchErrors } from "./browser";
+import { downloadOf, waitForPlan } from "./app-helpers";
+import { lowContrast, unlabelledControls } from "./app-a11y";
+
+let browser: Browser;
+beforeAll(async () => {
+  browser = await launch();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+async function fresh(): Promise<{ context: BrowserContext; page: Page; errors: string[] }> {
+  const context = await browser.newContext({ viewport: { width: 1400, height: 1000 }, acceptDownloads: true });
+  const page = await context.newPage();
+  page.on("dialog", (d) => {
+    throw new Error(`unexpected dialog: ${d.message()}`);
+  });
+  return { context, page, errors: watchErrors(page) };
+}
+
+const stepsText = (page: Page): Promise<string[]> => page.locator(".steps li .step-text").allTextContents();
+
+describe("planner page", () => {
+  it("plans a query typed in, and shows the tree canvas, progress lines and steps", async () => {
+    const { context, page, errors } = await fresh();
+    const base = inject("baseUrl");
+    await page.goto(base);
+    await waitForPlan(page); // the first example
+
+    // a new query, typed
+    await page.getByLabel("Dish type").selectOption("soup");
+    while ((await page.locator(".ingredient-row").count()) > 0) await page.getByRole("button", { name: "Remove ingredient 1" }).click();
+    await page.getByRole("button", { name: "Add ingredient" }).click();
+    await page.getByLabel("Ingredient 1: object").pressSequentially("carrot");
+    await page.getByLabel("Ingredient 1: state").pressSequentially("chopped");
+    await page.getByRole("button", { name: "Add ingredient" }).click();
+    await page.getByLabel("Ingredient 2: object").pressSequentially("onion");
+    await page.getByLabel("Ingredient 2: state").pressSequentially("diced");
+    await page.waitForFunction(() => document.querySelector(".plan-status")?.textContent?.startsWith("Task tree for soup") === true);
+    await waitForPlan(page);
+
+    expect(new URL(page.url()).search).toBe("?dish=soup&i=carrot~chopped&i=onion~diced");
+    const canvas = page.locator(".cy");
+    await page.locator(".cy canvas").first().waitFor(); // the graph view loads on its own
+    expect(Number(await canvas.getAttribute("data-nodes"))).toBeGreaterThan(3);
+    expect(await page.locator(".cy canvas").count()).toBeGreaterThan(0);
+    expect(await page.locator(".progress-svg g.line").count()).toBeGreaterThan(0);
+    expect(await page.locator('.progress-svg g.line[data-ingredient="carrot"]').count()).toBe(1);
+    const steps = await stepsText(page);
+    expect(steps.length).toBeGreaterThan(2);
+    expect(steps.join(" ")).toContain("carrot");
+    expect(await page.locator(".panel-substitutions tbody tr").count()).toBe(2);
+    expect(await page.locator(".panel-reference .goal-label").textContent()).not.toBe("");
+
+    // selecting a step highlights its unit in the progress lines; arrow keys move the selection
+    const carrotStep = page.locator(".steps li", { hasText: "carrot" }).first();
+    await carrotStep.click();
+    expect(await carrotStep.getAttribute("aria-selected")).toBe("true");
+    await page.locator('.progress-svg g.line.on-line[data-ingredient="carrot"]').waitFor();
+    const before = Number(await page.locator('.steps li[aria-selected="true"]').getAttribute("data-unit"));
+    await page.keyboard.press("ArrowDown");
+    expect(Number(await page.locator('.steps li[aria-selected="true"]').getAttribute("data-unit"))).toBe(before + 1);
+    expect(await page.evaluate(() => document.activeElement?.getAttribute("aria-selected"))).toBe("true");
+
+    // clicking a motion of a progress line selects its step
+    await page.locator('.progress-svg g.line[data-ingredient="onion"] g.cell.motion').first().click();
+    const selected = await page.locator('.steps li[aria-selected="true"] .step-text').textContent();
+    expect(selected).toContain("onion");
+    await screenshot(page, "app-typed-query");
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
+  it("re-plans when another substitute is chosen, and keeps it in the URL", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(`${inject("baseUrl")}?dish=salad&i=chili+pepper~chopped&i=tomato~whole`);
+    await waitForPlan(page);
+    const row = page.locator('.panel-substitutions tr[data-object="chili pepper"]');
+    const picker = row.locator("select.substitute");
+    const options = (await picker.locator("option").evaluateAll((os) => os.map((o) => (o as HTMLOptionElement).value))).filter((v) => v !== "");
+    expect(options.length).toBeGreaterThan(0);
+    const before = await row.locator(".equivalent").textContent();
+    const choice = options.includes("jalapeno") ? "jalapeno" : options.find((o) => !(before ?? "").includes(o)) ?? options[0]!;
+    await picker.selectOption(choice);
+    await page.locator('.panel-substitutions tr[data-object="chili pepper"] .badge', { hasText: "your choice" }).waitFor();
+    await waitForPlan(page);
+    expect(await page.locator('.panel-substitutions tr[data-object="chili pepper"] .equivalent').textContent()).toContain(choice);
+    expect(await page.locator('.panel-substitutions tr[data-object="chili pepper"] select.substitute').inputValue()).toBe(choice);
+    expect(new URL(page.url()).searchParams.get("sub")).toBe(`chili pepper~${choice}`);
+    await screenshot(page, "app-substitute");
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
+  it("loads FOON files from the file input, shows errors with file and line, and switches back", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(`${inject("baseUrl")}?dish=bread&i=bread~sliced`);
+    await waitForPlan(page);
+    const hostile = "<img src=x onerror=alert(1)>";
+    const toast = [
+      "# title: Hostile toast",
+      "//",
+      "O\tbread\t1",
+      "S\tsliced",
+      `O\t${hostile}\t0`,
+      "S\tclean",
+      "M\ttoast\t<Assumed>",
+      "O\ttoast\t1\t0",
+      "S\ttoasted",
+      "S\tcontains\t{bread}",
+      "",
+    ].join("\n");
+    await page.getByLabel(/Load your own FOON files/).setInputFiles([{ name: "toast.txt", mimeType: "text/plain", buffer: Buffer.from(toast) }]);
+    await page.locator(".kb-status[data-source='custom']").waitFor();
+    expect(await page.locator(".kb-status").textContent()).toContain("toast.txt");
+    await waitForPlan(page);
+    expect(await page.locator(".panel-reference .goal-label").textContent()).toBe("Hostile toast");
+    // the hostile label is text, never markup
+    expect(await page.locator(".foon-app img").count()).toBe(0);
+    expect(await page.locator(".panel-query datalist option", { hasText: "" }).evaluateAll((os) => os.some((o) => (o as HTMLOptionElement).value === "<img src=x onerror=alert(1)>"))).toBe(true);
+
+    const broken = "//\nO\ttomato\t1\nS\t[bowl\nM\tdice\t<Assumed>\nO\ttomato\t1\nS\tdiced\n";
+    await page.getByLabel(/Load your own FOON files/).setInputFiles([{ name: "broken.txt", mimeType: "text/plain", buffer: Buffer.from(broken) }]);
+    await page.locator(".kb-error:not([hidden])").waitFor();
+    expect(await page.locator(".kb-error").textContent()).toMatch(/broken\.txt:3/);
+    expect(await page.locator(".kb-status").getAttribute("data-source")).toBe("custom"); // the previous one stays
+    await screenshot(page, "app-kb-error");
+
+    await page.getByRole("button", { name: "Use the bundled knowledge base" }).click();
+    await page.locator(".kb-status[data-source='bundled']").waitFor();
+    await waitForPlan(page);
+    expect(await page.locator(".panel-reference .goal-label").textContent()).not.toBe("Hostile toast");
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
+  it("exports the task tree (FOON, JSON, PDDL), the progress lines (JSON) and the graph (PNG, SVG)", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(`${inject("baseUrl")}?dish=salad&i=tomato~whole&i=cucumber~sliced`);
+    await waitForPlan(page);
+    await page.locator(".cy canvas").first().waitFor();
+    const button = (name: string) => () => page.getByRole("button", { name, exact: true }).click();
+
+    const foon = await downloadOf(page, button("FOON text"));
+    expect(foon.name).toMatch(/\.txt$/);
+    expect(foon.bytes.toString()).toMatch(/^\/\/$/m);
+    expect(foon.bytes.toString()).toMatch(/^M\t/m);
+
+    const json = await downloadOf(page, button("Plan JSON"));
+    const plan = JSON.parse(json.bytes.toString()) as { format_version: number; units: unknown[] };
+    expect(plan.format_version).toBe(1);
+    expect(plan.units.length).toBeGreaterThan(0);
+
+    const pddl = await downloadOf(page, button("PDDL"));
+    expect(pddl.name).toMatch(/\.pddl$/);
+    expect(pddl.bytes.toString()).toContain("(define");
+
+    const progress = await downloadOf(page, button("Progress lines JSON"));
+    expect(() => JSON.parse(progress.bytes.toString()) as unknown).not.toThrow();
+    expect(progress.bytes.toString()).toContain("tomato");
+
+    const png = await downloadOf(page, button("Graph PNG"));
+    expect(png.bytes.subarray(0, 8).toString("hex")).toBe("89504e470d0a1a0a");
+    const svg = await downloadOf(page, button("Graph SVG"));
+    expect(svg.bytes.toString()).toContain("<svg");
+    expect(svg.bytes.toString()).toContain("<circle");
+    mkdirSync(join(ARTEFACTS, "downloads"), { recursive: true });
+    for (const d of [foon, json, pddl, progress, png, svg]) writeFileSync(join(ARTEFACTS, "downloads", d.name), d.bytes);
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
+  it("restores the query from the URL, with back and forward", async () => {
+    const { context, page, errors } = await fresh();
+    const base = inject("baseUrl");
+    await page.goto(`${base}?dish=salad&i=tomato~diced&i=cucumber~sliced`);
+    await waitForPlan(page);
+    expect(await page.getByLabel("Dish type").inputValue()).toBe("salad");
+    expect(await page.getByLabel("Ingredient 1: object").inputValue()).toBe("tomato");
+    expect(await page.getByLabel("Ingredient 2: state").inputValue()).toBe("sliced");
+
+    await page.getByRole("button", { name: /^Omelette/ }).click();
+    await page.waitForURL(/dish=omelette/);
+    await waitForPlan(page);
+    await page.goBack();
+    await page.waitForURL(/dish=salad/);
+    await page.waitForFunction(() => (document.querySelector<HTMLInputElement>("input.object")?.value ?? "") === "tomato");
+    await waitForPlan(page);
+    expect(await page.locator(".plan-status").textContent()).toContain("salad");
+    await page.goForward();
+    await page.waitForURL(/dish=omelette/);
+    await page.waitForFunction(() => (document.querySelector<HTMLInputElement>("input.object")?.value ?? "") === "egg");
+
+    await page.reload();
+    await waitForPlan(page);
+    expect(await page.getByLabel("Ingredient 1: object").inputValue()).toBe("egg");
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
+  it("remembers the theme, and shows both themes", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(inject("baseUrl"));
+    await waitForPlan(page);
+    await page.getByLabel("Theme").selectOption("light");
+    expect(await page.locator("html").getAttribute("data-theme")).toBe("light");
+    await screenshot(page, "app-light");
+    await page.getByLabel("Theme").selectOption("dark");
+    await page.reload();
+    await waitForPlan(page);
+    expect(await page.locator("html").getAttribute("data-theme")).toBe("dark");
+    await page.waitForTimeout(300);
+    await screenshot(page, "app-dark");
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
+  it("has labelled controls, a visible focus ring and AA contrast in both themes", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(`${inject("baseUrl")}?dish=salad&i=chili+pepper~chopped&i=tomato~whole`);
+    await waitForPlan(page);
+    expect(await page.evaluate(unlabelledControls)).toEqual([]);
+    // Tab reaches the controls, and the focused one shows an outline
+    for (let i = 0; i < 3; i++) await page.keyboard.press("Tab");
+    const ring = await page.evaluate(() => {
+      const e = document.activeElement;
+      return e === null || e === document.body ? null : { tag: e.tagName, style: getComputedStyle(e).outlineStyle, width: parseFloat(getComputedStyle(e).outlineWidth) };
+    });
+    expect(ring).not.toBeNull();
+    expect(ring!.style).not.toBe("none");
+    expect(ring!.width).toBeGreaterThanOrEqual(2);
+    const text = "h1, h2, h3, p, label, a, button, th, td, li, .badge, .reason, .chip, select, input";
+    // the checker sees the page's text (no one reaches 21:1 everywhere)
+    expect((await page.evaluate(lowContrast, { selector: text, min: 21 })).length).toBeGreaterThan(10);
+    for (const theme of ["light", "dark"]) {
+      await page.getByLabel("Theme").selectOption(theme);
+      expect(await page.evaluate(lowContrast, { selector: text, min: 4.5 }), `contrast in the ${theme} theme`).toEqual([]);
+    }
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
+  it("works offline after the first visit, and reports the time to first plan on a cold load", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(`${inject("baseUrl")}?dish=salad&i=tomato~whole&i=cucumber~sliced`);
+    await waitForPlan(page);
+    const firstPlanMs = await page.evaluate(() => performance.getEntriesByName("foon:first-plan")[0]?.startTime ?? -1);
+    expect(firstPlanMs).toBeGreaterThan(0);
+    mkdirSync(ARTEFACTS, { recursive: true });
+    writeFileSync(join(ARTEFACTS, "timing.json"), `${JSON.stringify({ coldFirstPlanMs: Math.round(firstPlanMs) })}\n`);
+
+    await page.evaluate(async () => {
+      await navigator.serviceWorker.ready;
+    });
+    // the precache is filled at install; wait for the worker to control the page
+    await page.waitForFunction(() => navigator.serviceWorker.controller !== null, undefined, { timeout: 15_000 }).catch(async () => {
+      await page.reload();
+      await page.waitForFunction(() => navigator.serviceWorker.controller !== null);
+    });
+    await context.setOffline(true);
+    await page.reload();
+    await waitForPlan(page);
+    expect(await page.locator(".kb-status").getAttribute("data-state")).toBe("ready");
+    await page.goto(`${inject("baseUrl")}?dish=soup&i=carrot~chopped`);
+    await waitForPlan(page);
+    await screenshot(page, "app-offline");
+    await context.setOffline(false);
+    expect(errors.filter((e) => !e.includes("ERR_INTERNET_DISCONNECTED"))).toEqual([]);
+    await context.close();
+  });
+});
