@@ -55,6 +55,30 @@ export function structureMetrics(units: readonly PlanUnit[], goal: Plan["goal"])
     for (const key of keys) lastUse.set(key, i);
   });
 
+  /** Every unit index that produces each node. */
+  const producers = new Map<string, number[]>();
+  produced.forEach((keys, i) => {
+    for (const key of keys) producers.set(key, [...(producers.get(key) ?? []), i]);
+  });
+  /** Whether unit `j` needs unit `i` first: it uses something `i` makes, directly or through earlier units. */
+  const dependsOn = (j: number, i: number): boolean => {
+    const stack = [j];
+    const visited = new Set<number>();
+    while (stack.length > 0) {
+      const k = stack.pop()!;
+      if (visited.has(k)) continue;
+      visited.add(k);
+      for (const key of inputKeys[k]!) {
+        for (const m of producers.get(key) ?? []) {
+          if (m >= k) continue;
+          if (m === i) return true;
+          stack.push(m);
+        }
+      }
+    }
+    return false;
+  };
+
   const seen = new Map<string, number>();
   const violations: string[] = [];
   let duplicates = 0;
@@ -71,8 +95,12 @@ export function structureMetrics(units: readonly PlanUnit[], goal: Plan["goal"])
     } else seen.set(key, i);
 
     const early = unit.inputs.filter((node) => {
-      const first = firstProducer.get(nodeKey(node));
-      return first !== undefined && first >= i && !availableAtStart(node);
+      const key = nodeKey(node);
+      const first = firstProducer.get(key);
+      if (first === undefined || first < i || availableAtStart(node)) return false;
+      // a state the recipe returns to (a lid put back, butter melted again in the pot) was there from
+      // the start: every unit making it again needs this one first, so no order could do better
+      return !(producers.get(key) ?? []).every((j) => dependsOn(j, i));
     });
     if (early.length > 0) {
       beforeInputs += 1;
