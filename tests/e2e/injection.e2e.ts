@@ -3,7 +3,8 @@
 // text (steps, substitutions, progress lines and their tooltips, reference, the graph's SVG export), no
 // element or event-handler attribute is created from them, no script runs (no dialog, no global set, no
 // CSP violation reported), and the page's Content-Security-Policy blocks inline script.
-import { readFileSync } from "node:fs";
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
 import type { Browser, Page } from "playwright-core";
@@ -91,7 +92,7 @@ async function injectedMarkup(page: Page): Promise<string[]> {
         if (a.name.toLowerCase().startsWith("on")) found.push(`<${e.localName} ${a.name}>`);
       }
     }
-    for (const e of Array.from(document.querySelectorAll("#app img, #app iframe, #app b, #app script, script:not([src])"))) {
+    for (const e of Array.from(document.querySelectorAll("main img, main iframe, main b, main script, script:not([src])"))) {
       found.push(`<${e.localName}> ${e.outerHTML.slice(0, 80)}`);
     }
     return found;
@@ -166,15 +167,48 @@ describe("markup in FOON files and queries is text everywhere", () => {
     await page.context().close();
   });
 
-  it("serves the planner page with a Content-Security-Policy that blocks inline script", async () => {
-    const html = readFileSync(join(ROOT, process.env.E2E_DIST ?? "dist", "index.html"), "utf8");
-    const policy = /http-equiv="Content-Security-Policy"\s+content="([^"]+)"/.exec(html)?.[1] ?? "";
-    const scriptSrc = /(?:^|;)\s*script-src ([^;]*)/.exec(policy)?.[1] ?? "";
-    expect(scriptSrc).not.toBe("");
-    expect(scriptSrc).not.toContain("'unsafe-inline'");
-    expect(scriptSrc).not.toContain("'unsafe-eval'");
-    expect(policy).toContain("object-src 'none'");
-    expect(policy).toContain("base-uri 'self'");
+  it("shows hostile query files as text in the evaluation workbench (batch table, rating view)", async () => {
+    const dir = mkdtempSync(join(tmpdir(), "injection-queries-"));
+    const id = "<img src=x onerror=window.xss='id'>";
+    const file = join(dir, "hostile.json");
+    writeFileSync(file, JSON.stringify({ id, type: "salad", ingredients: [{ object: LABEL, state: QUERY_STATE }, { object: "tomato", state: "sliced" }] }));
+    const { page, trap, errors } = await trappedPage();
+    await page.goto(new URL("workbench.html", inject("baseUrl")).href);
+    await page.waitForSelector("body[data-ready=true]");
+    await page.fill("#rater", "<b onmouseover=window.xss='rater'>me</b>");
+    await page.press("#rater", "Enter");
+    await page.setInputFiles("#query-files", [file]);
+    await page.click("#run-batch");
+    await page.waitForSelector("#batch-status[data-state=done], #batch-status[data-state=failed]", { timeout: 60_000 });
+    expect(await page.textContent("#batch-status")).toMatch(/^Done: 2 plans of 1 quer/);
+    expect(await page.locator("#recipe-table tbody").textContent()).toContain(id);
+    await page.goto(new URL("workbench.html#rate", inject("baseUrl")).href);
+    await page.waitForSelector("body[data-ready=true]");
+    await page.locator(".item").first().waitFor();
+    expect(await page.locator(".recipe-title code").textContent()).toBe(id);
+    expect((await page.locator(".item").allTextContents()).join("\n")).toContain(LABEL);
+    await page.waitForTimeout(500);
+    await screenshot(page, "injection-workbench");
+    expect(await injectedMarkup(page)).toEqual([]);
+    expect(await trap()).toEqual({ xss: null, violations: [], dialogs: [] });
+    expect(errors).toEqual([]);
+    await page.context().close();
+    rmSync(dir, { recursive: true, force: true });
+  });
+
+  it("serves every page with a Content-Security-Policy that blocks inline script", async () => {
+    for (const name of ["index.html", "workbench.html", "embed.html"]) {
+      const html = readFileSync(join(ROOT, process.env.E2E_DIST ?? "dist", name), "utf8");
+      const policy = /http-equiv="Content-Security-Policy"\s+content="([^"]+)"/.exec(html)?.[1] ?? "";
+      const scriptSrc = /(?:^|;)\s*script-src ([^;]*)/.exec(policy)?.[1] ?? "";
+      expect(scriptSrc, name).not.toBe("");
+      expect(scriptSrc, name).not.toContain("'unsafe-inline'");
+      expect(scriptSrc, name).not.toContain("'unsafe-eval'");
+      expect(policy, name).toContain("object-src 'none'");
+      expect(policy, name).toContain("base-uri 'self'");
+      // no inline script in the built page itself (it would be blocked)
+      expect(html, name).not.toMatch(/<script(?![^>]*\ssrc=)[^>]*>/);
+    }
 
     const { page, trap } = await trappedPage();
     await page.goto(inject("baseUrl"));
