@@ -2,7 +2,7 @@
 // that makes the page work offline after the first visit.
 
 import { ALL_VIEWS, createPlannerApp } from "./app/app";
-import { EXAMPLES, queryFromSearch } from "./app/query";
+import { EXAMPLES, queryFromSearch, queryToSearch } from "./app/query";
 import { bindThemePicker } from "./app/theme";
 import { syncQueryWithUrl } from "./app/url-sync";
 import { WorkerPlanner } from "./worker/client";
@@ -16,7 +16,10 @@ function start(): void {
   const host = document.getElementById("app");
   const themePicker = document.getElementById("theme");
   if (host === null || !(themePicker instanceof HTMLSelectElement)) return;
-  const initial = queryFromSearch(location.search) ?? EXAMPLES[0]!.query;
+  const fromUrl = queryFromSearch(location.search);
+  const initial = fromUrl ?? EXAMPLES[0]!.query;
+  // the URL always shows the query, the first example's included (so "back" to it shows it again)
+  if (fromUrl === null) history.replaceState(null, "", `${location.pathname}${queryToSearch(initial)}${location.hash}`);
   let firstPlan = true;
   const app = createPlannerApp(host, {
     planner: new WorkerPlanner(),

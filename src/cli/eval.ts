@@ -99,5 +99,8 @@ export function evalCommand(args: string[]): void {
   process.stdout.write(`results: ${join(out, name)}.json, -summary.csv, -recipes.csv\n`);
 
   const broken = brokenInvariants(table);
-  if (broken.length > 0) throw new Error(`structural invariants broken:\n  ${broken.join("\n  ")}`);
+  if (broken.length > 0) {
+    const details = records.flatMap((r) => (r.ok ? r.metrics.violations.map((v) => `${r.variant} ${r.recipe.type}/${r.recipe.id}: ${v}`) : []));
+    throw new Error(`structural invariants broken:\n  ${broken.join("\n  ")}\n${details.map((d) => `    ${d}`).join("\n")}`);
+  }
 }

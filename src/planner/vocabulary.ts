@@ -16,6 +16,7 @@ export function titleFromFileName(name: string): string {
   return name
     .replace(/\.(txt|foon)$/i, "")
     .replace(/^[a-z]?\d+[-_]/i, "")
+    .replace(/[-_]done$/i, "") // FOON-111 marks finished annotations so
     .replace(/_/g, " ")
     .trim();
 }

@@ -17,7 +17,7 @@ const BUNDLED_KB = "kb/default.foon";
 const EMBEDDINGS = "data/food-embeddings.bin";
 const VARIANTS: Variant[] = ["modified", "unmodified"];
 /** Results are stored in groups of this many (and at the end). */
-const SAVE_EVERY = 10;
+const SAVE_EVERY = 20;
 
 async function readQueryFiles(files: readonly File[]): Promise<{ queries: LoadedQuery[]; problems: string[] }> {
   const queries: LoadedQuery[] = [];
@@ -85,6 +85,7 @@ export class BatchView {
     pick("query-files", (f) => (this.queryFiles = f));
     pick("query-folder", (f) => (this.queryFiles = f));
     pick("kb-files", (f) => (this.kbFiles = f));
+    pick("kb-folder", (f) => (this.kbFiles = f));
     this.run.addEventListener("click", () => void this.start());
     this.cancel.addEventListener("click", () => void this.stop());
     byId("export-results-json", HTMLButtonElement).addEventListener("click", () => this.exportResults("json"));
@@ -209,7 +210,26 @@ export class BatchView {
     else download(`eval-${batch.id}-recipes.csv`, recipesCsv(batch.records), "text/csv");
   }
 
+  private lastRender = 0;
+  private renderTimer: ReturnType<typeof setTimeout> | null = null;
+
+  /** Renders now, or at most once a second while a batch runs. */
   render(): void {
+    if (this.worker !== null) {
+      const wait = this.lastRender + 1000 - performance.now();
+      if (wait > 0) {
+        this.renderTimer ??= setTimeout(() => {
+          this.renderTimer = null;
+          this.render();
+        }, wait);
+        return;
+      }
+    }
+    this.lastRender = performance.now();
+    this.renderNow();
+  }
+
+  private renderNow(): void {
     const batch = this.bench.batch;
     const blind = this.bench.settings.blind;
     const metrics = byId("metrics", HTMLElement);

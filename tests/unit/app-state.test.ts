@@ -74,6 +74,7 @@ describe("vocabulary of a knowledge base", () => {
   it("titles a file without a title line by its name", () => {
     expect(titleFromFileName("0001-whipped_cream.txt")).toBe("whipped cream");
     expect(titleFromFileName("s01-greek_salad.txt")).toBe("greek salad");
+    expect(titleFromFileName("0097-miso_soup-DONE.txt")).toBe("miso soup");
   });
   it("reads a plain file without a bundle marker", () => {
     const text = "# title: Toast\n//\nO\tbread\t1\nS\tsliced\nM\ttoast\t<Assumed>\nO\ttoast\t1\t0\nS\ttoasted\nS\ton\t[plate]\n";

@@ -11,7 +11,7 @@ export interface StepsViewActions {
 }
 
 const ORIGIN_WORDS: Record<string, string> = {
-  renamed: "renamed by substitution",
+  renamed: "renamed by modification",
   grafted: "grafted: added to reach a state",
   copied: "copied branch",
   attached: "takes a new ingredient",

@@ -34,7 +34,13 @@ function row(outcome: IngredientOutcome, actions: SubstitutionsActions): HTMLTab
     el("td", { class: "case", text: caseText(outcome) }),
     el("td", { class: "equivalent", text: equivalent }),
     el("td", { class: "similarity", text: outcome.match === null ? "—" : similarityText(outcome.match.similarity) }),
-    el("td", { class: "flags" }, ...flags, outcome.reason === undefined ? null : el("span", { class: "reason small", text: outcome.reason })),
+    el(
+      "td",
+      { class: "flags" },
+      ...flags,
+      // the planner's explanation can be long: one click away, not in the way of the table
+      outcome.reason === undefined ? null : el("details", { class: "reason small" }, el("summary", { text: "why" }), el("span", { text: outcome.reason })),
+    ),
     el("td", {}, picker),
   );
   return tr;

@@ -128,6 +128,7 @@ export function mountTreeView(host: HTMLElement, store: Store, actions: TreeView
       cy.elements().removeClass("selected on-line");
       const picked = selection.node ?? (selection.unit === null ? null : `m:${selection.unit}`);
       if (picked !== null) cy.getElementById(picked).addClass("selected");
+      canvas.dataset.selected = picked ?? "";
       if (selection.ingredient !== null) {
         const on = cy.nodes().filter((n) => n.data("ingredient") === selection.ingredient);
         on.addClass("on-line");
