@@ -17,9 +17,7 @@ for (const widget of document.querySelectorAll("foon-planner")) {
     write(`#${widget.id} plan: ${plan.units.length} functional units from “${plan.goal.label}”`);
   });
   widget.addEventListener("select", (event) => write(`#${widget.id} select: ${event.detail.step ?? "nothing"}`));
-  widget.addEventListener("error", (event) => {
-    if (event instanceof CustomEvent) write(`#${widget.id} error: ${JSON.stringify(event.detail)}`);
-  });
+  widget.addEventListener("error", (event) => write(`#${widget.id} error: ${event.detail.error.message}`));
 }
 
 // The script API: mount(), update(), destroy().

@@ -4,7 +4,7 @@
 import type { ExportFormat, KnowledgeBaseFile, Plan } from "../planner/types";
 import { describeError, PlannerError, toPlannerError } from "../planner/errors";
 import type { PlannerService } from "../worker/client";
-import { download, el } from "./dom";
+import { download, el, plural } from "./dom";
 import { NO_SELECTION, type Selection } from "./model/tree";
 import { isPlannable, toPlanRequest, type AppQuery } from "./query";
 import { Store } from "./store";
@@ -233,7 +233,7 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
           : state.planning
             ? "Planning…"
             : state.plan !== null
-              ? `Task tree for ${state.plan.query.type || "any dish"}: ${state.plan.units.length} functional units from “${state.plan.goal.label}”.`
+              ? `Task tree for ${state.plan.query.type || "any dish"}: ${plural(state.plan.units.length, "functional unit")} from “${state.plan.goal.label}”.`
               : "Add ingredients to plan a task tree.");
     }),
   );

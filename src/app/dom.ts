@@ -42,3 +42,8 @@ export function download(name: string, content: string | Blob, type = "text/plai
   a.remove();
   setTimeout(() => URL.revokeObjectURL(url), 10_000);
 }
+
+/** "1 recipe", "2 recipes". */
+export function plural(n: number, word: string): string {
+  return `${n} ${word}${n === 1 ? "" : "s"}`;
+}

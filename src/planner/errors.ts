@@ -30,7 +30,8 @@ export class PlannerError extends Error implements FoonErrorData {
 /** "file:line:column: reason" for an error or warning given as data. */
 export function describeError(e: FoonErrorData): string {
   const place = [e.file, e.line, e.column].filter((part) => part !== undefined).join(":");
-  return place === "" ? e.message : `${place}: ${e.message}`;
+  // the core's messages already start with their place: never say it twice
+  return place === "" || e.message.startsWith(`${place}:`) ? e.message : `${place}: ${e.message}`;
 }
 
 function isRecord(value: unknown): value is Record<string, unknown> {

@@ -52,12 +52,31 @@ export function defineFoonPlanner(name = "foon-planner"): void {
   if (customElements.get(name) === undefined) customElements.define(name, FoonPlannerElement);
 }
 
+/** The widget's own events, typed for `addEventListener` on a `<foon-planner>`. */
+export interface FoonPlannerEventMap {
+  plan: CustomEvent<PlanEventDetail>;
+  select: CustomEvent<SelectEventDetail>;
+  error: CustomEvent<ErrorEventDetail>;
+}
+
+// Declaration merging adds typed overloads for the widget's events; other events keep the DOM's types.
+export interface FoonPlannerElement {
+  addEventListener<K extends keyof FoonPlannerEventMap>(
+    type: K,
+    listener: (this: FoonPlannerElement, event: FoonPlannerEventMap[K]) => void,
+    options?: boolean | AddEventListenerOptions,
+  ): void;
+  addEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | AddEventListenerOptions): void;
+  removeEventListener<K extends keyof FoonPlannerEventMap>(
+    type: K,
+    listener: (this: FoonPlannerElement, event: FoonPlannerEventMap[K]) => void,
+    options?: boolean | EventListenerOptions,
+  ): void;
+  removeEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | EventListenerOptions): void;
+}
+
 declare global {
   interface HTMLElementTagNameMap {
     "foon-planner": FoonPlannerElement;
-  }
-  interface HTMLElementEventMap {
-    plan: CustomEvent<PlanEventDetail>;
-    select: CustomEvent<SelectEventDetail>;
   }
 }

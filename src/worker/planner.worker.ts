@@ -22,6 +22,10 @@ async function filesOf(source: KnowledgeBaseSource): Promise<{ name: string; fil
   const response = await fetch(source.url);
   if (!response.ok) throw new PlannerError({ code: "internal", message: `${source.url}: HTTP ${response.status}` });
   const name = new URL(source.url).pathname.split("/").pop() ?? "knowledge base";
+  // hosts with a page fallback answer a missing file with their index page: say so, not "unknown line"
+  if ((response.headers.get("content-type") ?? "").includes("text/html")) {
+    throw new PlannerError({ code: "internal", message: `${source.url}: not found (the server sent a web page, not a FOON file)` });
+  }
   return { name, files: [{ name, bytes: new Uint8Array(await response.arrayBuffer()) }] };
 }
 

@@ -66,7 +66,9 @@ async function cacheFirst(request: Request): Promise<Response> {
   if (cached !== undefined) return cached;
   const response = await fetch(request);
   // files that were not precached (e.g. a knowledge base added later) are kept for the next offline visit
-  if (response.ok && new URL(request.url).origin === sw.location.origin) {
+  // (never a page sent in place of a missing file by a host's fallback)
+  const page = (response.headers.get("content-type") ?? "").includes("text/html");
+  if (response.ok && !page && new URL(request.url).origin === sw.location.origin) {
     const copy = response.clone();
     void caches.open(CACHE).then((cache) => cache.put(request, copy));
   }

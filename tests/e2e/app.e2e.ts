@@ -72,6 +72,39 @@ describe("planner page", () => {
     expect(Number(await page.locator('.steps li[aria-selected="true"]').getAttribute("data-unit"))).toBe(before + 1);
     expect(await page.evaluate(() => document.activeElement?.getAttribute("aria-selected"))).toBe("true");
 
+    // clicking a motion node (a red square) on the graph canvas selects its step and progress line
+    await page.locator(".steps li").last().click(); // a known selection first (drawn with an overlay, so not pure red)
+    const lastUnit = await page.locator(".steps li").last().getAttribute("data-unit");
+    await page.locator(".cy").scrollIntoViewIfNeeded();
+    const redPixel = await page.evaluate(() => {
+      const motion = getComputedStyle(document.documentElement).getPropertyValue("--fp-motion").trim(); // "#rrggbb"
+      const [r, g, b] = [1, 3, 5].map((i) => parseInt(motion.slice(i, i + 2), 16)) as [number, number, number];
+      for (const canvas of document.querySelectorAll<HTMLCanvasElement>(".cy canvas")) {
+        const ctx = canvas.getContext("2d");
+        if (ctx === null || canvas.width === 0) continue;
+        const { data, width, height } = ctx.getImageData(0, 0, canvas.width, canvas.height);
+        const box = canvas.getBoundingClientRect();
+        for (let y = 0; y < height; y += 2) {
+          for (let x = 0; x < width; x += 2) {
+            const k = (y * width + x) * 4;
+            if (Math.abs(data[k]! - r) < 8 && Math.abs(data[k + 1]! - g) < 8 && Math.abs(data[k + 2]! - b) < 8 && data[k + 3]! > 250) {
+              // a few pixels inside the square's edge
+              return { x: box.left + ((x + 3) * box.width) / width, y: box.top + ((y + 3) * box.height) / height };
+            }
+          }
+        }
+      }
+      return null;
+    });
+    expect(redPixel).not.toBeNull();
+    await page.mouse.click(redPixel!.x, redPixel!.y);
+    await page.waitForFunction((last) => {
+      const picked = document.querySelector<HTMLElement>(".cy")?.dataset.selected ?? "";
+      return /^m:\d+$/.test(picked) && picked !== `m:${last}`;
+    }, lastUnit);
+    const tapped = (await page.locator(".cy").getAttribute("data-selected"))!.slice(2);
+    expect(await page.locator('.steps li[aria-selected="true"]').getAttribute("data-unit")).toBe(tapped);
+
     // clicking a motion of a progress line selects its step
     await page.locator('.progress-svg g.line[data-ingredient="onion"] g.cell.motion').first().click();
     const selected = await page.locator('.steps li[aria-selected="true"] .step-text').textContent();

@@ -66,7 +66,21 @@ describe("embedding page", () => {
     await page.locator("#log", { hasText: "#mounted plan: " }).filter({ hasText: "omelette" }).waitFor();
     await page.getByRole("button", { name: "Destroy it" }).click();
     expect(await page.evaluate(() => document.getElementById("mounted")?.shadowRoot?.childElementCount ?? -1)).toBe(0);
-    expect(errors).toEqual([]);
+    // a knowledge base that is not there: an `error` event with the reason, and the message in the widget
+    const error = await page.evaluate(
+      () =>
+        new Promise<string>((resolve) => {
+          const w = document.createElement("foon-planner");
+          w.setAttribute("kb-url", "kb/missing.foon");
+          w.setAttribute("ingredients", "whole tomato");
+          w.addEventListener("error", (event) => {
+            if (event instanceof CustomEvent) resolve((event.detail as { error: { message: string } }).error.message);
+          });
+          document.body.append(w);
+        }),
+    );
+    expect(error).toMatch(/missing\.foon.*(404|not found)/);
+    expect(errors.filter((e) => !e.includes("404"))).toEqual([]);
     await context.close();
   });
 });

@@ -3,7 +3,7 @@
 // back to the bundled knowledge base.
 
 import type { Stats } from "../../planner/types";
-import { el, uid } from "../dom";
+import { el, plural, uid } from "../dom";
 import type { AppState, Store } from "../store";
 
 export interface KnowledgeBaseActions {
@@ -77,8 +77,8 @@ export function mountKnowledgeBasePanel(host: HTMLElement, store: Store, actions
     status.textContent =
       kb === null
         ? "Loading the knowledge base…"
-        : `${state.kbSource === "bundled" ? "Bundled" : "Your"} knowledge base (${kb.name}): ${kb.stats.subgraphs} recipes, ${kb.stats.units} functional units` +
-          (kb.warnings.length === 0 ? "." : `, ${kb.warnings.length} warnings.`);
+        : `${state.kbSource === "bundled" ? "Bundled" : "Your"} knowledge base (${kb.name}): ${plural(kb.stats.subgraphs, "recipe")}, ${plural(kb.stats.units, "functional unit")}` +
+          (kb.warnings.length === 0 ? "." : `, ${plural(kb.warnings.length, "warning")}.`);
     status.dataset.state = kb === null ? "loading" : "ready";
     status.dataset.source = state.kbSource;
     error.textContent = state.kbError ?? "";

@@ -2,7 +2,7 @@
 // modification removed from it, and the planner's notes.
 
 import type { Plan } from "../../planner/types";
-import { el } from "../dom";
+import { el, plural } from "../dom";
 import { titleFromFileName } from "../../planner/vocabulary";
 import type { AppState, Store } from "../store";
 
@@ -36,7 +36,7 @@ export function mountReferenceView(host: HTMLElement, store: Store): () => void 
       plan.removed.length === 0 ? el("p", { class: "muted", text: "Nothing." }) : removed,
       plan.notes.length === 0 ? null : el("h3", { text: "Notes" }),
       plan.notes.length === 0 ? null : el("ul", { class: "notes" }, ...plan.notes.map((n) => el("li", { text: n }))),
-      el("p", { class: "muted small", text: `${plan.units.length} functional units${plan.modified ? "" : " (not modified)"}${ms === null ? "" : `, planned in ${Math.round(ms)} ms`}.` }),
+      el("p", { class: "muted small", text: `${plural(plan.units.length, "functional unit")}${plan.modified ? "" : " (not modified)"}${ms === null ? "" : `, planned in ${Math.round(ms)} ms`}.` }),
     ];
     body.replaceChildren(...parts.filter((p): p is Node => p !== null));
   };

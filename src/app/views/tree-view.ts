@@ -109,7 +109,15 @@ export function mountTreeView(host: HTMLElement, store: Store, actions: TreeView
   let plan: Plan | null = null;
 
   cy.on("tap", "node", (event) => actions.select(selectNode(graph, String(event.target.id()))));
-  fit.addEventListener("click", () => cy.fit(undefined, 20));
+  // fit the whole tree, but never blow a small one up past 1.5x (its labels would be huge)
+  const fitTree = (): void => {
+    cy.fit(undefined, 20);
+    if (cy.zoom() > 1.5) {
+      cy.zoom(1.5);
+      cy.center();
+    }
+  };
+  fit.addEventListener("click", fitTree);
   zoomIn.addEventListener("click", () => cy.zoom({ level: cy.zoom() * 1.25, renderedPosition: { x: cy.width() / 2, y: cy.height() / 2 } }));
   zoomOut.addEventListener("click", () => cy.zoom({ level: cy.zoom() / 1.25, renderedPosition: { x: cy.width() / 2, y: cy.height() / 2 } }));
 
@@ -118,7 +126,8 @@ export function mountTreeView(host: HTMLElement, store: Store, actions: TreeView
     graph = next === null ? { nodes: [], edges: [] } : planToGraph(next);
     cy.elements().remove();
     cy.add(elements(graph));
-    cy.layout({ name: "dagre", rankDir: "LR", nodeSep: 34, rankSep: 70, padding: 20, fit: true } as cytoscape.LayoutOptions).run();
+    cy.layout({ name: "dagre", rankDir: "LR", nodeSep: 34, rankSep: 70, padding: 20, fit: false } as cytoscape.LayoutOptions).run();
+    fitTree();
     canvas.dataset.nodes = String(graph.nodes.length);
     canvas.dataset.edges = String(graph.edges.length);
   }
@@ -148,7 +157,7 @@ export function mountTreeView(host: HTMLElement, store: Store, actions: TreeView
   // a hidden container (another view tab) has no size: fit again when it is shown or resized
   const resize = new ResizeObserver(() => {
     cy.resize();
-    cy.fit(undefined, 20);
+    fitTree();
   });
   resize.observe(canvas);
 

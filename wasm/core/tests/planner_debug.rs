@@ -1,10 +1,65 @@
-//! `PLAN_QUERY=path/to/query.json cargo test --test planner_debug -- --nocapture` prints one plan.
+//! Tools for looking at plans (they do nothing unless asked):
+//! `PLAN_QUERY=path/to/query.json cargo test --test planner_debug -- --nocapture` prints one plan;
+//! `PLAN_DUMP=out.jsonl cargo test --release --test planner_debug` writes every dev plan, both variants, as
+//! JSON lines (`{"variant","plan"}`). `PLAN_SIM=exact` uses exact matching instead of the embedding table.
 
 mod common;
-use common::{foon111, load};
+use common::{foon111, load, shared_dir};
 use foon_core::planner::violations;
-use foon_core::similarity::ExactMatch;
-use foon_core::{plan, PlanRequest, PlannerIndex, Query};
+use foon_core::similarity::{ExactMatch, Similarity};
+use foon_core::{plan, EmbeddingSimilarity, PlanRequest, PlannerIndex, Query};
+use std::path::{Path, PathBuf};
+
+fn similarity() -> Box<dyn Similarity> {
+    if std::env::var("PLAN_SIM").is_ok_and(|v| v == "exact") {
+        return Box::new(ExactMatch);
+    }
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../public/data/food-embeddings.bin");
+    Box::new(EmbeddingSimilarity::from_bytes(&std::fs::read(path).unwrap()).unwrap())
+}
+
+fn queries_under(dir: &Path, out: &mut Vec<PathBuf>) {
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    entries.sort();
+    for p in entries {
+        if p.is_dir() {
+            queries_under(&p, out);
+        } else if p.extension().is_some_and(|x| x == "json") {
+            out.push(p);
+        }
+    }
+}
+
+#[test]
+fn dump_dev_plans() {
+    let Some(out) = std::env::var_os("PLAN_DUMP") else {
+        return;
+    };
+    let kb = load(&foon111("plain"));
+    let index = PlannerIndex::new(&kb);
+    let sim = similarity();
+    let mut files = Vec::new();
+    queries_under(&shared_dir().join("recipes").join("dev"), &mut files);
+    let mut lines = String::new();
+    for f in files {
+        let q: Query = serde_json::from_slice(&std::fs::read(&f).unwrap()).unwrap();
+        for modify in [true, false] {
+            let mut request = PlanRequest::new(q.clone());
+            request.modify = modify;
+            let p = plan(&kb, &index, sim.as_ref(), &request).unwrap();
+            let variant = if modify { "modified" } else { "unmodified" };
+            lines.push_str(&format!(
+                "{{\"variant\":\"{variant}\",\"plan\":{}}}\n",
+                serde_json::to_string(&p).unwrap()
+            ));
+        }
+    }
+    std::fs::write(out, lines).unwrap();
+}
 
 #[test]
 fn print_one_plan() {
@@ -13,10 +68,11 @@ fn print_one_plan() {
     };
     let kb = load(&foon111("plain"));
     let index = PlannerIndex::new(&kb);
+    let sim = similarity();
     let q: Query = serde_json::from_slice(&std::fs::read(path).unwrap()).unwrap();
     let mut request = PlanRequest::new(q);
     request.modify = std::env::var("PLAN_MODIFY").map_or(true, |v| v != "0");
-    let p = plan(&kb, &index, &ExactMatch, &request).unwrap();
+    let p = plan(&kb, &index, sim.as_ref(), &request).unwrap();
     for (i, (u, s)) in p.units.iter().zip(&p.steps).enumerate() {
         let show = |ns: &[foon_core::plan::PlanNode]| {
             ns.iter()
@@ -26,7 +82,7 @@ fn print_one_plan() {
         };
         eprintln!(
             "{:2} [{:?}] {} --{}--> {}\n     {s} {:?}",
-            i + 1,
+            i,
             u.origin,
             show(&u.inputs),
             u.motion,
@@ -44,6 +100,9 @@ fn print_one_plan() {
             o.status,
             o.reason
         );
+    }
+    for l in &p.progress_lines {
+        eprintln!("line {l:?}");
     }
     eprintln!(
         "goal {:?}\nremoved {:?}\nnotes {:?}",

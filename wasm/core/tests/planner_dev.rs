@@ -1,14 +1,23 @@
-//! All 320 dev queries against FOON-111 (plain dialect): every query yields a plan or a typed error, every
-//! plan is structurally sound, exact FOON labels are never remapped, and the output does not depend on
-//! the order the subgraph files are read in.
+//! All 320 dev queries against FOON-111 (plain dialect), with exact matching and with the shipped
+//! embedding table (`public/data/food-embeddings.bin`), with and without modification: every query yields
+//! a plan or a typed error, every plan is structurally sound (the evaluator's definitions), exact FOON
+//! labels are never remapped, and the output does not depend on the order the subgraph files are read in.
 
 mod common;
 use common::{foon111, load, shared_dir};
 use foon_core::plan::Status;
 use foon_core::planner::violations;
-use foon_core::similarity::ExactMatch;
-use foon_core::{plan, PlanRequest, PlannerIndex, Query};
+use foon_core::similarity::{ExactMatch, Similarity};
+use foon_core::{plan, EmbeddingSimilarity, PlanRequest, PlannerIndex, Query};
 use std::collections::BTreeMap;
+use std::path::PathBuf;
+
+fn embeddings() -> EmbeddingSimilarity {
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../public/data/food-embeddings.bin");
+    let bytes = std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    EmbeddingSimilarity::from_bytes(&bytes).unwrap()
+}
 
 fn dev_queries() -> Vec<(String, Query)> {
     let dir = shared_dir().join("recipes").join("dev");
@@ -34,7 +43,28 @@ fn dev_queries() -> Vec<(String, Query)> {
 }
 
 #[test]
-fn every_dev_query_plans_soundly_and_independently_of_file_order() {
+fn every_dev_query_plans_soundly_with_exact_matching() {
+    check_dev_queries(&ExactMatch, "exact");
+}
+
+#[test]
+fn every_dev_query_plans_soundly_with_embeddings() {
+    check_dev_queries(&embeddings(), "embeddings");
+}
+
+fn check_dev_queries(sim: &dyn Similarity, name: &str) {
+    for modify in [true, false] {
+        check_variant(sim, &format!("{name}, modify {modify}"), modify);
+    }
+}
+
+fn request(q: &Query, modify: bool) -> PlanRequest {
+    let mut r = PlanRequest::new(q.clone());
+    r.modify = modify;
+    r
+}
+
+fn check_variant(sim: &dyn Similarity, name: &str, modify: bool) {
     let files = foon111("plain");
     let kb = load(&files);
     let index = PlannerIndex::new(&kb);
@@ -48,8 +78,7 @@ fn every_dev_query_plans_soundly_and_independently_of_file_order() {
     let mut units_total = 0;
     let started = std::time::Instant::now();
     for (path, q) in &queries {
-        let request = PlanRequest::new(q.clone());
-        match plan(&kb, &index, &ExactMatch, &request) {
+        match plan(&kb, &index, sim, &request(q, modify)) {
             Ok(p) => {
                 for v in violations(&p) {
                     problems.push(format!("{path}: {v}"));
@@ -86,7 +115,7 @@ fn every_dev_query_plans_soundly_and_independently_of_file_order() {
     }
     let elapsed = started.elapsed();
     eprintln!(
-        "dev queries: {} plans, {errors} typed errors, {:.2} ms/plan (debug build), {:.1} units/plan",
+        "{name}: {} plans, {errors} typed errors, {:.2} ms/plan (debug build), {:.1} units/plan",
         queries.len() - errors,
         elapsed.as_secs_f64() * 1000.0 / queries.len() as f64,
         units_total as f64 / (queries.len() - errors).max(1) as f64
@@ -95,7 +124,7 @@ fn every_dev_query_plans_soundly_and_independently_of_file_order() {
     eprintln!("planned/total per dish type: {per_class:?}");
     assert!(
         problems.is_empty(),
-        "{} problems:\n{}",
+        "{name}: {} problems:\n{}",
         problems.len(),
         problems.join("\n")
     );
@@ -108,11 +137,11 @@ fn every_dev_query_plans_soundly_and_independently_of_file_order() {
     let kb2 = load(&shuffled);
     let index2 = PlannerIndex::new(&kb2);
     for ((path, q), before) in queries.iter().zip(&outputs) {
-        let again = match plan(&kb2, &index2, &ExactMatch, &PlanRequest::new(q.clone())) {
+        let again = match plan(&kb2, &index2, sim, &request(q, modify)) {
             Ok(p) => serde_json::to_string(&p).unwrap(),
             Err(e) => format!("error {}", e.code.as_str()),
         };
-        assert_eq!(&again, before, "{path}: plan depends on file order");
+        assert_eq!(&again, before, "{name} {path}: plan depends on file order");
     }
 }
 

@@ -1,98 +1,208 @@
-//! Structural checks of a plan, used by the tests and available to the CLI: no unit twice, no unit
-//! before the units making its inputs, no unit whose products nobody uses, the goal made.
+//! Structural checks of a plan from its `units` alone, with exactly the definitions of the evaluator
+//! (`src/eval/structure.ts`): no unit twice, no unit before a unit making one of its inputs (unless the
+//! input is something a kitchen has at the start), no unit whose products nobody uses, the goal made.
 
-use crate::plan::{Plan, PlanNode};
-use crate::taxonomy::RAW_STATES;
-use std::collections::HashSet;
+use crate::plan::{Plan, PlanNode, PlanUnit};
+use std::collections::{HashMap, HashSet};
 
-/// A node in only raw states (or a bare utensil), available in the kitchen even when some unit also
-/// makes it (a lid put back, a cup emptied).
-fn is_raw(n: &PlanNode) -> bool {
-    n.states.iter().all(|s| RAW_STATES.contains(&s.as_str()))
-        && (!n.states.is_empty() || crate::taxonomy::is_utensil(&n.label))
+/// States of things a kitchen has before cooking starts (`START_STATES` of the evaluator).
+pub const START_STATES: &[&str] = &[
+    "empty",
+    "clean",
+    "whole",
+    "raw",
+    "off",
+    "off (ready)",
+    "unopened",
+    "closed",
+    "dry",
+];
+
+/// Identity of a node: label, states and contents as sets, container.
+pub(crate) type NodeKey = (String, Vec<String>, Vec<String>, Option<String>);
+
+pub(crate) fn node_key(n: &PlanNode) -> NodeKey {
+    let mut states = n.states.clone();
+    states.sort();
+    let mut ingredients = n.ingredients.clone();
+    ingredients.sort();
+    (n.label.clone(), states, ingredients, n.container.clone())
 }
 
-/// Whether unit `j` needs unit `i` first: some input of `j` is made by `i`, or by a unit before `j`
-/// that needs `i`.
-fn needs(units: &[crate::plan::PlanUnit], j: usize, i: usize) -> bool {
-    let mut stack = vec![j];
-    let mut seen = HashSet::new();
-    while let Some(k) = stack.pop() {
-        if !seen.insert(k) {
-            continue;
-        }
-        let Some(unit) = units.get(k) else { continue };
-        for n in &unit.inputs {
-            for (m, earlier) in units.iter().enumerate().take(k) {
-                if earlier.outputs.contains(n) && !earlier.inputs.contains(n) {
-                    if m == i {
-                        return true;
-                    }
-                    stack.push(m);
-                }
-            }
-        }
-    }
-    false
+/// A node the kitchen has at the start even when some unit makes it again (an empty bowl, a lid put
+/// back, a whole onion): only starting states, not inside anything, containing nothing.
+pub fn available_at_start(n: &PlanNode) -> bool {
+    n.ingredients.is_empty()
+        && n.container.is_none()
+        && n.states.iter().all(|s| START_STATES.contains(&s.as_str()))
+}
+
+/// Outputs a unit makes: those that are not also among its inputs (utensils pass through).
+fn produced_keys(u: &PlanUnit) -> HashSet<NodeKey> {
+    let inputs: HashSet<NodeKey> = u.inputs.iter().map(node_key).collect();
+    u.outputs
+        .iter()
+        .map(node_key)
+        .filter(|k| !inputs.contains(k))
+        .collect()
+}
+
+fn unit_key(u: &PlanUnit) -> (String, Vec<NodeKey>, Vec<NodeKey>) {
+    let mut ins: Vec<NodeKey> = u.inputs.iter().map(node_key).collect();
+    ins.sort();
+    let mut outs: Vec<NodeKey> = u.outputs.iter().map(node_key).collect();
+    outs.sort();
+    (u.motion.clone(), ins, outs)
+}
+
+fn is_goal(n: &PlanNode, plan: &Plan) -> bool {
+    let mut a = n.states.clone();
+    a.sort();
+    let mut b = plan.goal.states.clone();
+    b.sort();
+    n.label == plan.goal.label && a == b
 }
 
 /// What is wrong with a plan's structure; empty when nothing is.
 pub fn violations(plan: &Plan) -> Vec<String> {
-    let mut out = Vec::new();
     let units = &plan.units;
-    // units that make a node (not merely pass it on)
-    let makes =
-        |i: usize, n: &PlanNode| units[i].outputs.contains(n) && !units[i].inputs.contains(n);
-    let mut seen = HashSet::new();
+    let produced: Vec<HashSet<NodeKey>> = units.iter().map(produced_keys).collect();
+    let mut first_producer: HashMap<&NodeKey, usize> = HashMap::new();
+    for (i, keys) in produced.iter().enumerate() {
+        for k in keys {
+            first_producer.entry(k).or_insert(i);
+        }
+    }
+    let mut last_use: HashMap<NodeKey, usize> = HashMap::new();
     for (i, u) in units.iter().enumerate() {
-        let mut key_in = u.inputs.clone();
-        key_in.sort();
-        let mut key_out = u.outputs.clone();
-        key_out.sort();
-        if !seen.insert((key_in, u.motion.clone(), key_out)) {
-            out.push(format!("unit {} ({}) appears twice", i + 1, u.motion));
+        for n in &u.inputs {
+            last_use.insert(node_key(n), i);
+        }
+    }
+    let mut out = Vec::new();
+    let mut seen = HashSet::new();
+    let mut goal_made = false;
+    for (i, u) in units.iter().enumerate() {
+        if !seen.insert(unit_key(u)) {
+            out.push(format!("unit {i} ({}) appears twice", u.motion));
         }
         for n in &u.inputs {
-            if is_raw(n) {
-                continue;
-            }
-            let makers: Vec<usize> = (0..units.len()).filter(|&j| makes(j, n)).collect();
-            // a state the recipe returns to (a lid put back) is there from the start: every unit
-            // making it again needs this one first
-            let returns = makers.iter().all(|&j| j > i && needs(units, j, i));
-            if !makers.is_empty() && !makers.iter().any(|&j| j < i) && !returns {
+            let first = first_producer.get(&node_key(n)).copied();
+            if first.is_some_and(|f| f >= i) && !available_at_start(n) {
                 out.push(format!(
-                    "unit {} ({}) needs '{}' before any unit makes it",
-                    i + 1,
+                    "unit {i} ({}) takes '{}' ({}) made only by unit {}",
                     u.motion,
-                    n.label
+                    n.label,
+                    n.states.join(", "),
+                    first.unwrap_or(i)
                 ));
             }
         }
-        let is_goal = |n: &PlanNode| n.label == plan.goal.label && n.states == plan.goal.states;
-        let used = u
-            .outputs
+        let makes_goal = u.outputs.iter().any(|n| is_goal(n, plan));
+        goal_made |= makes_goal;
+        let used = produced[i]
             .iter()
-            .filter(|n| !u.inputs.contains(n))
-            .any(|n| is_goal(n) || units[i + 1..].iter().any(|v| v.inputs.contains(n)));
-        if !used {
+            .any(|k| last_use.get(k).is_some_and(|&l| l > i));
+        if !used && !makes_goal {
             out.push(format!(
-                "unit {} ({}) makes nothing a later unit uses",
-                i + 1,
+                "unit {i} ({}) makes nothing a later unit uses",
                 u.motion
             ));
         }
     }
-    if let Some(last) = units.last() {
-        if !last
-            .outputs
-            .iter()
-            .any(|n| n.label == plan.goal.label && n.states == plan.goal.states)
-        {
-            out.push("the last unit does not make the goal".to_string());
-        }
-    } else {
-        out.push("the plan has no units".to_string());
+    if !goal_made {
+        out.push("no unit makes the goal".to_string());
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn node(label: &str, states: &[&str]) -> PlanNode {
+        PlanNode {
+            label: label.into(),
+            states: states.iter().map(|s| s.to_string()).collect(),
+            ingredients: Vec::new(),
+            container: None,
+        }
+    }
+
+    fn unit(inputs: Vec<PlanNode>, motion: &str, outputs: Vec<PlanNode>) -> PlanUnit {
+        PlanUnit {
+            inputs,
+            motion: motion.into(),
+            outputs,
+            origin: crate::plan::Origin::Reference,
+            sources: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn kitchen_start_nodes_may_be_made_again_later() {
+        assert!(available_at_start(&node("bowl", &["empty"])));
+        assert!(available_at_start(&node("knife", &[])));
+        assert!(!available_at_start(&node("onion", &["chopped"])));
+        let mut in_bowl = node("onion", &["whole"]);
+        in_bowl.container = Some("bowl".into());
+        assert!(!available_at_start(&in_bowl));
+    }
+
+    fn plan_of(units: Vec<PlanUnit>, goal: &PlanNode) -> Plan {
+        Plan {
+            format_version: crate::plan::FORMAT_VERSION,
+            query: crate::plan::Query {
+                id: None,
+                dish_type: String::new(),
+                ingredients: Vec::new(),
+            },
+            dish_class: None,
+            notes: Vec::new(),
+            modified: true,
+            goal: crate::plan::GoalInfo {
+                label: goal.label.clone(),
+                states: goal.states.clone(),
+                ingredients: Vec::new(),
+                subgraph: String::new(),
+                score: 0.0,
+                dish_class: None,
+            },
+            units,
+            ingredients: Vec::new(),
+            removed: Vec::new(),
+            progress_lines: Vec::new(),
+            steps: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn a_unit_before_the_maker_of_its_input_is_reported() {
+        let fried = node("onion", &["fried"]);
+        let units = vec![
+            unit(vec![node("onion", &["sliced"])], "fry", vec![fried.clone()]),
+            unit(
+                vec![node("onion", &["whole"])],
+                "slice",
+                vec![node("onion", &["sliced"])],
+            ),
+        ];
+        let v = violations(&plan_of(units.clone(), &fried));
+        // the fry takes what the slice makes later, and the slice makes nothing a later unit uses
+        assert_eq!(v.len(), 2, "{v:?}");
+        let ordered = vec![units[1].clone(), units[0].clone()];
+        assert!(violations(&plan_of(ordered, &fried)).is_empty());
+    }
+
+    #[test]
+    fn a_unit_listed_twice_is_reported() {
+        let sliced = node("onion", &["sliced"]);
+        let u = unit(
+            vec![node("onion", &["whole"])],
+            "slice",
+            vec![sliced.clone()],
+        );
+        let v = violations(&plan_of(vec![u.clone(), u], &sliced));
+        assert!(v.iter().any(|x| x.contains("twice")), "{v:?}");
+    }
 }

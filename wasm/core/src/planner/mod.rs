@@ -8,6 +8,7 @@ mod index;
 mod modify;
 mod output;
 mod retrieve;
+mod schedule;
 pub mod states;
 mod tree;
 
@@ -84,9 +85,14 @@ pub fn plan(
         overrides: &overrides,
         goal_subgraph: &chosen.goal.subgraph,
     };
-    let (outcomes, removed) = modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
+    let (mut outcomes, removed) =
+        modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
     tree.normalize();
     tree.drop_unneeded();
+    let order = schedule::schedule(&mut tree);
+    if request.modify {
+        schedule::confirm_planned(&tree, &order, &mut outcomes);
+    }
     let dish_class = class.and_then(|c| {
         dish_class_name(c).map(|name| DishClassRef {
             index: c,
@@ -96,6 +102,7 @@ pub fn plan(
     Ok(output::build(output::Parts {
         kb,
         tree: &tree,
+        order: &order,
         query,
         dish_class,
         notes,

@@ -15,6 +15,8 @@ use std::collections::HashSet;
 pub(crate) struct Parts<'a> {
     pub kb: &'a KnowledgeBase,
     pub tree: &'a Tree,
+    /// The units in execution order (`schedule::schedule`).
+    pub order: &'a [TUnitId],
     pub query: Query,
     pub dish_class: Option<DishClassRef>,
     pub notes: Vec<String>,
@@ -37,7 +39,7 @@ pub(crate) fn plan_node(n: &ObjectNode) -> PlanNode {
 
 pub(crate) fn build(p: Parts) -> Plan {
     let tree = p.tree;
-    let order = tree.order();
+    let order = p.order;
     let units: Vec<PlanUnit> = order
         .iter()
         .map(|&u| {
@@ -61,13 +63,23 @@ pub(crate) fn build(p: Parts) -> Plan {
         .collect();
     let goal_node = &tree.slots[tree.goal].node;
     let steps = order.iter().map(|&u| sentence(tree, u)).collect();
+    let made: HashSet<SlotId> = order
+        .iter()
+        .flat_map(|&u| {
+            let unit = &tree.units[u];
+            unit.outputs
+                .iter()
+                .map(|o| o.0)
+                .filter(|o| !unit.inputs.iter().any(|i| i.0 == *o))
+        })
+        .collect();
     let mut progress_lines = Vec::new();
     let mut done: HashSet<String> = HashSet::new();
     for o in &p.outcomes {
         if o.status != Status::Planned || !done.insert(o.object.clone()) {
             continue;
         }
-        if let Some(line) = progress_line(tree, &order, &o.object) {
+        if let Some(line) = progress_line(tree, order, &made, &o.object) {
             progress_lines.push(line);
         }
     }
@@ -118,7 +130,12 @@ fn physical(n: &ObjectNode) -> String {
 }
 
 /// The ingredient's states and places from its starting node, the motions between them, and the dish.
-fn progress_line(tree: &Tree, order: &[TUnitId], label: &str) -> Option<ProgressLine> {
+fn progress_line(
+    tree: &Tree,
+    order: &[TUnitId],
+    made: &HashSet<SlotId>,
+    label: &str,
+) -> Option<ProgressLine> {
     let slots = tree.slots_with_label(label);
     let first_use = |x: SlotId| {
         order
@@ -129,7 +146,7 @@ fn progress_line(tree: &Tree, order: &[TUnitId], label: &str) -> Option<Progress
     let start = slots
         .iter()
         .copied()
-        .filter(|&x| !tree.produced(x))
+        .filter(|x| !made.contains(x))
         .min_by_key(|&x| (first_use(x), x))
         .or_else(|| slots.first().copied())?;
     let mut states = vec![ProgressState {
