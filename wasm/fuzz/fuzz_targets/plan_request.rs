@@ -25,7 +25,12 @@ fn world() -> &'static World {
             .unwrap()
             .map(|e| e.unwrap().path())
             .filter(|p| p.extension().is_some_and(|x| x == "txt"))
-            .map(|p| (p.file_name().unwrap().to_string_lossy().into_owned(), std::fs::read(&p).unwrap()))
+            .map(|p| {
+                (
+                    p.file_name().unwrap().to_string_lossy().into_owned(),
+                    std::fs::read(&p).unwrap(),
+                )
+            })
             .collect();
         files.sort();
         let kb = load(&files).unwrap();
@@ -49,7 +54,11 @@ fn check_plan(plan: &Plan) {
         .iter()
         .map(|u| {
             let ins: HashSet<String> = u.inputs.iter().map(key).collect();
-            u.outputs.iter().map(key).filter(|n| !ins.contains(n)).collect()
+            u.outputs
+                .iter()
+                .map(key)
+                .filter(|n| !ins.contains(n))
+                .collect()
         })
         .collect();
     let mut seen = HashSet::new();
@@ -58,11 +67,19 @@ fn check_plan(plan: &Plan) {
         ins.sort();
         let mut outs: Vec<String> = u.outputs.iter().map(key).collect();
         outs.sort();
-        assert!(seen.insert((ins, u.motion.clone(), outs)), "unit {} twice", i + 1);
+        assert!(
+            seen.insert((ins, u.motion.clone(), outs)),
+            "unit {} twice",
+            i + 1
+        );
         for n in u.inputs.iter().map(key) {
             let later = made[i + 1..].iter().any(|m| m.contains(&n));
             let earlier = made[..i].iter().any(|m| m.contains(&n));
-            assert!(!later || earlier, "unit {} uses '{n}' made only later", i + 1);
+            assert!(
+                !later || earlier,
+                "unit {} uses '{n}' made only later",
+                i + 1
+            );
         }
     }
     // the exports render without panicking
@@ -74,18 +91,29 @@ fn check_plan(plan: &Plan) {
 
 fuzz_target!(|data: &[u8]| {
     // JavaScript strings reach the decoder as UTF-8; other bytes cannot come from the app
-    let Ok(json) = std::str::from_utf8(data) else { return };
+    let Ok(json) = std::str::from_utf8(data) else {
+        return;
+    };
     match decode::plan_request(json) {
         Err(e) => {
-            assert!(matches!(e.code, ErrorCode::BadQuery | ErrorCode::TooLarge), "{e}");
-            assert!(e.code == ErrorCode::TooLarge || e.line.is_some_and(|l| l >= 1), "{e}");
+            assert!(
+                matches!(e.code, ErrorCode::BadQuery | ErrorCode::TooLarge),
+                "{e}"
+            );
+            assert!(
+                e.code == ErrorCode::TooLarge || e.line.is_some_and(|l| l >= 1),
+                "{e}"
+            );
         }
         Ok(request) => {
             let w = world();
             match foon_core::plan(&w.kb, &w.index, &w.sim, &request) {
                 Ok(plan) => check_plan(&plan),
                 Err(e) => assert!(
-                    matches!(e.code, ErrorCode::BadQuery | ErrorCode::NoGoal | ErrorCode::TooLarge),
+                    matches!(
+                        e.code,
+                        ErrorCode::BadQuery | ErrorCode::NoGoal | ErrorCode::TooLarge
+                    ),
                     "{e}"
                 ),
             }
