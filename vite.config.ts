@@ -1,5 +1,6 @@
 import { fileURLToPath } from "node:url";
 import { defineConfig } from "vitest/config";
+import { serviceWorkerManifest } from "./src/worker/sw-build";
 
 const here = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
 
@@ -9,12 +10,24 @@ export default defineConfig({
   root: here("src"),
   publicDir: here("public"),
   base: "./",
+  plugins: [serviceWorkerManifest()],
   build: {
     target: "es2022",
     outDir: here("dist"),
     emptyOutDir: true,
     assetsInlineLimit: 0, // keep the wasm, knowledge base and embedding table as separate cacheable files
-    rollupOptions: { input: { main: here("src/index.html"), workbench: here("src/workbench.html") } },
+    rollupOptions: {
+      input: {
+        main: here("src/index.html"),
+        embed: here("src/embed.html"),
+        workbench: here("src/workbench.html"),
+        // the service worker keeps a fixed name at the top (its scope is the folder it is served from)
+        sw: here("src/worker/service-worker.ts"),
+      },
+      output: {
+        entryFileNames: (chunk) => (chunk.name === "sw" ? "sw.js" : "assets/[name]-[hash].js"),
+      },
+    },
   },
   worker: { format: "es" },
   server: { host: "127.0.0.1" },

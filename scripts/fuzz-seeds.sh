@@ -7,6 +7,14 @@ reader=wasm/fuzz/corpus/foon_reader
 mkdir -p "$reader"
 cp -n public/kb/starter/*.txt wasm/fuzz/seeds/foon_reader/* "$reader"/
 find tests/data/bad-inputs -type f -size -16k ! -name '*.tsv' ! -name '*.md' ! -name '.*' -exec cp -n {} "$reader"/ \;
+# plan requests: the public recipe queries of ../shared (read there, never committed)
+shared="${FOON_SHARED:-../shared}/recipes/dev"
+if [ -d "$shared" ]; then
+  mkdir -p wasm/fuzz/corpus/plan_request
+  for dish in "$shared"/*/; do find "$dish" -name "*.json" | sort | head -n 40; done | while read -r q; do
+    printf '{"query": %s}' "$(cat "$q")" > "wasm/fuzz/corpus/plan_request/$(basename "$q")"
+  done
+fi
 for dir in wasm/fuzz/seeds/*/; do
   target=$(basename "$dir")
   mkdir -p "wasm/fuzz/corpus/$target"

@@ -1,57 +1,52 @@
-// Demo page entry: loads the planner and the bundled knowledge base, then shows its statistics.
+// Demo page entry: the full planner app, the query in the URL, the theme picker, and the service worker
+// that makes the page work offline after the first visit.
 
-import { FoonPlanner, initPlanner, toPlannerError } from "./planner/index";
-import type { Stats } from "./planner/types";
+import { ALL_VIEWS, createPlannerApp } from "./app/app";
+import { EXAMPLES, queryFromSearch, queryToSearch } from "./app/query";
+import { bindThemePicker } from "./app/theme";
+import { syncQueryWithUrl } from "./app/url-sync";
+import { WorkerPlanner } from "./worker/client";
+import "./app/style.css";
+import "./app/page.css";
 
-const KB_URL = new URL("kb/default.foon", document.baseURI);
+const KB_URL = new URL("kb/default.foon", document.baseURI).href;
+const EMBEDDINGS_URL = new URL("data/food-embeddings.bin", document.baseURI).href;
 
-function renderStats(stats: Stats): void {
-  const body = document.querySelector<HTMLTableSectionElement>("#stats tbody");
-  if (body === null) return;
-  const rows: [string, string][] = [
-    ["Recipes (subgraphs)", String(stats.subgraphs)],
-    ["Functional units before merge", String(stats.units_before_merge)],
-    ["Functional units", String(stats.units)],
-    ["Object nodes", String(stats.object_nodes)],
-    ["Labels", String(stats.labels)],
-    ["States", String(stats.states)],
-    ["Motions", String(stats.motions)],
-    ["Goal nodes", String(stats.goal_nodes)],
-    ...Object.entries(stats.recipes_per_class).map(([cls, n]): [string, string] => [`Recipes: ${cls}`, String(n)]),
-  ];
-  body.replaceChildren(
-    ...rows.map(([name, value]) => {
-      const tr = document.createElement("tr");
-      const th = document.createElement("th");
-      th.scope = "row";
-      th.textContent = name;
-      const td = document.createElement("td");
-      td.textContent = value;
-      tr.append(th, td);
-      return tr;
-    }),
-  );
+function start(): void {
+  const host = document.getElementById("app");
+  const themePicker = document.getElementById("theme");
+  if (host === null || !(themePicker instanceof HTMLSelectElement)) return;
+  const fromUrl = queryFromSearch(location.search);
+  const initial = fromUrl ?? EXAMPLES[0]!.query;
+  // the URL always shows the query, the first example's included (so "back" to it shows it again)
+  if (fromUrl === null) history.replaceState(null, "", `${location.pathname}${queryToSearch(initial)}${location.hash}`);
+  let firstPlan = true;
+  const app = createPlannerApp(host, {
+    planner: new WorkerPlanner(),
+    kbUrl: KB_URL,
+    embeddingsUrl: EMBEDDINGS_URL,
+    views: ALL_VIEWS,
+    query: initial,
+    events: {
+      plan: () => {
+        if (!firstPlan) return;
+        firstPlan = false;
+        // read by the end-to-end tests and the closing note: navigation start -> first plan shown
+        performance.mark("foon:first-plan");
+      },
+    },
+  });
+  syncQueryWithUrl(app.store, (q) => app.setQuery(q));
+  bindThemePicker(themePicker, document.documentElement, () => app.restyle());
 }
 
-async function start(): Promise<void> {
-  const status = document.getElementById("kb-status");
-  try {
-    await initPlanner();
-    const response = await fetch(KB_URL);
-    if (!response.ok) throw new Error(`${KB_URL.pathname}: HTTP ${response.status}`);
-    const planner = FoonPlanner.load([{ name: "default.foon", bytes: new Uint8Array(await response.arrayBuffer()) }]);
-    const stats = planner.stats();
-    renderStats(stats);
-    if (status !== null) {
-      status.textContent = `Knowledge base loaded: ${stats.subgraphs} recipes, ${stats.units} functional units.`;
-      status.dataset.state = "ready";
-    }
-  } catch (e) {
-    if (status !== null) {
-      status.textContent = `Could not load the planner: ${toPlannerError(e).message}`;
-      status.dataset.state = "error";
-    }
-  }
+function registerServiceWorker(): void {
+  if (!import.meta.env.PROD || !("serviceWorker" in navigator)) return;
+  // relative to the page, so the app works from any static sub-path
+  navigator.serviceWorker.register(new URL("sw.js", document.baseURI), { scope: "./" }).catch((e: unknown) => {
+    console.warn("service worker not registered:", e);
+  });
 }
 
-void start();
+start();
+registerServiceWorker();

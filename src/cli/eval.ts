@@ -2,7 +2,7 @@
 // plans every query, prints the metrics table per dish type and overall, writes the results as JSON
 // and CSV, and fails when a structural invariant breaks (duplicated, out-of-order or dead units).
 
-import { mkdirSync, readdirSync, readFileSync, statSync, writeFileSync } from "node:fs";
+import { mkdirSync, writeFileSync } from "node:fs";
 import { join, relative, resolve } from "node:path";
 import { performance } from "node:perf_hooks";
 import { parseArgs } from "node:util";
@@ -11,9 +11,9 @@ import { loadPlannerFromDisk, ROOT, STARTER_KB_DIR } from "../planner/node";
 import { metricsTable } from "../eval/aggregate";
 import { brokenInvariants, formatTable, recipesCsv, summaryCsv, type EvalResults } from "../eval/format";
 import { planFunction } from "../eval/planner-adapter";
-import { parseQuery, sortQueries } from "../eval/queries";
 import { runBatch } from "../eval/runner";
-import type { LoadedQuery, Variant } from "../eval/types";
+import { readQueries } from "./queries";
+import type { Variant } from "../eval/types";
 
 export const EVAL_USAGE = `usage: npm run eval -- --queries <dir> [--kb <dir-or-file>] [--exact] [--no-modify | --both] [--out <dir>] [--write-plans] [--quiet]
 
@@ -27,18 +27,6 @@ export const EVAL_USAGE = `usage: npm run eval -- --queries <dir> [--kb <dir-or-
   --quiet           no progress on stderr
 Exits with 1 when a structural invariant breaks (duplicated units, units before their inputs, dead units).
 `;
-
-/** Every `.json` file under a folder (sorted), or the file itself. */
-export function readQueryFolder(path: string): LoadedQuery[] {
-  const files: string[] = [];
-  const walk = (p: string): void => {
-    if (statSync(p).isDirectory()) for (const name of readdirSync(p).sort()) walk(join(p, name));
-    else if (p.endsWith(".json")) files.push(p);
-  };
-  walk(path);
-  if (files.length === 0) throw new Error(`${path}: no .json query files`);
-  return sortQueries(files.map((f) => parseQuery(relative(path, f) || f, readFileSync(f, "utf8"))));
-}
 
 export function evalCommand(args: string[]): void {
   const { values } = parseArgs({
@@ -66,7 +54,7 @@ export function evalCommand(args: string[]): void {
   const kbPath = resolve(values.kb ?? STARTER_KB_DIR);
   const out = resolve(values.out ?? join(ROOT, "test-results/eval"));
 
-  const queries = readQueryFolder(resolve(values.queries));
+  const queries = readQueries(resolve(values.queries));
   const planner = loadPlannerFromDisk(kbPath, { exact: values.exact });
   for (const w of planner.warnings()) if (!values.quiet) console.error(`warning: ${describeError(w)}`);
   const plan = planFunction(planner);
@@ -99,5 +87,8 @@ export function evalCommand(args: string[]): void {
   process.stdout.write(`results: ${join(out, name)}.json, -summary.csv, -recipes.csv\n`);
 
   const broken = brokenInvariants(table);
-  if (broken.length > 0) throw new Error(`structural invariants broken:\n  ${broken.join("\n  ")}`);
+  if (broken.length > 0) {
+    const details = records.flatMap((r) => (r.ok ? r.metrics.violations.map((v) => `${r.variant} ${r.recipe.type}/${r.recipe.id}: ${v}`) : []));
+    throw new Error(`structural invariants broken:\n  ${broken.join("\n  ")}\n${details.map((d) => `    ${d}`).join("\n")}`);
+  }
 }

@@ -105,7 +105,7 @@ const commands: Record<string, (args: string[]) => void> = {
         result = { format_version: 1, query: q.query, error: e.toJSON() };
       }
       times.push(performance.now() - started);
-      const out = join(values.out as string, q.path);
+      const out = join(values.out as string, q.source);
       mkdirSync(dirname(out), { recursive: true });
       writeFileSync(out, `${JSON.stringify(result, null, 2)}\n`);
       const failed = Object.values(errors).reduce((a, b) => a + b, 0);

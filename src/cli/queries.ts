@@ -1,50 +1,29 @@
-// Recipe-query files on disk (the ../shared/recipes shape: <dir>/<type>/<id>.json), for batch, eval and bench.
+// Recipe-query files on disk (the ../shared/recipes shape: <dir>/<type>/<id>.json), for batch, eval and
+// bench. Validation is the workbench's own (src/eval/queries.ts), so CLI and browser accept the same files.
 
 import { readFileSync, readdirSync, statSync } from "node:fs";
-import { join, relative } from "node:path";
+import { basename, join, relative } from "node:path";
+import { parseQuery, sortQueries } from "../eval/queries";
+import type { LoadedQuery } from "../eval/types";
 import type { Query } from "../planner/types";
 
-export interface QueryFile {
-  /** Path relative to the queries folder, e.g. "salad/004628ff8d.json": batch output mirrors it. */
-  path: string;
-  query: Query;
-}
-
-function isQuery(value: unknown): value is Query {
-  if (typeof value !== "object" || value === null) return false;
-  const v = value as Record<string, unknown>;
-  return (
-    typeof v.type === "string" &&
-    Array.isArray(v.ingredients) &&
-    v.ingredients.every(
-      (i: unknown) => typeof i === "object" && i !== null && typeof (i as Record<string, unknown>).object === "string",
-    )
-  );
-}
-
-/** Reads one query file; a file that is not a query is an error naming the file. */
+/** Reads one query file; a file that is not a query is an error naming the file and what is wrong. */
 export function readQuery(file: string): Query {
-  let value: unknown;
-  try {
-    value = JSON.parse(readFileSync(file, "utf8"));
-  } catch (e) {
-    throw new Error(`${file}: not valid JSON (${e instanceof Error ? e.message : String(e)})`);
-  }
-  if (!isQuery(value)) throw new Error(`${file}: not a recipe query ({"type": string, "ingredients": [{"object", "state"}]})`);
-  return value;
+  return parseQuery(file, readFileSync(file, "utf8")).query;
 }
 
-/** Every `.json` query below a folder, sorted by path (or the single file given). */
-export function readQueries(dir: string): QueryFile[] {
-  if (!statSync(dir).isDirectory()) return [{ path: relative(join(dir, ".."), dir), query: readQuery(dir) }];
-  const out: QueryFile[] = [];
-  const walk = (folder: string): void => {
-    for (const name of readdirSync(folder).sort()) {
-      const full = join(folder, name);
-      if (statSync(full).isDirectory()) walk(full);
-      else if (name.endsWith(".json")) out.push({ path: relative(dir, full), query: readQuery(full) });
-    }
+/**
+ * Every `.json` query below a folder (or the single file given), ordered by dish type and id. `source` is
+ * the path relative to the folder, e.g. "salad/004628ff8d.json": batch output mirrors it.
+ */
+export function readQueries(path: string): LoadedQuery[] {
+  if (!statSync(path).isDirectory()) return [parseQuery(basename(path), readFileSync(path, "utf8"))];
+  const files: string[] = [];
+  const walk = (p: string): void => {
+    if (statSync(p).isDirectory()) for (const name of readdirSync(p).sort()) walk(join(p, name));
+    else if (p.endsWith(".json")) files.push(p);
   };
-  walk(dir);
-  return out;
+  walk(path);
+  if (files.length === 0) throw new Error(`${path}: no .json query files`);
+  return sortQueries(files.map((f) => parseQuery(relative(path, f), readFileSync(f, "utf8"))));
 }

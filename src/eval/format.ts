@@ -85,7 +85,7 @@ export function summaryCsv(rows: readonly MetricsRow[]): string {
 const RECIPE_COLUMNS = [
   "type", "id", "variant", "ok", "error_code", "error", "ms", "units", "duplicate_units", "units_before_inputs", "dead_units",
   "goal_produced", "query_objects", "objects_in_tree", "query_pairs", "pairs_in_tree", "extra_ingredients", "case1", "case2",
-  "case3", "case4", "case_none", "substitutions", "low_confidence", "unplannable",
+  "case3", "case4", "case_none", "substitutions", "low_confidence", "unplannable", "violations",
 ] as const;
 
 export function recipesCsv(records: readonly EvalRecord[]): string {
@@ -98,7 +98,7 @@ export function recipesCsv(records: readonly EvalRecord[]): string {
       return [
         ...head, null, null, r.ms, m.units, m.duplicate_units, m.units_before_inputs, m.dead_units, m.goal_produced,
         m.query_objects, m.objects_in_tree, m.query_pairs, m.pairs_in_tree, m.extra_ingredients.join(";"), m.cases.c1,
-        m.cases.c2, m.cases.c3, m.cases.c4, m.cases.none, m.substitutions, m.low_confidence, m.unplannable,
+        m.cases.c2, m.cases.c3, m.cases.c4, m.cases.none, m.substitutions, m.low_confidence, m.unplannable, m.violations.join(" | "),
       ];
     }),
   );

@@ -55,27 +55,70 @@ export function structureMetrics(units: readonly PlanUnit[], goal: Plan["goal"])
     for (const key of keys) lastUse.set(key, i);
   });
 
-  const seen = new Set<string>();
+  /** Every unit index that produces each node. */
+  const producers = new Map<string, number[]>();
+  produced.forEach((keys, i) => {
+    for (const key of keys) producers.set(key, [...(producers.get(key) ?? []), i]);
+  });
+  /** Whether unit `j` needs unit `i` first: it uses something `i` makes, directly or through earlier units. */
+  const dependsOn = (j: number, i: number): boolean => {
+    const stack = [j];
+    const visited = new Set<number>();
+    while (stack.length > 0) {
+      const k = stack.pop()!;
+      if (visited.has(k)) continue;
+      visited.add(k);
+      for (const key of inputKeys[k]!) {
+        for (const m of producers.get(key) ?? []) {
+          if (m >= k) continue;
+          if (m === i) return true;
+          stack.push(m);
+        }
+      }
+    }
+    return false;
+  };
+
+  const seen = new Map<string, number>();
+  const violations: string[] = [];
   let duplicates = 0;
   let beforeInputs = 0;
   let dead = 0;
   let goalProduced = false;
   units.forEach((unit, i) => {
+    const name = `unit ${i + 1} (${unit.motion})`;
     const key = unitKey(unit);
-    if (seen.has(key)) duplicates += 1;
-    seen.add(key);
+    const twin = seen.get(key);
+    if (twin !== undefined) {
+      duplicates += 1;
+      violations.push(`${name} repeats unit ${twin + 1}`);
+    } else seen.set(key, i);
 
-    const early = unit.inputs.some((node) => {
-      const first = firstProducer.get(nodeKey(node));
-      return first !== undefined && first >= i && !availableAtStart(node);
+    const early = unit.inputs.filter((node) => {
+      const key = nodeKey(node);
+      const first = firstProducer.get(key);
+      if (first === undefined || first < i || availableAtStart(node)) return false;
+      // a state the recipe returns to (a lid put back, butter melted again in the pot) was there from
+      // the start: every unit making it again needs this one first, so no order could do better
+      return !(producers.get(key) ?? []).every((j) => dependsOn(j, i));
     });
-    if (early) beforeInputs += 1;
+    if (early.length > 0) {
+      beforeInputs += 1;
+      for (const node of early) violations.push(`${name} needs ${describeNode(node)}, first made by unit ${firstProducer.get(nodeKey(node))! + 1}`);
+    }
 
     const outputsGoal = unit.outputs.some((node) => isGoal(node, goal));
     if (outputsGoal) goalProduced = true;
     const used = [...produced[i]!].some((k) => (lastUse.get(k) ?? -1) > i);
-    if (!used && !outputsGoal) dead += 1;
+    if (!used && !outputsGoal) {
+      dead += 1;
+      violations.push(`${name} makes nothing a later unit uses`);
+    }
   });
 
-  return { units: units.length, duplicate_units: duplicates, units_before_inputs: beforeInputs, dead_units: dead, goal_produced: goalProduced };
+  return { units: units.length, duplicate_units: duplicates, units_before_inputs: beforeInputs, dead_units: dead, goal_produced: goalProduced, violations };
+}
+
+export function describeNode(node: PlanNode): string {
+  return node.states.length === 0 ? node.label : `${node.label} [${node.states.join("; ")}]`;
 }

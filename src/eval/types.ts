@@ -19,6 +19,8 @@ export interface StructureMetrics {
   dead_units: number;
   /** Whether some unit outputs the goal (label and states of `plan.goal`). */
   goal_produced: boolean;
+  /** What breaks the three invariants, one sentence each ("unit 3 (pour) needs …, first made by unit 7"). */
+  violations: string[];
 }
 
 export interface CoverageMetrics {

@@ -2,60 +2,14 @@
 // and errors as `PlannerError` with a stable code. Views and the CLI use only this module.
 
 import initWasmModule, { initSync, KnowledgeBaseLoader, type Planner as WasmPlanner } from "../../wasm/pkg/foon_wasm.js";
-import type { ErrorCode, ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanRequest, SimilarResult, Stats } from "./types";
+import type { ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanRequest, SimilarResult, Stats, Vocabulary } from "./types";
+import { PlannerError, toPlannerError } from "./errors";
+import { scanVocabulary } from "./vocabulary";
+
+// The error class lives in errors.ts so that the page can use it without the WASM glue (the worker owns it).
+export { describeError, PlannerError, toPlannerError } from "./errors";
 
 export type * from "./types";
-
-/** An error from the planner or the loader, with a stable `code` and, for file errors, a place. */
-export class PlannerError extends Error implements FoonErrorData {
-  readonly code: ErrorCode;
-  readonly file?: string;
-  readonly line?: number;
-  readonly column?: number;
-  /** The reason alone, without the place prefix of `message`. */
-  readonly reason: string;
-
-  constructor(data: FoonErrorData & { reason?: string }) {
-    super(data.message);
-    this.name = "PlannerError";
-    this.code = data.code;
-    this.file = data.file;
-    this.line = data.line;
-    this.column = data.column;
-    this.reason = data.reason ?? data.message;
-  }
-
-  toJSON(): FoonErrorData {
-    return { code: this.code, message: this.message, file: this.file, line: this.line, column: this.column };
-  }
-}
-
-/** "file:line:column: reason" for an error or warning given as data. */
-export function describeError(e: FoonErrorData): string {
-  const place = [e.file, e.line, e.column].filter((part) => part !== undefined).join(":");
-  return place === "" ? e.message : `${place}: ${e.message}`;
-}
-
-function isRecord(value: unknown): value is Record<string, unknown> {
-  return typeof value === "object" && value !== null;
-}
-
-/** Turns whatever the WASM layer threw into a PlannerError. */
-export function toPlannerError(thrown: unknown): PlannerError {
-  if (thrown instanceof PlannerError) return thrown;
-  if (isRecord(thrown) && typeof thrown.code === "string" && typeof thrown.message === "string") {
-    return new PlannerError({
-      code: thrown.code as ErrorCode,
-      message: thrown.message,
-      reason: typeof thrown.reason === "string" ? thrown.reason : undefined,
-      file: typeof thrown.file === "string" ? thrown.file : undefined,
-      line: typeof thrown.line === "number" ? thrown.line : undefined,
-      column: typeof thrown.column === "number" ? thrown.column : undefined,
-    });
-  }
-  const message = thrown instanceof Error ? thrown.message : String(thrown);
-  return new PlannerError({ code: "internal", message: `planner failure: ${message}` });
-}
 
 let ready: Promise<void> | null = null;
 let initialised = false;
@@ -102,9 +56,28 @@ function parseJson<T>(call: () => string): T {
   return JSON.parse(text) as T;
 }
 
+/** JSON text of a request; a value JSON cannot represent (undefined, a cycle, a BigInt) is a bad query. */
+function requestJson(value: unknown, what: string): string {
+  let text: string | undefined;
+  try {
+    text = JSON.stringify(value);
+  } catch (thrown) {
+    const reason = `${what}: ${thrown instanceof Error ? thrown.message : String(thrown)}`;
+    throw new PlannerError({ code: "bad_query", message: `${reason} (bad_query)`, reason });
+  }
+  if (text === undefined) {
+    const reason = `${what}: not a JSON value`;
+    throw new PlannerError({ code: "bad_query", message: `${reason} (bad_query)`, reason });
+  }
+  return text;
+}
+
 /** A knowledge base loaded into the planner. Free it with `free()` when replaced. */
 export class FoonPlanner {
-  private constructor(private readonly handle: WasmPlanner) {}
+  private constructor(
+    private readonly handle: WasmPlanner,
+    private readonly vocab: Vocabulary,
+  ) {}
 
   /**
    * Parses and merges knowledge-base files; a malformed file throws a PlannerError naming file and line.
@@ -121,10 +94,16 @@ export class FoonPlanner {
       throw toPlannerError(thrown);
     }
     try {
-      return new FoonPlanner(loader.finish(embeddings)); // finish() consumes the loader, even when it fails
+      const handle = loader.finish(embeddings); // finish() consumes the loader, even when it fails
+      return new FoonPlanner(handle, scanVocabulary(files));
     } catch (thrown) {
       throw toPlannerError(thrown);
     }
+  }
+
+  /** Dish classes with their recipes, labels and states of the loaded files (for the query editor). */
+  vocabulary(): Vocabulary {
+    return this.vocab;
   }
 
   stats(): Stats {
@@ -133,13 +112,15 @@ export class FoonPlanner {
 
   /** Plans a query: reference goal, reference task tree, modification (unless `modify: false`). */
   plan(request: PlanRequest): Plan {
-    return parseJson<Plan>(() => this.handle.plan(JSON.stringify(request)));
+    const json = requestJson(request, "plan request");
+    return parseJson<Plan>(() => this.handle.plan(json));
   }
 
   /** Plans a query and renders it: plan JSON, FOON text (plain dialect), PDDL, or progress-line JSON. */
   exportPlan(request: PlanRequest, format: ExportFormat): string {
+    const json = requestJson(request, "plan request");
     try {
-      return this.handle.export(JSON.stringify(request), format);
+      return this.handle.export(json, String(format));
     } catch (thrown) {
       throw toPlannerError(thrown);
     }
@@ -147,7 +128,8 @@ export class FoonPlanner {
 
   /** The knowledge-base ingredients most similar to each name, best first, as the planner ranks them. */
   similar(names: readonly string[], top = 5): SimilarResult[] {
-    return parseJson<SimilarResult[]>(() => this.handle.similar(JSON.stringify(names), top));
+    const json = requestJson(names, "names (a JSON array of strings)");
+    return parseJson<SimilarResult[]>(() => this.handle.similar(json, top));
   }
 
   /** Problems that did not stop the load (units skipped, with file and line). */

@@ -146,3 +146,15 @@ export interface SimilarResult {
   query: string;
   candidates: Alternative[];
 }
+
+/** What the query editor offers: the knowledge base's dish classes with their recipes, labels and states. */
+export interface Vocabulary {
+  /** Dish classes that have at least one recipe, with the recipe titles. */
+  dishes: { name: string; recipes: string[] }[];
+  /** Object labels, sorted. */
+  labels: string[];
+  /** Plain state names (no container arguments), sorted. */
+  states: string[];
+  /** Recipe title of each subgraph file ("s01-greek_salad.txt" -> "Greek salad"). */
+  titles: Record<string, string>;
+}

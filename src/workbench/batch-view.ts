@@ -17,7 +17,7 @@ const BUNDLED_KB = "kb/default.foon";
 const EMBEDDINGS = "data/food-embeddings.bin";
 const VARIANTS: Variant[] = ["modified", "unmodified"];
 /** Results are stored in groups of this many (and at the end). */
-const SAVE_EVERY = 10;
+const SAVE_EVERY = 20;
 
 async function readQueryFiles(files: readonly File[]): Promise<{ queries: LoadedQuery[]; problems: string[] }> {
   const queries: LoadedQuery[] = [];
@@ -61,6 +61,8 @@ async function embeddings(): Promise<Uint8Array | null> {
 
 export class BatchView {
   private worker: Worker | null = null;
+  /** Plans received and not stored yet. */
+  private pending: PlanEntry[] = [];
   private sort: SortState = { column: "type", descending: false };
   private kbFiles: File[] = [];
   private queryFiles: File[] = [];
@@ -83,6 +85,7 @@ export class BatchView {
     pick("query-files", (f) => (this.queryFiles = f));
     pick("query-folder", (f) => (this.queryFiles = f));
     pick("kb-files", (f) => (this.kbFiles = f));
+    pick("kb-folder", (f) => (this.kbFiles = f));
     this.run.addEventListener("click", () => void this.start());
     this.cancel.addEventListener("click", () => void this.stop());
     byId("export-results-json", HTMLButtonElement).addEventListener("click", () => this.exportResults("json"));
@@ -141,12 +144,8 @@ export class BatchView {
     this.worker = worker;
     this.cancel.disabled = false;
     this.describeChoice();
-    let pending: PlanEntry[] = [];
-    const flush = async (status: StoredBatch["status"]): Promise<void> => {
-      const entries = pending;
-      pending = [];
-      await this.bench.addResults(entries, status);
-    };
+    this.pending = [];
+    const flush = (status: StoredBatch["status"]): Promise<void> => this.flush(status);
     worker.onmessage = (event: MessageEvent<WorkerMessage>) => {
       const message = event.data;
       switch (message.kind) {
@@ -155,7 +154,7 @@ export class BatchView {
           break;
         case "result":
           batch.records.push(message.record);
-          if (message.plan !== null) pending.push({ recipe: message.record.recipe, variant: message.record.variant, plan: message.plan });
+          if (message.plan !== null) this.pending.push({ recipe: message.record.recipe, variant: message.record.variant, plan: message.plan });
           this.progress.value = message.done;
           this.status.textContent = `Planned ${message.done} of ${message.total}.`;
           if (message.done % SAVE_EVERY === 0) void flush("running");
@@ -178,6 +177,12 @@ export class BatchView {
     worker.postMessage(request, [...kb.files.map((f) => f.bytes.buffer), ...(table === null ? [] : [table.buffer])]);
   }
 
+  private async flush(status: StoredBatch["status"]): Promise<void> {
+    const entries = this.pending;
+    this.pending = [];
+    await this.bench.addResults(entries, status);
+  }
+
   private finish(): void {
     this.worker?.terminate();
     this.worker = null;
@@ -189,7 +194,7 @@ export class BatchView {
     if (this.worker === null) return;
     this.finish();
     const batch = this.bench.batch;
-    await this.bench.addResults([], "cancelled");
+    await this.flush("cancelled");
     this.setStatus(`Cancelled after ${batch?.records.length ?? 0} of ${this.progress.max} plans.`, "cancelled");
   }
 
@@ -205,7 +210,26 @@ export class BatchView {
     else download(`eval-${batch.id}-recipes.csv`, recipesCsv(batch.records), "text/csv");
   }
 
+  private lastRender = 0;
+  private renderTimer: ReturnType<typeof setTimeout> | null = null;
+
+  /** Renders now, or at most once a second while a batch runs. */
   render(): void {
+    if (this.worker !== null) {
+      const wait = this.lastRender + 1000 - performance.now();
+      if (wait > 0) {
+        this.renderTimer ??= setTimeout(() => {
+          this.renderTimer = null;
+          this.render();
+        }, wait);
+        return;
+      }
+    }
+    this.lastRender = performance.now();
+    this.renderNow();
+  }
+
+  private renderNow(): void {
     const batch = this.bench.batch;
     const blind = this.bench.settings.blind;
     const metrics = byId("metrics", HTMLElement);

@@ -43,6 +43,8 @@ export interface RecipeRow {
   pairShare: Partial<Record<Variant, number>>;
   extras: Partial<Record<Variant, number>>;
   errors: string;
+  /** Structural-invariant violations over both variants. */
+  violations: number;
   ms: number;
 }
 
@@ -58,7 +60,7 @@ export function recipeRows(queries: readonly LoadedQuery[], records: readonly Ev
       const key = recipeKey(q.query);
       const row: RecipeRow = {
         key, type: q.query.type, id: q.query.id, ingredients: q.query.ingredients.length, items: ratingItems(q.query.ingredients).length * 2,
-        rated: ratedCount(q), units: {}, objectShare: {}, pairShare: {}, extras: {}, errors: "", ms: 0,
+        rated: ratedCount(q), units: {}, objectShare: {}, pairShare: {}, extras: {}, errors: "", violations: 0, ms: 0,
       };
       for (const r of byRecipe.get(key) ?? []) {
         row.ms += r.ms;
@@ -71,6 +73,7 @@ export function recipeRows(queries: readonly LoadedQuery[], records: readonly Ev
         row.objectShare[r.variant] = m.query_objects === 0 ? 1 : m.objects_in_tree / m.query_objects;
         row.pairShare[r.variant] = m.query_pairs === 0 ? 1 : m.pairs_in_tree / m.query_pairs;
         row.extras[r.variant] = m.extra_ingredients.length;
+        row.violations += m.violations.length;
       }
       return row;
     });
@@ -100,6 +103,7 @@ export const RECIPE_COLUMNS: readonly Column[] = [
   { key: "pairs_ref", label: "(object, state) (ref.)", value: (r) => r.pairShare.unmodified ?? -1, text: (r) => pct(r.pairShare.unmodified), revealing: true },
   { key: "extras_mod", label: "extras (mod.)", value: (r) => r.extras.modified ?? -1, text: (r) => num(r.extras.modified), revealing: true },
   { key: "errors", label: "errors", value: (r) => r.errors, revealing: true },
+  { key: "violations", label: "invariant violations", value: (r) => r.violations, revealing: true },
   { key: "ms", label: "ms", value: (r) => r.ms, text: (r) => r.ms.toFixed(1) },
 ];
 

@@ -195,6 +195,33 @@ describe("evaluation workbench", () => {
     }
   });
 
+  it("cancels a running batch and keeps what was planned", async () => {
+    const context = await browser.newContext();
+    const page = await context.newPage();
+    const errors = watchErrors(page);
+    await open(page);
+    const many = TYPES.flatMap((type) => readdirSync(sharedPath("recipes/dev", type)).map((f) => sharedPath("recipes/dev", type, f)));
+    await page.setInputFiles("#query-files", many);
+    await page.click("#run-batch");
+    await page.waitForFunction(() => (document.querySelector<HTMLProgressElement>("#batch-progress")?.value ?? 0) >= 4);
+    await page.click("#cancel-batch");
+    await page.waitForSelector("#batch-status[data-state=cancelled]");
+    const planned = Number(/after (\d+) of/.exec((await page.textContent("#batch-status")) ?? "")?.[1]);
+    expect(planned).toBeGreaterThanOrEqual(4);
+    expect(planned).toBeLessThan(many.length * 2);
+    const plans = (await page.locator("table.metrics[data-variant=modified] tr[data-metric=plans] td[data-group=all]").textContent()) ?? "";
+    expect(Number(plans.split("/")[1]) + Number((await page.locator("table.metrics[data-variant=unmodified] tr[data-metric=plans] td[data-group=all]").textContent())?.split("/")[1])).toBe(planned);
+    expect(await page.isEnabled("#run-batch")).toBe(true);
+    await page.reload(); // the partial batch is stored, plans included
+    await page.waitForSelector("body[data-ready=true]");
+    expect(await page.textContent("#batch-status")).toContain(`${planned} plans of ${many.length} queries (cancelled)`);
+    await page.click("#recipe-table tbody tr:first-child button.link");
+    await page.waitForSelector("#rate-body[data-recipe]");
+    expect(await page.locator(".plan-panel .no-plan").count()).toBe(0);
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
   it("exports before deleting, and imports and merges several raters' files", async () => {
     const context = await browser.newContext({ acceptDownloads: true });
     const page = await context.newPage();
@@ -224,6 +251,19 @@ describe("evaluation workbench", () => {
 
     await page.setInputFiles("#import-ratings", [{ name: "copy.json", mimeType: "application/json", buffer: Buffer.from(copy.text) }]);
     await page.waitForSelector('#save-status:text-is("3 ratings saved")');
+
+    // hostile labels in a query are shown as text, never run
+    const evil = '<img src=x onerror="window.__xss=1">';
+    await open(page);
+    const query = { id: "evil<b>", type: "salad", ingredients: [{ object: evil, state: "<i>sliced</i>" }] };
+    await page.setInputFiles("#query-files", [{ name: "evil.json", mimeType: "application/json", buffer: Buffer.from(JSON.stringify(query)) }]);
+    await page.click("#run-batch");
+    await page.waitForSelector("#batch-status[data-state=done], #batch-status[data-state=failed]");
+    await open(page, "#rate");
+    await page.waitForSelector("#rate-body[data-recipe]");
+    expect(await page.locator(".item .ingredient").first().textContent()).toBe(`<i>sliced</i> ${evil}`);
+    expect(await page.locator("#rate-body img, #rate-body i, #rate-body b").count()).toBe(0);
+    expect(await page.evaluate(() => (window as unknown as { __xss?: number }).__xss)).toBeUndefined();
     expect(errors).toEqual([]);
     await context.close();
   });

@@ -1,6 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { parseQuery, QueryFileError, recipeKey, sortQueries } from "../../src/eval/queries";
-import { readQueryFolder } from "../../src/cli/eval";
+import { readQueries } from "../../src/cli/queries";
 import { sharedPath } from "./helpers";
 
 describe("recipe-query files", () => {
@@ -19,7 +19,7 @@ describe("recipe-query files", () => {
   });
 
   it("reads the 320 dev queries from ../shared", () => {
-    const queries = readQueryFolder(sharedPath("recipes/dev"));
+    const queries = readQueries(sharedPath("recipes/dev"));
     expect(queries).toHaveLength(320);
     expect(new Set(queries.map((q) => q.query.type)).size).toBe(8);
   });

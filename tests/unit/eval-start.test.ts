@@ -19,3 +19,22 @@ describe("things a kitchen has before cooking starts", () => {
     expect(m.units_before_inputs).toBe(0);
   });
 });
+
+describe("states a recipe returns to", () => {
+  it("a lid taken off and put back was there from the start: no order could do better", () => {
+    const onPot = node("lid", ["on [pot]"], [], "pot");
+    const off = node("lid", ["on [counter]"], [], "counter");
+    const units = [
+      unit([onPot, node("pot", ["contains {water}"], ["water"])], "uncover", [off, node("pot", ["open", "contains {water}"], ["water"])]),
+      unit([node("pot", ["open", "contains {water}"], ["water"]), node("salt", ["ground"])], "sprinkle", [node("pot", ["open", "contains {salt,water}"], ["salt", "water"])]),
+      unit([off, node("pot", ["open", "contains {salt,water}"], ["salt", "water"])], "cover", [onPot, node("soup", ["boiled"], ["salt", "water"], "pot")]),
+    ];
+    const m = structureMetrics(units, { ...plan().goal, label: "soup", states: ["boiled"] });
+    expect(m).toMatchObject({ units_before_inputs: 0, dead_units: 0, goal_produced: true });
+  });
+
+  it("but a unit that could have run first and did not is reported", () => {
+    const [a, b, c, d] = cleanUnits();
+    expect(structureMetrics([a!, c!, b!, d!], plan().goal).units_before_inputs).toBe(1);
+  });
+});

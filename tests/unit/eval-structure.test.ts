@@ -6,7 +6,7 @@ const goal = plan().goal;
 
 describe("structural invariants from units alone", () => {
   it("a correct plan has no duplicates, no early units, no dead units, and produces its goal", () => {
-    expect(structureMetrics(cleanUnits(), goal)).toEqual({ units: 4, duplicate_units: 0, units_before_inputs: 0, dead_units: 0, goal_produced: true });
+    expect(structureMetrics(cleanUnits(), goal)).toEqual({ units: 4, duplicate_units: 0, units_before_inputs: 0, dead_units: 0, goal_produced: true, violations: [] });
   });
 
   it("counts a unit repeated with the same inputs, motion and outputs (in any order)", () => {
@@ -15,6 +15,7 @@ describe("structural invariants from units alone", () => {
     const again = unit([...first.inputs].reverse(), first.motion, first.outputs);
     const m = structureMetrics([first, again, ...units.slice(1)], goal);
     expect(m.duplicate_units).toBe(1);
+    expect(m.violations).toEqual(["unit 2 (pick-and-place) repeats unit 1"]);
     expect(m.dead_units).toBe(0); // both copies' output is used by the dice unit
   });
 
@@ -22,6 +23,10 @@ describe("structural invariants from units alone", () => {
     const [a, b, c, d] = cleanUnits();
     const m = structureMetrics([a!, c!, b!, d!], goal);
     expect(m.units_before_inputs).toBe(1);
+    expect(m.violations).toEqual([
+      "unit 2 (pour) needs tomato [diced; on [cutting board]], first made by unit 3",
+      "unit 3 (dice) makes nothing a later unit uses",
+    ]);
     expect(m.dead_units).toBe(1); // dicing now happens after the pour that needed it
   });
 
@@ -50,6 +55,6 @@ describe("structural invariants from units alone", () => {
   });
 
   it("an empty plan has nothing to count", () => {
-    expect(structureMetrics([], goal)).toEqual({ units: 0, duplicate_units: 0, units_before_inputs: 0, dead_units: 0, goal_produced: false });
+    expect(structureMetrics([], goal)).toEqual({ units: 0, duplicate_units: 0, units_before_inputs: 0, dead_units: 0, goal_produced: false, violations: [] });
   });
 });

@@ -17,7 +17,7 @@ describe("the workbench's recipe list", () => {
   it("has one row per planned recipe with per-variant metrics", () => {
     const rows = recipeRows(queries, records, () => 1);
     expect(rows.map((r) => r.key)).toEqual(["soup/b", "salad/a"]);
-    expect(rows[0]).toMatchObject({ ingredients: 3, items: 4, rated: 1, units: { modified: 4, unmodified: 4 }, errors: "" });
+    expect(rows[0]).toMatchObject({ ingredients: 3, items: 4, rated: 1, units: { modified: 4, unmodified: 4 }, errors: "", violations: 0 });
   });
 
   it("sorts by any column, both ways, ties by recipe", () => {

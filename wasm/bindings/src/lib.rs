@@ -31,9 +31,31 @@ fn js_error(e: &FoonError) -> JsValue {
     error.into()
 }
 
+/// A failure that is not the caller's (a result that cannot be serialised): still a JS `Error` with a
+/// stable code, `internal`, so that the app can tell it from a bad file or a bad request.
+fn internal_error(message: String) -> JsValue {
+    let error = js_sys::Error::new(&format!("{message} (internal)"));
+    let _ = js_sys::Reflect::set(
+        &error,
+        &JsValue::from_str("code"),
+        &JsValue::from_str("internal"),
+    );
+    let _ = js_sys::Reflect::set(
+        &error,
+        &JsValue::from_str("reason"),
+        &JsValue::from_str(&message),
+    );
+    error.into()
+}
+
 fn to_json<T: serde::Serialize>(value: &T) -> Result<String, JsValue> {
     serde_json::to_string(value)
-        .map_err(|e| JsValue::from_str(&format!("cannot serialise result: {e}")))
+        .map_err(|e| internal_error(format!("cannot serialise result: {e}")))
+}
+
+fn to_json_pretty<T: serde::Serialize>(value: &T) -> Result<String, JsValue> {
+    serde_json::to_string_pretty(value)
+        .map_err(|e| internal_error(format!("cannot serialise result: {e}")))
 }
 
 /// Collects knowledge-base files one by one (each parsed at once, so an error names its file), then
@@ -93,11 +115,6 @@ pub struct Planner {
     similarity: Box<dyn Similarity>,
 }
 
-fn from_json<'a, T: serde::Deserialize<'a>>(text: &'a str, what: &str) -> Result<T, JsValue> {
-    serde_json::from_str(text)
-        .map_err(|e| js_error(&FoonError::new(ErrorCode::BadQuery, format!("{what}: {e}"))))
-}
-
 #[wasm_bindgen]
 impl Planner {
     /// Statistics of the knowledge base, as JSON (`foon_core::Stats`).
@@ -106,7 +123,8 @@ impl Planner {
     }
 
     fn run(&self, request_json: &str) -> Result<Plan, JsValue> {
-        let request: PlanRequest = from_json(request_json, "plan request")?;
+        let request: PlanRequest =
+            foon_core::decode::plan_request(request_json).map_err(|e| js_error(&e))?;
         foon_core::plan(&self.kb, &self.index, self.similarity.as_ref(), &request)
             .map_err(|e| js_error(&e))
     }
@@ -121,7 +139,7 @@ impl Planner {
     pub fn export(&self, request_json: &str, format: &str) -> Result<String, JsValue> {
         let plan = self.run(request_json)?;
         match format {
-            "json" => serde_json::to_string_pretty(&plan).map_err(|e| JsValue::from_str(&e.to_string())),
+            "json" => to_json_pretty(&plan),
             "foon" => Ok(foon_core::foon_text(&plan)),
             "pddl" => {
                 let p = foon_core::pddl(&plan);
@@ -129,7 +147,7 @@ impl Planner {
             }
             "pddl-domain" => Ok(foon_core::pddl(&plan).domain),
             "pddl-problem" => Ok(foon_core::pddl(&plan).problem),
-            "progress" => serde_json::to_string_pretty(&foon_core::progress_json(&plan)).map_err(|e| JsValue::from_str(&e.to_string())),
+            "progress" => to_json_pretty(&foon_core::progress_json(&plan)),
             other => Err(js_error(&FoonError::new(
                 ErrorCode::BadQuery,
                 format!("unknown export format '{other}' (json, foon, pddl, pddl-domain, pddl-problem, progress)"),
@@ -140,7 +158,7 @@ impl Planner {
     /// The knowledge-base ingredients most similar to each name (`names_json`: a JSON array of
     /// strings), best first, as JSON `[{query, candidates: [{label, similarity}]}]`.
     pub fn similar(&self, names_json: &str, top: usize) -> Result<String, JsValue> {
-        let names: Vec<String> = from_json(names_json, "names must be a JSON array of strings")?;
+        let names = foon_core::decode::names(names_json).map_err(|e| js_error(&e))?;
         to_json(&foon_core::similar(
             &self.kb,
             self.similarity.as_ref(),

@@ -3,6 +3,7 @@
 //! exposes it to JavaScript.
 
 pub mod bundle;
+pub mod decode;
 pub mod embedding;
 pub mod error;
 pub mod export;

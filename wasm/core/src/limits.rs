@@ -11,3 +11,5 @@ pub const MAX_LABEL_CHARS: usize = 200;
 pub const MAX_UNITS: usize = 1_000_000;
 /// Most ingredients in one plan request.
 pub const MAX_QUERY_INGREDIENTS: usize = 200;
+/// Largest plan request or name list, as JSON text (bytes).
+pub const MAX_REQUEST_BYTES: usize = 1024 * 1024;

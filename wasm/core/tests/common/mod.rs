@@ -45,3 +45,39 @@ pub fn foon111(dialect: &str) -> Vec<(String, Vec<u8>)> {
 pub fn load(files: &[(String, Vec<u8>)]) -> KnowledgeBase {
     foon_core::load(files).unwrap_or_else(|e| panic!("{e}"))
 }
+
+/// The shipped food embedding table (`public/data/food-embeddings.bin`).
+pub fn embeddings() -> foon_core::EmbeddingSimilarity {
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../public/data/food-embeddings.bin");
+    let bytes = std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    foon_core::EmbeddingSimilarity::from_bytes(&bytes).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The dev recipe queries of `../shared/recipes/dev/<type>/<id>.json`, as (path, query), sorted by path.
+pub fn dev_queries() -> Vec<(String, foon_core::Query)> {
+    let dir = shared_dir().join("recipes").join("dev");
+    let mut paths = Vec::new();
+    for class in std::fs::read_dir(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display())) {
+        for file in std::fs::read_dir(class.unwrap().path()).unwrap() {
+            let path = file.unwrap().path();
+            if path.extension().is_some_and(|x| x == "json") {
+                paths.push(path);
+            }
+        }
+    }
+    paths.sort();
+    paths
+        .into_iter()
+        .map(|p| {
+            let query = serde_json::from_slice(&std::fs::read(&p).unwrap())
+                .unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+            (p.display().to_string(), query)
+        })
+        .collect()
+}
+
+/// The project's starter knowledge base (`public/kb/starter/*.txt`).
+pub fn starter_kb_files() -> Vec<(String, Vec<u8>)> {
+    read_dir(&PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../public/kb/starter"))
+}

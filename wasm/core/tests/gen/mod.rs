@@ -2,6 +2,8 @@
 //! dialect, and line soups that are almost FOON.
 #![allow(dead_code)]
 
+pub mod plans;
+
 use proptest::prelude::*;
 
 /// Cases per property: `PROPTEST_CASES` when set (the bounded robustness step of `scripts/test.sh` raises

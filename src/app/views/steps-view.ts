@@ -1,0 +1,96 @@
+// Steps: the task tree as numbered, recipe-like sentences (the accessible view of the same plan: the
+// graph canvas has none). A listbox with roving focus; arrow keys, Home and End move the selection.
+
+import type { Plan } from "../../planner/types";
+import { el, uid } from "../dom";
+import { selectUnit, type Selection } from "../model/tree";
+import type { AppState, Store } from "../store";
+
+export interface StepsViewActions {
+  select(selection: Selection): void;
+}
+
+const ORIGIN_WORDS: Record<string, string> = {
+  renamed: "renamed by modification",
+  grafted: "grafted: added to reach a state",
+  copied: "copied branch",
+  attached: "takes a new ingredient",
+};
+
+export function mountStepsView(host: HTMLElement, store: Store, actions: StepsViewActions): () => void {
+  const titleId = uid("steps-title");
+  const list = el("ol", { class: "steps", role: "listbox", "aria-labelledby": titleId });
+  host.replaceChildren(el("h2", { id: titleId, text: "Steps" }), list);
+  let plan: Plan | null = null;
+
+  function items(): HTMLLIElement[] {
+    return [...list.querySelectorAll<HTMLLIElement>("li")];
+  }
+
+  function render(next: Plan | null): void {
+    plan = next;
+    if (next === null || next.units.length === 0) {
+      list.replaceChildren(el("li", { class: "muted", role: "option", "aria-disabled": "true", text: next === null ? "No plan yet." : "The plan has no steps." }));
+      return;
+    }
+    list.replaceChildren(
+      ...next.units.map((u, i) => {
+        const sentence = next.steps[i] ?? `${u.motion}.`;
+        const origin = ORIGIN_WORDS[u.origin];
+        const li = el(
+          "li",
+          { role: "option", tabindex: i === 0 ? 0 : -1, "aria-selected": "false", "data-unit": i, id: uid("step") },
+          el("span", { class: "step-text", text: sentence }),
+          origin === undefined ? null : el("span", { class: `origin ${u.origin}`, text: ` (${origin})` }),
+        );
+        li.addEventListener("click", () => actions.select(selectUnit(next, i)));
+        return li;
+      }),
+    );
+  }
+
+  function renderSelection(selection: Selection, focus: boolean): void {
+    const all = items();
+    all.forEach((li) => {
+      const chosen = li.dataset.unit !== undefined && Number(li.dataset.unit) === selection.unit;
+      li.setAttribute("aria-selected", String(chosen));
+      li.classList.toggle("selected", chosen);
+    });
+    const chosen = all.find((li) => li.getAttribute("aria-selected") === "true");
+    if (chosen !== undefined) {
+      all.forEach((li) => (li.tabIndex = li === chosen ? 0 : -1));
+      if (focus) chosen.focus();
+      else if (chosen.offsetTop < list.scrollTop || chosen.offsetTop + chosen.offsetHeight > list.scrollTop + list.clientHeight) {
+        // scroll the list only, never the page (scrollIntoView would move the page too)
+        list.scrollTop = chosen.offsetTop - list.offsetTop - 8;
+      }
+    }
+  }
+
+  list.addEventListener("keydown", (event: KeyboardEvent) => {
+    if (plan === null || plan.units.length === 0) return;
+    const last = plan.units.length - 1;
+    const at = store.state.selection.unit ?? -1;
+    const target =
+      event.key === "ArrowDown" ? Math.min(last, at + 1) :
+      event.key === "ArrowUp" ? Math.max(0, at - 1) :
+      event.key === "Home" ? 0 :
+      event.key === "End" ? last : null;
+    if (target === null) return;
+    event.preventDefault();
+    keyboard = true;
+    actions.select(selectUnit(plan, target));
+  });
+
+  // focus follows the selection only when it was moved from the keyboard in this list
+  let keyboard = false;
+  const update = (state: AppState, previous: AppState | null): void => {
+    if (previous === null || state.plan !== previous.plan) render(state.plan);
+    if (previous === null || state.plan !== previous.plan || state.selection !== previous.selection) {
+      renderSelection(state.selection, keyboard);
+      keyboard = false;
+    }
+  };
+  update(store.state, null);
+  return store.subscribe(update);
+}

@@ -1,0 +1,184 @@
+// The task tree with Cytoscape.js and a layered DAG layout (dagre): object nodes as green circles, motion
+// nodes as red squares, edges input -> motion -> output; nodes that modification added, renamed or
+// grafted are outlined and dashed. Selecting a node selects its functional unit and ingredient.
+
+import cytoscape, { type Core, type ElementDefinition, type StylesheetJson } from "cytoscape";
+import dagre from "cytoscape-dagre";
+import type { Plan } from "../../planner/types";
+import { el } from "../dom";
+import { graphToSvg, type PlacedNode } from "../export/svg";
+import { planToGraph, selectNode, type Selection, type TreeGraph } from "../model/tree";
+import type { AppState, Store } from "../store";
+import { readColors, type GraphColors } from "../theme-colors";
+
+let registered = false;
+function registerDagre(): void {
+  if (registered) return;
+  cytoscape.use(dagre);
+  registered = true;
+}
+
+const OBJECT_SIZE = 26;
+const MOTION_SIZE = 22;
+
+export interface TreeViewHandle {
+  png(): Promise<Blob>;
+  svg(): string;
+  /** Re-reads theme colours (after a theme switch). */
+  restyle(): void;
+  destroy(): void;
+}
+
+export interface TreeViewActions {
+  select(selection: Selection): void;
+}
+
+function elements(graph: TreeGraph): ElementDefinition[] {
+  return [
+    ...graph.nodes.map((n) => ({
+      group: "nodes" as const,
+      data: { id: n.id, label: n.label, caption: n.detail === "" ? n.label : `${n.label}\n${n.detail}`, kind: n.kind, mark: n.mark ?? "", ingredient: n.ingredient ?? "" },
+      classes: [n.kind, n.mark === null ? "" : "marked", n.goal ? "goal" : ""].filter((c) => c !== "").join(" "),
+    })),
+    ...graph.edges.map((e) => ({ group: "edges" as const, data: { id: e.id, source: e.source, target: e.target } })),
+  ];
+}
+
+function stylesheet(c: GraphColors): StylesheetJson {
+  return [
+    {
+      selector: "node",
+      style: {
+        label: "data(caption)",
+        "text-wrap": "wrap",
+        "text-max-width": "120px",
+        "text-valign": "bottom",
+        "text-margin-y": 4,
+        "font-size": 10,
+        color: c.text,
+        "text-outline-color": c.background,
+        "text-outline-width": 2,
+      },
+    },
+    { selector: "node.object", style: { shape: "ellipse", width: OBJECT_SIZE, height: OBJECT_SIZE, "background-color": c.object } },
+    { selector: "node.motion", style: { shape: "rectangle", width: MOTION_SIZE, height: MOTION_SIZE, "background-color": c.motion } },
+    { selector: "node.goal", style: { "border-width": 3, "border-color": c.text, width: OBJECT_SIZE + 8, height: OBJECT_SIZE + 8 } },
+    { selector: "node.marked", style: { "border-width": 4, "border-style": "dashed", "border-color": c.mark } },
+    { selector: "node.on-line", style: { "underlay-color": c.line, "underlay-opacity": 0.35, "underlay-padding": 6 } },
+    { selector: "node.selected", style: { "overlay-color": c.select, "overlay-opacity": 0.45, "overlay-padding": 6 } },
+    {
+      selector: "edge",
+      style: { width: 1.5, "line-color": c.edge, "target-arrow-color": c.edge, "target-arrow-shape": "triangle", "curve-style": "bezier", "arrow-scale": 0.8 },
+    },
+    { selector: "edge.on-line", style: { "line-color": c.line, "target-arrow-color": c.line, width: 3 } },
+  ];
+}
+
+export function mountTreeView(host: HTMLElement, store: Store, actions: TreeViewActions): TreeViewHandle {
+  registerDagre();
+  const canvas = el("div", { class: "cy", role: "img", "aria-label": "Task tree graph (the Steps list below is the same plan as text)" });
+  const fit = el("button", { type: "button", text: "Fit" });
+  const zoomIn = el("button", { type: "button", "aria-label": "Zoom in", title: "Zoom in", text: "+" });
+  const zoomOut = el("button", { type: "button", "aria-label": "Zoom out", title: "Zoom out", text: "−" });
+  const caption = el("p", { class: "muted small tree-caption", "aria-live": "polite" });
+  const legend = el(
+    "ul",
+    { class: "legend", "aria-label": "Legend" },
+    el("li", {}, el("span", { class: "swatch object", "aria-hidden": "true" }), "object node"),
+    el("li", {}, el("span", { class: "swatch motion", "aria-hidden": "true" }), "motion node"),
+    el("li", {}, el("span", { class: "swatch marked", "aria-hidden": "true" }), "added, renamed or grafted by modification"),
+    el("li", {}, el("span", { class: "swatch goal", "aria-hidden": "true" }), "goal node"),
+  );
+  host.replaceChildren(
+    el("div", { class: "view-head" }, el("h2", { text: "Task tree" }), el("div", { class: "toolbar", role: "toolbar", "aria-label": "Graph" }, fit, zoomIn, zoomOut)),
+    legend,
+    canvas,
+    caption,
+  );
+
+  let colors = readColors(host);
+  const cy: Core = cytoscape({
+    container: canvas,
+    style: stylesheet(colors),
+    minZoom: 0.1,
+    maxZoom: 4,
+    autounselectify: true, // selection lives in the store, shown with classes
+    boxSelectionEnabled: false,
+  });
+  let graph: TreeGraph = { nodes: [], edges: [] };
+  let plan: Plan | null = null;
+
+  cy.on("tap", "node", (event) => actions.select(selectNode(graph, String(event.target.id()))));
+  // fit the whole tree, but never blow a small one up past 1.5x (its labels would be huge)
+  const fitTree = (): void => {
+    cy.fit(undefined, 20);
+    if (cy.zoom() > 1.5) {
+      cy.zoom(1.5);
+      cy.center();
+    }
+  };
+  fit.addEventListener("click", fitTree);
+  zoomIn.addEventListener("click", () => cy.zoom({ level: cy.zoom() * 1.25, renderedPosition: { x: cy.width() / 2, y: cy.height() / 2 } }));
+  zoomOut.addEventListener("click", () => cy.zoom({ level: cy.zoom() / 1.25, renderedPosition: { x: cy.width() / 2, y: cy.height() / 2 } }));
+
+  function renderPlan(next: Plan | null): void {
+    plan = next;
+    graph = next === null ? { nodes: [], edges: [] } : planToGraph(next);
+    cy.elements().remove();
+    cy.add(elements(graph));
+    cy.layout({ name: "dagre", rankDir: "LR", nodeSep: 34, rankSep: 70, padding: 20, fit: false } as cytoscape.LayoutOptions).run();
+    fitTree();
+    canvas.dataset.nodes = String(graph.nodes.length);
+    canvas.dataset.edges = String(graph.edges.length);
+  }
+
+  function renderSelection(selection: Selection): void {
+    cy.batch(() => {
+      cy.elements().removeClass("selected on-line");
+      const picked = selection.node ?? (selection.unit === null ? null : `m:${selection.unit}`);
+      if (picked !== null) cy.getElementById(picked).addClass("selected");
+      canvas.dataset.selected = picked ?? "";
+      if (selection.ingredient !== null) {
+        const on = cy.nodes().filter((n) => n.data("ingredient") === selection.ingredient);
+        on.addClass("on-line");
+        on.connectedEdges().addClass("on-line");
+      }
+    });
+    const unit = selection.unit === null || plan === null ? undefined : plan.units[selection.unit];
+    caption.textContent = unit === undefined ? "Select a node to see its step and progress line." : `Selected: step ${selection.unit! + 1}, ${unit.motion} (${unit.origin === "reference" ? "from the reference task tree" : unit.origin}).`;
+  }
+
+  const update = (state: AppState, previous: AppState | null): void => {
+    if (previous === null || state.plan !== previous.plan) renderPlan(state.plan);
+    if (previous === null || state.plan !== previous.plan || state.selection !== previous.selection) renderSelection(state.selection);
+  };
+  update(store.state, null);
+  const unsubscribe = store.subscribe(update);
+  // a hidden container (another view tab) has no size: fit again when it is shown or resized
+  const resize = new ResizeObserver(() => {
+    cy.resize();
+    fitTree();
+  });
+  resize.observe(canvas);
+
+  return {
+    png: async () => cy.png({ output: "blob-promise", full: true, scale: 2, bg: colors.background }),
+    svg: () => {
+      const placed: PlacedNode[] = graph.nodes.map((n) => {
+        const p = cy.getElementById(n.id).position();
+        return { ...n, x: p.x, y: p.y, size: n.kind === "object" ? (n.goal ? OBJECT_SIZE + 8 : OBJECT_SIZE) : MOTION_SIZE };
+      });
+      const title = plan === null ? "foon-planner task tree" : `Task tree: ${plan.goal.label} (${plan.query.type || "any dish"})`;
+      return graphToSvg(placed, graph.edges, colors, title);
+    },
+    restyle: () => {
+      colors = readColors(host);
+      cy.style(stylesheet(colors));
+    },
+    destroy: () => {
+      unsubscribe();
+      resize.disconnect();
+      cy.destroy();
+    },
+  };
+}

@@ -1,0 +1,96 @@
+// The planner's Web Worker: owns the WASM module and the loaded knowledge base, so planning never blocks
+// the page. Plan requests are coalesced: only the newest pending one runs, older ones are answered
+// `superseded` (a WASM call cannot be interrupted, but the queue behind it can be dropped).
+
+import { FoonPlanner, initPlanner, PlannerError, toPlannerError } from "../planner/index";
+import type { PlanRequest } from "../planner/types";
+import { LatestOnly } from "./latest";
+import type { KnowledgeBaseSource, LoadedKnowledgeBase, WorkerRequest, WorkerResponse } from "./protocol";
+
+const scope = self as unknown as DedicatedWorkerGlobalScope;
+
+let planner: FoonPlanner | null = null;
+const pendingPlans = new LatestOnly<{ id: number; request: PlanRequest }>();
+let planScheduled = false;
+
+function reply(message: WorkerResponse): void {
+  scope.postMessage(message);
+}
+
+async function filesOf(source: KnowledgeBaseSource): Promise<{ name: string; files: { name: string; bytes: Uint8Array }[] }> {
+  if (source.kind === "files") return { name: source.files.map((f) => f.name).join(", "), files: source.files };
+  const response = await fetch(source.url);
+  if (!response.ok) throw new PlannerError({ code: "internal", message: `${source.url}: HTTP ${response.status}` });
+  const name = new URL(source.url).pathname.split("/").pop() ?? "knowledge base";
+  // hosts with a page fallback answer a missing file with their index page: say so, not "unknown line"
+  if ((response.headers.get("content-type") ?? "").includes("text/html")) {
+    throw new PlannerError({ code: "internal", message: `${source.url}: not found (the server sent a web page, not a FOON file)` });
+  }
+  return { name, files: [{ name, bytes: new Uint8Array(await response.arrayBuffer()) }] };
+}
+
+// The embedding table is fetched once per URL and reused for every knowledge base loaded after it.
+const embeddingTables = new Map<string, Promise<Uint8Array | undefined>>();
+function embeddingsOf(url: string | undefined): Promise<Uint8Array | undefined> {
+  if (url === undefined) return Promise.resolve(undefined);
+  let table = embeddingTables.get(url);
+  if (table === undefined) {
+    table = fetch(url)
+      .then(async (r) => (r.ok ? new Uint8Array(await r.arrayBuffer()) : undefined))
+      .catch(() => undefined); // no table: the planner still works, with exact name matching
+    embeddingTables.set(url, table);
+  }
+  return table;
+}
+
+async function load(id: number, source: KnowledgeBaseSource, embeddingsUrl: string | undefined): Promise<void> {
+  const [, { name, files }, embeddings] = await Promise.all([initPlanner(), filesOf(source), embeddingsOf(embeddingsUrl)]);
+  // A failed load keeps the previous knowledge base: the user sees the error and can fix the file.
+  const next = FoonPlanner.load(files, embeddings);
+  planner?.free();
+  planner = next;
+  const kb: LoadedKnowledgeBase = { name, stats: next.stats(), vocabulary: next.vocabulary(), warnings: next.warnings(), embeddings: embeddings !== undefined };
+  reply({ type: "loaded", id, kb });
+}
+
+function runLatestPlan(): void {
+  planScheduled = false;
+  const job = pendingPlans.take();
+  if (job === null) return;
+  try {
+    if (planner === null) throw new PlannerError({ code: "not_initialised", message: "no knowledge base is loaded yet" });
+    const started = performance.now();
+    const plan = planner.plan(job.request);
+    reply({ type: "planned", id: job.id, plan, ms: performance.now() - started });
+  } catch (e) {
+    reply({ type: "error", id: job.id, error: toPlannerError(e).toJSON() });
+  }
+}
+
+scope.onmessage = (event: MessageEvent<WorkerRequest>): void => {
+  const message = event.data;
+  switch (message.type) {
+    case "load":
+      load(message.id, message.source, message.embeddingsUrl).catch((e: unknown) => reply({ type: "error", id: message.id, error: toPlannerError(e).toJSON() }));
+      break;
+    case "plan":
+      {
+        const replaced = pendingPlans.push({ id: message.id, request: message.request });
+        if (replaced !== null) reply({ type: "superseded", id: replaced.id });
+      }
+      if (!planScheduled) {
+        planScheduled = true;
+        // run after the messages already queued, so a burst of edits plans once
+        setTimeout(runLatestPlan, 0);
+      }
+      break;
+    case "export":
+      try {
+        if (planner === null) throw new PlannerError({ code: "not_initialised", message: "no knowledge base is loaded yet" });
+        reply({ type: "exported", id: message.id, text: planner.exportPlan(message.request, message.format) });
+      } catch (e) {
+        reply({ type: "error", id: message.id, error: toPlannerError(e).toJSON() });
+      }
+      break;
+  }
+};

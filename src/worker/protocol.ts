@@ -1,0 +1,29 @@
+// Messages between the page and the planner worker. Everything is structured-cloneable data.
+
+import type { ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanRequest, Stats, Vocabulary } from "../planner/types";
+
+export type KnowledgeBaseSource = { kind: "url"; url: string } | { kind: "files"; files: KnowledgeBaseFile[] };
+
+export type WorkerRequest =
+  /** `embeddingsUrl`: the food embedding table; without it the planner matches names exactly. */
+  | { type: "load"; id: number; source: KnowledgeBaseSource; embeddingsUrl?: string }
+  | { type: "plan"; id: number; request: PlanRequest }
+  | { type: "export"; id: number; request: PlanRequest; format: ExportFormat };
+
+export interface LoadedKnowledgeBase {
+  /** What was loaded: the bundled URL, or the dropped files' names. */
+  name: string;
+  stats: Stats;
+  vocabulary: Vocabulary;
+  warnings: FoonErrorData[];
+  /** Whether the embedding table was loaded (else substitutes are found by exact names only). */
+  embeddings: boolean;
+}
+
+export type WorkerResponse =
+  | { type: "loaded"; id: number; kb: LoadedKnowledgeBase }
+  | { type: "planned"; id: number; plan: Plan; ms: number }
+  | { type: "exported"; id: number; text: string }
+  /** A plan request that a newer one replaced before it ran. */
+  | { type: "superseded"; id: number }
+  | { type: "error"; id: number; error: FoonErrorData };

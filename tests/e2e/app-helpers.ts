@@ -1,0 +1,18 @@
+// Helpers shared by the app's end-to-end tests.
+import { readFileSync } from "node:fs";
+import type { Download, Page } from "playwright-core";
+
+/** Waits until the planner shows a plan (or fails with the status text it shows instead). */
+export async function waitForPlan(page: Page, root = ""): Promise<void> {
+  const status = page.locator(`${root} .plan-status`.trim());
+  await status.and(page.locator("[data-state='ready']")).waitFor({ timeout: 30_000 }).catch(async (e: unknown) => {
+    throw new Error(`no plan: ${(await status.textContent()) ?? "no status"} (${String(e)})`);
+  });
+}
+
+/** Clicks and returns the saved download's name and bytes. */
+export async function downloadOf(page: Page, click: () => Promise<void>): Promise<{ name: string; bytes: Buffer }> {
+  const [download]: [Download, void] = await Promise.all([page.waitForEvent("download"), click()]);
+  const path = await download.path();
+  return { name: download.suggestedFilename(), bytes: readFileSync(path) };
+}

@@ -1,0 +1,77 @@
+import { describe, expect, it } from "vitest";
+import {
+  EXAMPLES,
+  ingredientPhrase,
+  isPlannable,
+  parseIngredientList,
+  queryFromSearch,
+  queryToSearch,
+  splitIngredient,
+  toPlanRequest,
+  type AppQuery,
+} from "../../src/app/query";
+
+const STATES = ["chopped", "whole", "diced", "cut in pieces", "sliced"];
+
+describe("ingredient phrases", () => {
+  it("splits the longest known state off the front", () => {
+    expect(splitIngredient("Chopped  Chili Pepper", STATES)).toEqual({ object: "chili pepper", state: "chopped" });
+    expect(splitIngredient("cut in pieces tomato", STATES)).toEqual({ object: "tomato", state: "cut in pieces" });
+  });
+  it("keeps unknown words as the object (free text for unseen ingredients)", () => {
+    expect(splitIngredient("cool whip", STATES)).toEqual({ object: "cool whip", state: "" });
+    expect(splitIngredient("whole", STATES)).toEqual({ object: "whole", state: "" });
+  });
+  it("parses comma-, semicolon- and line-separated lists with bullets", () => {
+    expect(parseIngredientList("chopped chili pepper, whole tomato, cool whip", STATES)).toEqual([
+      { object: "chili pepper", state: "chopped" },
+      { object: "tomato", state: "whole" },
+      { object: "cool whip", state: "" },
+    ]);
+    expect(parseIngredientList("- sliced cucumber\n2. diced tomato;\n\n", STATES)).toEqual([
+      { object: "cucumber", state: "sliced" },
+      { object: "tomato", state: "diced" },
+    ]);
+  });
+  it("says a row the way recipes do", () => {
+    expect(ingredientPhrase({ object: "tomato", state: "diced" })).toBe("diced tomato");
+    expect(ingredientPhrase({ object: "cool whip", state: "" })).toBe("cool whip");
+  });
+});
+
+describe("plan requests", () => {
+  it("drops empty rows and overrides of objects no longer asked for", () => {
+    const q: AppQuery = {
+      dish: " Salad ",
+      ingredients: [{ object: " Tomato", state: "Whole " }, { object: "  ", state: "diced" }],
+      overrides: { tomato: "cherry tomato", onion: "shallot" },
+    };
+    expect(toPlanRequest(q)).toEqual({ query: { type: "salad", ingredients: [{ object: "tomato", state: "whole" }] }, overrides: { tomato: "cherry tomato" } });
+    expect(isPlannable(q)).toBe(true);
+    expect(isPlannable({ dish: "salad", ingredients: [{ object: "", state: "" }], overrides: {} })).toBe(false);
+  });
+});
+
+describe("the query in the URL", () => {
+  it("round-trips dish, ingredients and substitutes", () => {
+    const q: AppQuery = {
+      dish: "salad",
+      ingredients: [{ object: "chili pepper", state: "chopped" }, { object: "cool whip", state: "" }],
+      overrides: { "chili pepper": "jalapeno" },
+    };
+    const search = queryToSearch(q);
+    expect(search).toBe("?dish=salad&i=chili+pepper~chopped&i=cool+whip&sub=chili+pepper~jalapeno");
+    expect(queryFromSearch(search)).toEqual(q);
+  });
+  it("encodes characters that would break the URL", () => {
+    const q: AppQuery = { dish: "", ingredients: [{ object: "mac & cheese", state: "50% done" }], overrides: {} };
+    expect(queryFromSearch(queryToSearch(q))).toEqual(q);
+  });
+  it("is null without a query, so the saved state stays", () => {
+    expect(queryFromSearch("")).toBeNull();
+    expect(queryFromSearch("?theme=dark")).toBeNull();
+  });
+  it("has example queries that plan", () => {
+    for (const e of EXAMPLES) expect(isPlannable(e.query)).toBe(true);
+  });
+});

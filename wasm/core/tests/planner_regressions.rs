@@ -1,0 +1,32 @@
+//! Planner defects found by the property tests (`prop_plan.rs`), one test each, minimal input. A test
+//! marked `#[ignore]` is a defect still open in the planner (`src/planner/**`, not fixed here); run them with
+//! `cargo test --test planner_regressions -- --include-ignored`.
+
+use foon_core::similarity::ExactMatch;
+use foon_core::{decode, load, parse::parse_str, PlannerIndex};
+
+fn plan(kb_text: &str, request: &str) -> foon_core::Plan {
+    let kb = load(&[("g00.txt".to_string(), kb_text.as_bytes().to_vec())]).unwrap();
+    let index = PlannerIndex::new(&kb);
+    let request = decode::plan_request(request).unwrap();
+    foon_core::plan(&kb, &index, &ExactMatch, &request).unwrap()
+}
+
+/// Found by `planning_on_random_graphs_terminates_in_order_or_fails_typed`: the only input of the unit that
+/// makes the goal is pruned (not asked for), leaving "slice" with no inputs; its FOON export then does not
+/// read back (`motion_without_inputs`).
+#[test]
+#[ignore = "planner defect, reported: pruning can leave a unit with no inputs (src/planner, not fixed here)"]
+fn pruning_never_leaves_a_unit_without_inputs() {
+    let p = plan(
+        "//\nO\ttomato\t0\nM\tslice\t<Assumed>\n!O\tonion\t0\n//\n",
+        r#"{"query": {"type": "salad", "ingredients": [{"object": "onion", "state": "whole"}]}}"#,
+    );
+    assert!(
+        p.units.iter().all(|u| !u.inputs.is_empty()),
+        "{:#?}",
+        p.units
+    );
+    let text = foon_core::foon_text(&p);
+    parse_str("plan.txt", &text).unwrap_or_else(|e| panic!("{e}\n{text}"));
+}
