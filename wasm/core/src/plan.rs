@@ -159,6 +159,7 @@ pub struct ProgressLine {
     pub state: Vec<ProgressState>,
     /// Motion i leads from state i to state i+1.
     pub motion: Vec<String>,
+    /// The first mixture or dish the ingredient joins (the goal when it joins nothing before it).
     pub end_product: String,
 }
 

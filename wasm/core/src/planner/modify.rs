@@ -119,6 +119,8 @@ pub(crate) fn modify(
     let mut claimed: HashSet<String> = HashSet::new();
     let mut restated: HashMap<String, String> = HashMap::new();
     let mut works: Vec<Work> = Vec::with_capacity(query.ingredients.len());
+    // ingredients to bring from elsewhere in FOON: (work index, equivalent, state)
+    let mut pending: Vec<(usize, String, String)> = Vec::new();
     for ing in &query.ingredients {
         let (o, s) = (ing.object.as_str(), ing.state.as_str());
         let mut w = Work {
@@ -150,21 +152,15 @@ pub(crate) fn modify(
             continue;
         }
         if !in_tree {
-            // case 4 from elsewhere in FOON (or an exact FOON label the reference tree lacks)
-            match add_branch(ctx, tree, &eq, o, s, &query_labels) {
-                Ok((state, reason)) => {
-                    w.case = Some(4);
-                    w.matched = Some(Match {
-                        label: eq.clone(),
-                        state,
-                        similarity: sim,
-                    });
-                    w.planned = true;
-                    w.reasons.push(reason);
-                }
-                Err(reason) => w.reasons.push(reason),
-            }
+            // case 4 from elsewhere in FOON (or an exact FOON label the reference tree lacks): attached
+            // after pruning, so that it joins a unit that stays
+            pending.push((works.len(), eq.clone(), s.to_string()));
             claimed.insert(eq.clone());
+            w.matched = Some(Match {
+                label: eq.clone(),
+                state: String::new(),
+                similarity: sim,
+            });
             works.push(w);
             continue;
         }
@@ -185,8 +181,11 @@ pub(crate) fn modify(
                         "'{eq}' is also needed: its branch was copied for '{o}'"
                     )),
                     None => {
-                        w.reasons
-                            .push(format!("'{eq}' could not be copied for '{o}'"));
+                        // no branch of its own to copy: one from elsewhere in FOON, after pruning
+                        w.reasons.push(format!(
+                            "'{eq}' is also needed and has no branch of its own to copy"
+                        ));
+                        pending.push((works.len(), eq.clone(), s.to_string()));
                         works.push(w);
                         continue;
                     }
@@ -198,44 +197,13 @@ pub(crate) fn modify(
             claimed.insert(eq.clone());
         }
         claimed.insert(o.to_string());
-        let state_ok = best_state_slot(tree, o, s).is_some();
-        w.case = Some(match (eq == o, state_ok) {
-            (true, true) => 1,
-            (false, true) => 2,
-            (true, false) => 3,
-            (false, false) => 4,
-        });
-        if category(s) == Category::Other && !s.is_empty() {
-            w.reasons.push(format!(
-                "state '{s}' is not in the state taxonomy: kept the tree's state"
-            ));
-        } else if state_ok && best_exact(tree, o, s).is_none() {
-            w.reasons.push(format!(
-                "state '{s}' matched by category ({})",
-                category(s).name()
-            ));
-        }
-        if !state_ok {
-            if let Some(first) = restated.get(o) {
-                w.reasons.push(format!(
-                    "kept in the state '{first}' chosen for the same ingredient earlier"
-                ));
-            } else {
-                match restate(ctx, tree, &eq, o, s, &query_labels) {
-                    Ok(reason) => {
-                        restated.insert(o.to_string(), s.to_string());
-                        w.reasons.push(reason);
-                    }
-                    Err(reason) => w.reasons.push(reason),
-                }
-            }
-        }
+        settle_state(ctx, tree, &eq, o, s, &query_labels, &mut restated, &mut w);
         w.planned = true;
         works.push(w);
     }
 
     let mut removed = Vec::new();
-    let any_planned = works.iter().any(|w| w.planned);
+    let any_planned = works.iter().any(|w| w.planned) || !pending.is_empty();
     if enabled && !any_planned {
         notes.push(
             "no ingredient of the query could be planned: the reference task tree is kept unpruned"
@@ -251,11 +219,61 @@ pub(crate) fn modify(
         removed = prune(tree, &keep);
         tree.drop_unneeded();
         let present = tree.ingredient_labels();
-        for w in works.iter_mut().filter(|w| w.planned) {
-            if !present.contains(&w.label) {
-                w.planned = false;
-                w.reasons
-                    .push("lost while pruning the tree: no unit uses it".to_string());
+        // an asked-for ingredient whose units served only pruned ones (butter spread on the bread that
+        // was not asked for) comes back as a branch of its own, like a case-4 ingredient
+        for (i, w) in works.iter().enumerate() {
+            if w.planned && !present.contains(&w.label) {
+                let eq = w
+                    .matched
+                    .as_ref()
+                    .map_or(w.label.clone(), |m| m.label.clone());
+                pending.push((i, eq, query.ingredients[i].state.clone()));
+            }
+        }
+        pending.sort_by_key(|p| p.0);
+        for (i, eq, s) in pending {
+            let w = &mut works[i];
+            let o = query.ingredients[i].object.as_str();
+            let lost = w.planned;
+            if !lost && !tree.slots_with_label(o).is_empty() {
+                // an earlier ingredient of the same name brought it: one branch serves both
+                let tree_state = best_state_slot(tree, o, &s)
+                    .or_else(|| tree.slots_with_label(o).first().copied())
+                    .map(|x| state_text(&tree.slots[x].node))
+                    .unwrap_or_default();
+                if let Some(m) = w.matched.as_mut() {
+                    m.state = tree_state;
+                }
+                settle_state(ctx, tree, &eq, o, &s, &query_labels, &mut restated, w);
+                continue;
+            }
+            // a case-2 substitute was renamed in the tree already: its branch comes from `eq` again
+            match add_branch(ctx, tree, &eq, o, &s, &query_labels) {
+                Ok((state, reason)) => {
+                    if lost {
+                        w.reasons.push(format!(
+                            "its units went with the pruned ingredients: {reason}"
+                        ));
+                    } else {
+                        w.case = Some(4);
+                        if let Some(m) = w.matched.as_mut() {
+                            m.state = state;
+                        }
+                        w.planned = true;
+                        w.reasons.push(reason);
+                    }
+                }
+                Err(reason) => {
+                    if lost {
+                        w.planned = false;
+                        w.reasons.push(format!(
+                            "its units went with the pruned ingredients and it could not be added again: {reason}"
+                        ));
+                    } else {
+                        w.matched = None;
+                        w.reasons.push(reason);
+                    }
+                }
             }
         }
     } else {
@@ -286,6 +304,54 @@ pub(crate) fn modify(
         })
         .collect();
     (outcomes, removed)
+}
+
+/// Cases 1–4 for an ingredient whose object is in the tree as `o` (`eq` in FOON): its state is there
+/// (exactly or by category), or the tree is changed to reach it (`restate`), once per object.
+#[allow(clippy::too_many_arguments)]
+fn settle_state(
+    ctx: &Context,
+    tree: &mut Tree,
+    eq: &str,
+    o: &str,
+    s: &str,
+    query_labels: &[String],
+    restated: &mut HashMap<String, String>,
+    w: &mut Work,
+) {
+    let state_ok = best_state_slot(tree, o, s).is_some();
+    w.case = Some(match (eq == o, state_ok) {
+        (true, true) => 1,
+        (false, true) => 2,
+        (true, false) => 3,
+        (false, false) => 4,
+    });
+    if category(s) == Category::Other && !s.is_empty() {
+        w.reasons.push(format!(
+            "state '{s}' is not in the state taxonomy: kept the tree's state"
+        ));
+    } else if state_ok && best_exact(tree, o, s).is_none() {
+        w.reasons.push(format!(
+            "state '{s}' matched by category ({})",
+            category(s).name()
+        ));
+    }
+    if !state_ok {
+        if let Some(first) = restated.get(o) {
+            w.reasons.push(format!(
+                "kept in the state '{first}' chosen for the same ingredient earlier"
+            ));
+        } else {
+            match restate(ctx, tree, eq, o, s, query_labels) {
+                Ok(reason) => {
+                    restated.insert(o.to_string(), s.to_string());
+                    w.reasons.push(reason);
+                }
+                Err(reason) => w.reasons.push(reason),
+            }
+        }
+    }
+    w.planned = true;
 }
 
 /// The equivalent of `o`: an override, itself when it is a FOON label, else the most similar label of the
@@ -844,10 +910,17 @@ fn add_branch(
     s: &str,
     query_labels: &[String],
 ) -> Result<(String, String), String> {
-    let c = category(s);
     let taken: HashSet<usize> = HashSet::new();
     let mut picked = None;
-    for (n, in_state) in pick_nodes(ctx, eq, s).into_iter().take(8) {
+    let candidates = pick_nodes(ctx, eq, s);
+    let count = candidates.len();
+    // the best few in the state, and always the ingredient as it comes from the kitchen (last)
+    let tried = candidates
+        .into_iter()
+        .enumerate()
+        .filter(|(i, _)| *i < 8 || *i + 1 == count)
+        .map(|x| x.1);
+    for (n, in_state) in tried {
         if ctx.kb.kitchen[n] {
             picked = Some((n, in_state, Default::default()));
             break;
@@ -858,12 +931,15 @@ fn add_branch(
             break;
         }
     }
-    let Some((n, in_state, r)) = picked else {
-        return Err(format!(
-            "'{eq}' has no usable object node in the knowledge base"
-        ));
-    };
     let before = tree.slots.len();
+    let Some((n, in_state, r)) = picked else {
+        // FOON only makes it together with other ingredients (a prepared product such as taco
+        // seasoning, whose recipe would bring another dish along): it is bought ready
+        let bare = tree.add_slot(ObjectNode::new(eq, Vec::new()));
+        let how =
+            format!("'{eq}' taken as bought (FOON makes it only together with other ingredients)");
+        return finish_branch(ctx, tree, eq, o, s, before, bare, String::new(), false, how);
+    };
     let mut slot_of: HashMap<NodeId, SlotId> = HashMap::new();
     // utensils the tree already starts with are shared rather than duplicated
     for x in tree.live_slots() {
@@ -883,12 +959,11 @@ fn add_branch(
     } else {
         tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted)
     };
-    let mut last = match slot_of.get(&n) {
+    let last = match slot_of.get(&n) {
         Some(&x) => x,
         None => tree.add_slot(ctx.kb.nodes[n].clone()),
     };
-    let mut chosen_state = state_text(&ctx.kb.nodes[n]);
-    let mut how = format!(
+    let how = format!(
         "'{}' taken from FOON{}",
         ctx.kb.nodes[n],
         if added.is_empty() {
@@ -897,6 +972,33 @@ fn add_branch(
             format!(" with {} unit(s) making it", added.len())
         }
     );
+    let state = state_text(&ctx.kb.nodes[n]);
+    finish_branch(ctx, tree, eq, o, s, before, last, state, in_state, how)
+}
+
+/// The rest of a case-4 branch whose last node is `last`: a unit bringing it to the state `s` when it is
+/// not in it (the motion FOON uses most for that state), the renaming to the query's name, and the
+/// attachment where the dish takes such ingredients.
+#[allow(clippy::too_many_arguments)]
+fn finish_branch(
+    ctx: &Context,
+    tree: &mut Tree,
+    eq: &str,
+    o: &str,
+    s: &str,
+    before: SlotId,
+    mut last: SlotId,
+    mut chosen_state: String,
+    in_state: bool,
+    mut how: String,
+) -> Result<(String, String), String> {
+    let c = category(s);
+    if !in_state && c.is_starting() && chosen_state.is_empty() && !s.is_empty() {
+        // an ingredient as bought is in the starting state asked for
+        let node = map_states(&tree.slots[last].node, s);
+        tree.slots[last].node = node;
+        chosen_state = s.to_string();
+    }
     if !in_state && !c.is_starting() && c != Category::Other {
         if let Some(motion) = ctx.index.motion_for(s) {
             let node = ObjectNode::new(eq, vec![State::plain(s)]);
@@ -929,6 +1031,13 @@ fn add_branch(
         chosen_state,
         format!("not in the reference tree: {how}; added at '{motion}'"),
     ))
+}
+
+/// A node without food states given the starting state `s`.
+fn map_states(node: &ObjectNode, s: &str) -> ObjectNode {
+    let mut states = node.states.clone();
+    states.push(State::plain(s));
+    ObjectNode::new(node.label.clone(), states)
 }
 
 /// Removes `labels` from every list of contents; units touching a changed node are marked renamed.

@@ -157,6 +157,8 @@ fn progress_line(
     let mut at = start;
     let mut seen: HashSet<SlotId> = HashSet::from([start]);
     let mut from = 0usize;
+    let mut end_product = None;
+    let mut last_step: Option<(usize, TUnitId)> = None;
     loop {
         let next = order.iter().enumerate().skip(from).find_map(|(pos, &u)| {
             let unit = &tree.units[u];
@@ -170,7 +172,21 @@ fn progress_line(
                 .find(|&o| tree.slots[o].node.label == label && !seen.contains(&o));
             Some((pos, u, out))
         });
-        let Some((pos, u, out)) = next else { break };
+        let Some((pos, u, out)) = next else {
+            // its last node sits in a vessel: what the vessel's contents become
+            if let Some((pos, u)) = last_step {
+                let unit: &super::tree::TUnit = &tree.units[u];
+                end_product = unit
+                    .outputs
+                    .iter()
+                    .map(|o| o.0)
+                    .filter(|&x| is_utensil(&tree.slots[x].node.label))
+                    .find(|&x| tree.slots[x].node.ingredients().iter().any(|i| i == label))
+                    .and_then(|x| product_of(tree, order, pos, x, label));
+            }
+            break;
+        };
+        last_step = Some((pos, u));
         motions.push(tree.units[u].motion.clone());
         match out {
             Some(o) => {
@@ -197,6 +213,7 @@ fn progress_line(
                         physical_state: format!("in {}", n.label),
                         location: location(n),
                     });
+                    end_product = product_of(tree, order, pos, o, label);
                 } else {
                     motions.pop();
                 }
@@ -208,8 +225,46 @@ fn progress_line(
         ingredient: label.to_string(),
         state: states,
         motion: motions,
-        end_product: tree.slots[tree.goal].node.label.clone(),
+        end_product: end_product.unwrap_or_else(|| tree.slots[tree.goal].node.label.clone()),
     })
+}
+
+/// The product an ingredient goes into (section IV-A): the first food node listing it among its
+/// contents, following the vessel it was put in (flour in the bowl → the batter mixed in that bowl).
+fn product_of(
+    tree: &Tree,
+    order: &[TUnitId],
+    pos: usize,
+    entered: SlotId,
+    label: &str,
+) -> Option<String> {
+    let lists = |x: SlotId| tree.slots[x].node.ingredients().iter().any(|i| i == label);
+    let food = |x: SlotId| !is_utensil(&tree.slots[x].node.label);
+    if food(entered) {
+        return Some(tree.slots[entered].node.label.clone());
+    }
+    // a vessel holding it: the first food made from that vessel's contents
+    let mut vessels: HashSet<SlotId> = HashSet::from([entered]);
+    for &u in &order[pos + 1..] {
+        let unit = &tree.units[u];
+        if !unit.inputs.iter().any(|i| vessels.contains(&i.0)) {
+            continue;
+        }
+        // what is made in the vessel is made of its contents, even where FOON's list omits them
+        // (a new product: not an input moved along, like the vanilla poured into the same bowl)
+        let new = |o: &&(SlotId, bool)| {
+            let l = &tree.slots[o.0].node.label;
+            !unit.inputs.iter().any(|i| tree.slots[i.0].node.label == *l)
+        };
+        let made = |o: &&(SlotId, bool)| food(o.0) && tree.slots[o.0].node.label != label;
+        let listing = unit.outputs.iter().filter(made).find(|o| lists(o.0));
+        let fresh = || unit.outputs.iter().filter(made).find(new);
+        if let Some(&(x, _)) = listing.or_else(fresh) {
+            return Some(tree.slots[x].node.label.clone());
+        }
+        vessels.extend(unit.outputs.iter().map(|o| o.0).filter(|&x| lists(x)));
+    }
+    None
 }
 
 fn verb(motion: &str) -> String {
