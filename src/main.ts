@@ -2,6 +2,7 @@
 // that makes the page work offline after the first visit.
 
 import { ALL_VIEWS, createPlannerApp } from "./app/app";
+import { openKbPersistence } from "./app/kb-store";
 import { EXAMPLES, queryFromSearch, queryToSearch } from "./app/query";
 import { bindThemePicker } from "./app/theme";
 import { syncQueryWithUrl } from "./app/url-sync";
@@ -26,6 +27,7 @@ function start(): void {
     kbUrl: KB_URL,
     embeddingsUrl: EMBEDDINGS_URL,
     views: ALL_VIEWS,
+    persistence: openKbPersistence(),
     query: initial,
     events: {
       plan: () => {

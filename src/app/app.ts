@@ -7,6 +7,7 @@ import type { PlannerService } from "../worker/client";
 import { download, el, plural } from "./dom";
 import { NO_SELECTION, type Selection } from "./model/tree";
 import { isPlannable, toPlanRequest, type AppQuery } from "./query";
+import { StaleSaveError, type KbPersistence, type SavedKnowledgeBase } from "./kb-store";
 import { Store } from "./store";
 import { mountExportPanel, type DownloadFormat } from "./views/export-panel";
 import { mountKnowledgeBasePanel } from "./views/kb-panel";
@@ -33,6 +34,8 @@ export interface AppOptions {
   /** Absolute URL of the food embedding table (substitutes by meaning); none: exact names only. */
   embeddingsUrl?: string;
   views: readonly ViewName[];
+  /** Where the user's own knowledge base is saved across reloads and shared with other tabs; none: memory only. */
+  persistence?: Promise<KbPersistence>;
   query?: AppQuery;
   events?: AppEvents;
 }
@@ -114,26 +117,94 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
     setQuery({ ...store.state.query, overrides });
   };
 
-  async function loadKnowledgeBase(url: string): Promise<void> {
+  let persistence: KbPersistence | null = null;
+  /** The user's files in the planner now (null: the bundled knowledge base), kept for downloading. */
+  let customFiles: KnowledgeBaseFile[] | null = null;
+  let kbSeq = 0;
+
+  async function loadKnowledgeBase(url: string, notice: string | null = null): Promise<boolean> {
     kbUrl = url;
+    const seq = ++kbSeq;
     try {
       const kb = await planner.loadUrl(url, options.embeddingsUrl);
-      store.set({ kb, kbSource: "bundled", kbError: null });
+      if (seq !== kbSeq || destroyed) return false;
+      customFiles = null;
+      store.set({ kb, kbSource: "bundled", kbError: null, kbNotice: notice, kbUnsaved: null });
       await replan();
+      return true;
     } catch (e) {
       store.set({ kbError: `Could not load ${url}: ${describeError(reportError(e))}` });
+      return false;
+    }
+  }
+
+  /** Loads files into the planner; false (and the previous knowledge base stays) when they do not load. */
+  async function applyFiles(files: KnowledgeBaseFile[], notice: string | null): Promise<boolean> {
+    const seq = ++kbSeq;
+    try {
+      const kb = await planner.loadFiles(files, options.embeddingsUrl);
+      if (seq !== kbSeq || destroyed) return false;
+      customFiles = files;
+      store.set({ kb, kbSource: "custom", kbError: null, kbNotice: notice });
+      await replan();
+      return true;
+    } catch (e) {
+      store.set({ kbError: `Not loaded: ${describeError(reportError(e))}` });
+      return false;
+    }
+  }
+
+  const filesNotice = (n: number, what: string): string => `Your knowledge base (${plural(n, "file")}) ${what}`;
+
+  /** Another tab saved a newer choice: load it here too. */
+  async function applySaved(saved: SavedKnowledgeBase): Promise<void> {
+    if (saved.files === null) await loadKnowledgeBase(options.kbUrl, "Another tab switched back to the bundled knowledge base; so did this one.");
+    else if (await applyFiles(saved.files, filesNotice(saved.files.length, "was loaded in another tab; it is loaded here too."))) store.set({ kbUnsaved: null });
+  }
+
+  /** Writes the choice through to the browser's storage; when it cannot, the files stay in memory and the panel says so. */
+  async function persist(files: KnowledgeBaseFile[] | null, savedAt: number): Promise<void> {
+    if (persistence === null) return;
+    try {
+      await persistence.save(files, savedAt);
+      if (!destroyed) store.set({ kbUnsaved: null });
+    } catch (e) {
+      if (destroyed) return;
+      if (e instanceof StaleSaveError) {
+        await applySaved(e.current);
+        return;
+      }
+      const reason = e instanceof Error ? e.message : String(e);
+      store.set({ kbUnsaved: files === null ? null : { reason, names: files.map((f) => f.name) } });
     }
   }
 
   async function loadFiles(files: File[]): Promise<void> {
-    try {
-      const kb = await planner.loadFiles(await readFiles(files), options.embeddingsUrl);
-      store.set({ kb, kbSource: "custom", kbError: null });
-      await replan();
-    } catch (e) {
-      // the previous knowledge base stays loaded
-      store.set({ kbError: `Not loaded: ${describeError(reportError(e))}` });
+    const savedAt = Date.now();
+    const read = await readFiles(files);
+    if (await applyFiles(read, null)) await persist(read, savedAt);
+  }
+
+  async function useBundled(): Promise<void> {
+    const savedAt = Date.now();
+    if (await loadKnowledgeBase(options.kbUrl)) await persist(null, savedAt);
+  }
+
+  function downloadFile(index: number): void {
+    const file = customFiles?.[index];
+    if (file !== undefined) download(file.name, new Blob([file.bytes as Uint8Array<ArrayBuffer>], { type: "text/plain" }));
+  }
+
+  /** On start: the user's saved knowledge base if there is one, else the bundled one. */
+  async function start(): Promise<void> {
+    if (options.persistence !== undefined) {
+      persistence = await options.persistence;
+      if (destroyed) return;
+      cleanups.push(persistence.onRemoteChange((saved) => void applySaved(saved)));
+      const saved = await persistence.restore().catch(() => null);
+      if (saved !== null && (await applyFiles(saved, filesNotice(saved.length, "restored.")))) return;
     }
+    await loadKnowledgeBase(kbUrl);
   }
 
   async function exportAs(format: DownloadFormat): Promise<void> {
@@ -219,7 +290,7 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
   if (has("kb")) {
     const host = section("kb");
     tools.append(host);
-    cleanups.push(mountKnowledgeBasePanel(host, store, { loadFiles: (f) => void loadFiles(f), useBundled: () => void loadKnowledgeBase(options.kbUrl) }, root));
+    cleanups.push(mountKnowledgeBasePanel(host, store, { loadFiles: (f) => void loadFiles(f), useBundled: () => void useBundled(), downloadFile }, root));
   }
   if (tools.childElementCount > 0) results.append(tools);
 
@@ -239,13 +310,15 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
   );
 
   if (options.query !== undefined) store.set({ query: options.query });
-  void loadKnowledgeBase(kbUrl);
+  void start();
 
   return {
     store,
     root,
     setQuery,
-    loadKnowledgeBase,
+    loadKnowledgeBase: async (url) => {
+      await loadKnowledgeBase(url);
+    },
     exportAs,
     restyle: () => tree?.restyle(),
     destroy: () => {
@@ -253,6 +326,7 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
       for (const c of cleanups) c();
       tree?.destroy();
       planner.dispose();
+      persistence?.close();
       root.replaceChildren();
     },
   };

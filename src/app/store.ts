@@ -14,6 +14,10 @@ export interface AppState {
   /** Whether the loaded knowledge base is the bundled one or the user's files. */
   kbSource: "bundled" | "custom";
   kbError: string | null;
+  /** News about the knowledge base: restored after a reload, changed in another tab. */
+  kbNotice: string | null;
+  /** The user's files could not be saved in the browser (full, unavailable): why, and their names. */
+  kbUnsaved: { reason: string; names: string[] } | null;
   plan: Plan | null;
   /** Milliseconds the last plan took in the worker. */
   planMs: number | null;
@@ -27,6 +31,8 @@ export const INITIAL_STATE: AppState = {
   kb: null,
   kbSource: "bundled",
   kbError: null,
+  kbNotice: null,
+  kbUnsaved: null,
   plan: null,
   planMs: null,
   planning: false,

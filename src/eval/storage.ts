@@ -55,20 +55,21 @@ export class StorageError extends Error {
   }
 }
 
-function toStorageError(e: unknown, what: string): StorageError {
+/** Wraps an IndexedDB failure (shared with the planner page's knowledge-base store). */
+export function toStorageError(e: unknown, what: string): StorageError {
   const name = e instanceof DOMException ? e.name : "";
   const quota = name === "QuotaExceededError" || (e instanceof Error && /quota/i.test(e.message));
   return new StorageError(`${what}: ${e instanceof Error ? e.message : String(e)}`, quota);
 }
 
-function request<T>(req: IDBRequest<T>): Promise<T> {
+export function request<T>(req: IDBRequest<T>): Promise<T> {
   return new Promise((resolve, reject) => {
     req.onsuccess = () => resolve(req.result);
     req.onerror = () => reject(req.error);
   });
 }
 
-function done(tx: IDBTransaction): Promise<void> {
+export function done(tx: IDBTransaction): Promise<void> {
   return new Promise((resolve, reject) => {
     tx.oncomplete = () => resolve();
     tx.onerror = () => reject(tx.error);

@@ -9,6 +9,8 @@ import type { AppState, Store } from "../store";
 export interface KnowledgeBaseActions {
   loadFiles(files: File[]): void;
   useBundled(): void;
+  /** Downloads one of the user's files (by index), when the browser could not save them. */
+  downloadFile(index: number): void;
 }
 
 function statsRows(stats: Stats): [string, string][] {
@@ -27,12 +29,18 @@ export function mountKnowledgeBasePanel(host: HTMLElement, store: Store, actions
   const inputId = uid("kb-files");
   const status = el("p", { class: "kb-status", role: "status" });
   const error = el("p", { class: "kb-error", role: "alert" });
+  const notice = el("p", { class: "kb-notice", role: "status" });
+  const unsavedText = el("p", {});
+  const unsavedFiles = el("ul", { class: "kb-unsaved-files" });
+  const unsaved = el("div", { class: "kb-unsaved", role: "alert" }, unsavedText, unsavedFiles);
   const input = el("input", { id: inputId, type: "file", multiple: true, accept: ".txt,.foon,text/plain", class: "kb-input" });
   const bundled = el("button", { type: "button", class: "kb-bundled", text: "Use the bundled knowledge base" });
   const body = el("tbody");
   host.replaceChildren(
     el("h2", { text: "Knowledge base" }),
     status,
+    notice,
+    unsaved,
     error,
     el(
       "div",
@@ -72,7 +80,27 @@ export function mountKnowledgeBasePanel(host: HTMLElement, store: Store, actions
   dropTarget.addEventListener("drop", onDrop);
 
   const update = (state: AppState, previous: AppState | null): void => {
-    if (previous !== null && state.kb === previous.kb && state.kbError === previous.kbError && state.kbSource === previous.kbSource) return;
+    if (
+      previous !== null &&
+      state.kb === previous.kb &&
+      state.kbError === previous.kbError &&
+      state.kbSource === previous.kbSource &&
+      state.kbNotice === previous.kbNotice &&
+      state.kbUnsaved === previous.kbUnsaved
+    )
+      return;
+    notice.textContent = state.kbNotice ?? "";
+    notice.hidden = state.kbNotice === null;
+    unsaved.hidden = state.kbUnsaved === null;
+    unsavedText.textContent =
+      state.kbUnsaved === null ? "" : `Your files are loaded but won't survive a reload (${state.kbUnsaved.reason}). Download them to keep them:`;
+    unsavedFiles.replaceChildren(
+      ...(state.kbUnsaved?.names ?? []).map((name, i) => {
+        const button = el("button", { type: "button", class: "kb-download", text: `Download ${name}` });
+        button.addEventListener("click", () => actions.downloadFile(i));
+        return el("li", {}, button);
+      }),
+    );
     const kb = state.kb;
     status.textContent =
       kb === null
