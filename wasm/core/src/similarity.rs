@@ -20,6 +20,20 @@ pub trait Similarity {
         scored
     }
 
+    /// `rank` over a candidate list that never changes for a given `set` id (the labels of one loaded
+    /// knowledge base): an implementation may remember the answer per (query, set, top). The default
+    /// ranks afresh.
+    fn rank_in_set(
+        &self,
+        query: &str,
+        set: u64,
+        candidates: &[&str],
+        top: usize,
+    ) -> Vec<(String, f32)> {
+        let _ = set;
+        self.rank(query, candidates, top)
+    }
+
     /// Whether a ranked substitute should be shown as doubtful (the UI then asks the user to pick from
     /// the top candidates). The default trusts only exact matches.
     fn low_confidence(&self, query: &str, label: &str, similarity: f32) -> bool {

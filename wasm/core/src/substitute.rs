@@ -366,7 +366,16 @@ pub struct EmbeddingSimilarity {
     /// Below this similarity a substitute is flagged as low confidence (calibrated on the dev set).
     confident_from: f32,
     cache: Mutex<HashMap<String, Arc<Profile>>>,
+    /// Answers of `rank_in_set` per (query, candidate set, top): ranking every label of a knowledge base
+    /// is the costliest step of planning, and ingredient names recur from query to query.
+    ranked: Mutex<HashMap<RankKey, Vec<(String, f32)>>>,
 }
+
+/// (query, candidate set, top) of a remembered ranking.
+type RankKey = (String, u64, usize);
+
+/// Rankings kept by `rank_in_set`; the cache starts again when it is full.
+const RANK_CACHE_LIMIT: usize = 20_000;
 
 /// Taxonomy members that vote on the category of an unlisted name.
 const INFER_NEIGHBOURS: usize = 7;
@@ -435,6 +444,7 @@ impl EmbeddingSimilarity {
             member_vectors,
             confident_from: CONFIDENT_FROM,
             cache: Mutex::new(HashMap::new()),
+            ranked: Mutex::new(HashMap::new()),
         }
     }
 
@@ -700,6 +710,32 @@ impl Similarity for EmbeddingSimilarity {
 
     fn rank(&self, query: &str, candidates: &[&str], top: usize) -> Vec<(String, f32)> {
         self.rank_profiles(query, candidates, top)
+    }
+
+    fn rank_in_set(
+        &self,
+        query: &str,
+        set: u64,
+        candidates: &[&str],
+        top: usize,
+    ) -> Vec<(String, f32)> {
+        if query.len() > MAX_CACHED_NAME {
+            return self.rank_profiles(query, candidates, top);
+        }
+        let key = (query.to_string(), set, top);
+        if let Ok(cache) = self.ranked.lock() {
+            if let Some(r) = cache.get(&key) {
+                return r.clone();
+            }
+        }
+        let r = self.rank_profiles(query, candidates, top);
+        if let Ok(mut cache) = self.ranked.lock() {
+            if cache.len() >= RANK_CACHE_LIMIT {
+                cache.clear();
+            }
+            cache.insert(key, r.clone());
+        }
+        r
     }
 
     fn low_confidence(&self, query: &str, label: &str, similarity: f32) -> bool {

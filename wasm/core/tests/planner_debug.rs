@@ -112,3 +112,39 @@ fn print_one_plan() {
         eprintln!("VIOLATION {v}");
     }
 }
+
+/// `PLAN_TIME=1 cargo test --release --test planner_debug time_dev_plans -- --nocapture`: native plan
+/// times over the dev queries (figures only, never asserted).
+#[test]
+fn time_dev_plans() {
+    if std::env::var_os("PLAN_TIME").is_none() {
+        return;
+    }
+    let kb = load(&foon111("plain"));
+    let index = PlannerIndex::new(&kb);
+    let sim = similarity();
+    let mut files = Vec::new();
+    queries_under(&shared_dir().join("recipes").join("dev"), &mut files);
+    let queries: Vec<Query> = files
+        .iter()
+        .map(|f| serde_json::from_slice(&std::fs::read(f).unwrap()).unwrap())
+        .collect();
+    let mut times = Vec::new();
+    for round in 0..4 {
+        for q in &queries {
+            let started = std::time::Instant::now();
+            let _ = plan(&kb, &index, sim.as_ref(), &PlanRequest::new(q.clone()));
+            if round > 0 {
+                times.push(started.elapsed().as_secs_f64() * 1000.0);
+            }
+        }
+    }
+    times.sort_by(f64::total_cmp);
+    let at = |p: f64| times[((times.len() as f64 * p) as usize).min(times.len() - 1)];
+    eprintln!(
+        "native plan: median {:.3} ms, p95 {:.3} ms, max {:.3} ms",
+        at(0.5),
+        at(0.95),
+        times[times.len() - 1]
+    );
+}

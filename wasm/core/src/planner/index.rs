@@ -6,10 +6,13 @@ use crate::kb::KnowledgeBase;
 use crate::model::NodeId;
 use crate::taxonomy::is_utensil;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// Built once per knowledge base (`PlannerIndex::new`) and passed to every `plan` call.
 #[derive(Clone, Debug, Default)]
 pub struct PlannerIndex {
+    /// Unique for the process: names this index's label list for `Similarity::rank_in_set`.
+    pub(crate) id: u64,
     /// Object nodes per label (ids ascending).
     pub(crate) by_label: HashMap<String, Vec<NodeId>>,
     /// Distinct ingredient labels (not utensils), sorted.
@@ -24,9 +27,16 @@ pub struct PlannerIndex {
     motion_for_category: HashMap<Category, String>,
     /// Motion -> the utensil node most used as an input of it.
     utensil_for_motion: HashMap<String, NodeId>,
+    /// Every name of an object or of a listed content, by id.
+    label_names: Vec<String>,
+    label_ids: HashMap<String, u32>,
+    /// Per unit, the ids of the ingredients it handles: its non-utensil inputs and their contents.
+    unit_ingredients: Vec<Vec<u32>>,
     /// For each node, the subgraphs (sorted) in which some unit makes it (not merely passes it on).
     made_in: Vec<Vec<String>>,
 }
+
+static NEXT_ID: AtomicU64 = AtomicU64::new(1);
 
 fn best<K: Ord + Clone>(counts: &BTreeMap<K, u32>) -> Option<K> {
     // highest count; ties to the smallest key (BTreeMap order), independent of insertion order
@@ -127,7 +137,47 @@ impl PlannerIndex {
                 }
             }
         }
+        let mut label_names: Vec<String> = Vec::new();
+        let mut label_ids: HashMap<String, u32> = HashMap::new();
+        let mut intern = |l: &str| -> u32 {
+            if let Some(&i) = label_ids.get(l) {
+                return i;
+            }
+            let i = label_names.len() as u32;
+            label_names.push(l.to_string());
+            label_ids.insert(l.to_string(), i);
+            i
+        };
+        let unit_ingredients = kb
+            .units
+            .iter()
+            .map(|unit| {
+                let mut ids: Vec<u32> = Vec::new();
+                for n in unit.input_nodes() {
+                    let node = &kb.nodes[n];
+                    if !is_utensil(&node.label) {
+                        ids.push(intern(&node.label));
+                    }
+                    // every listed content (contains, greased, garnished...), as g(u) always had it
+                    for st in &node.states {
+                        if let Some(crate::model::StateArg::Ingredients(list)) = &st.arg {
+                            ids.extend(list.iter().map(|l| intern(l)));
+                        }
+                    }
+                }
+                ids.sort_unstable();
+                ids.dedup();
+                ids
+            })
+            .collect();
+        for n in &kb.nodes {
+            intern(&n.label);
+        }
         PlannerIndex {
+            label_names,
+            label_ids,
+            unit_ingredients,
+            id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
             by_label,
             ingredient_labels,
             label_state,
@@ -158,6 +208,28 @@ impl PlannerIndex {
         kb.provenance
             .get(u)
             .is_some_and(|p| p.iter().any(|s| made.binary_search(s).is_err()))
+    }
+
+    pub(crate) fn label_id(&self, label: &str) -> Option<u32> {
+        self.label_ids.get(label).copied()
+    }
+
+    pub(crate) fn label_name(&self, id: u32) -> &str {
+        self.label_names
+            .get(id as usize)
+            .map(String::as_str)
+            .unwrap_or("")
+    }
+
+    pub(crate) fn label_count(&self) -> usize {
+        self.label_names.len()
+    }
+
+    pub(crate) fn unit_ingredients(&self, u: usize) -> &[u32] {
+        self.unit_ingredients
+            .get(u)
+            .map(Vec::as_slice)
+            .unwrap_or(&[])
     }
 
     pub(crate) fn nodes_of(&self, label: &str) -> &[NodeId] {

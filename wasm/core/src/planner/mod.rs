@@ -9,6 +9,7 @@ mod modify;
 mod output;
 mod retrieve;
 mod schedule;
+mod score;
 pub mod states;
 mod tree;
 
@@ -61,11 +62,11 @@ pub fn plan(
             "the knowledge base has no goal node with a functional unit that makes it",
         )
     })?;
+    let scorer = score::Scorer::new(similarity, index, &labels);
     let reference = retrieve::retrieve(
         kb,
         index,
-        similarity,
-        &labels,
+        &scorer,
         chosen.goal.node,
         Some(&chosen.goal.subgraph),
         &HashSet::new(),
@@ -84,6 +85,7 @@ pub fn plan(
         class,
         overrides: &overrides,
         goal_subgraph: &chosen.goal.subgraph,
+        scorer: &scorer,
     };
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);

@@ -19,6 +19,7 @@ pub(crate) struct Context<'a> {
     pub class: Option<u32>,
     pub overrides: &'a BTreeMap<String, String>,
     pub goal_subgraph: &'a str,
+    pub scorer: &'a super::score::Scorer<'a>,
 }
 
 /// Food states of a node (not its place, contents or an appliance's condition).
@@ -107,15 +108,6 @@ pub(crate) fn modify(
         .iter()
         .map(|i| i.object.as_str())
         .collect();
-    let query_labels: Vec<String> = {
-        let mut seen = HashSet::new();
-        query
-            .ingredients
-            .iter()
-            .filter(|i| seen.insert(i.object.clone()))
-            .map(|i| i.object.clone())
-            .collect()
-    };
     let mut claimed: HashSet<String> = HashSet::new();
     let mut restated: HashMap<String, String> = HashMap::new();
     let mut works: Vec<Work> = Vec::with_capacity(query.ingredients.len());
@@ -197,7 +189,7 @@ pub(crate) fn modify(
             claimed.insert(eq.clone());
         }
         claimed.insert(o.to_string());
-        settle_state(ctx, tree, &eq, o, s, &query_labels, &mut restated, &mut w);
+        settle_state(ctx, tree, &eq, o, s, &mut restated, &mut w);
         w.planned = true;
         works.push(w);
     }
@@ -244,11 +236,11 @@ pub(crate) fn modify(
                 if let Some(m) = w.matched.as_mut() {
                     m.state = tree_state;
                 }
-                settle_state(ctx, tree, &eq, o, &s, &query_labels, &mut restated, w);
+                settle_state(ctx, tree, &eq, o, &s, &mut restated, w);
                 continue;
             }
             // a case-2 substitute was renamed in the tree already: its branch comes from `eq` again
-            match add_branch(ctx, tree, &eq, o, &s, &query_labels) {
+            match add_branch(ctx, tree, &eq, o, &s) {
                 Ok((state, reason)) => {
                     if lost {
                         w.reasons.push(format!(
@@ -315,7 +307,6 @@ fn settle_state(
     eq: &str,
     o: &str,
     s: &str,
-    query_labels: &[String],
     restated: &mut HashMap<String, String>,
     w: &mut Work,
 ) {
@@ -342,7 +333,7 @@ fn settle_state(
                 "kept in the state '{first}' chosen for the same ingredient earlier"
             ));
         } else {
-            match restate(ctx, tree, eq, o, s, query_labels) {
+            match restate(ctx, tree, eq, o, s) {
                 Ok(reason) => {
                     restated.insert(o.to_string(), s.to_string());
                     w.reasons.push(reason);
@@ -368,7 +359,7 @@ fn equivalent(
         .iter()
         .map(String::as_str)
         .collect();
-    let ranked = ctx.sim.rank(o, &all, 6);
+    let ranked = ctx.sim.rank_in_set(o, ctx.index.id, &all, 6);
     let alternatives = |eq: &str| -> Vec<Alternative> {
         ranked
             .iter()
@@ -540,14 +531,7 @@ fn replace_states(node: &ObjectNode, old: &[String], new: &str) -> ObjectNode {
 }
 
 /// Cases 3 and 4: brings the ingredient `o` (already in the tree; `eq` in FOON) to the state `s`.
-fn restate(
-    ctx: &Context,
-    tree: &mut Tree,
-    eq: &str,
-    o: &str,
-    s: &str,
-    query_labels: &[String],
-) -> Result<String, String> {
+fn restate(ctx: &Context, tree: &mut Tree, eq: &str, o: &str, s: &str) -> Result<String, String> {
     let order = tree.order();
     let slots = tree.slots_with_label(o);
     let first_use = |x: SlotId| {
@@ -581,8 +565,7 @@ fn restate(
         let r = retrieve(
             ctx.kb,
             ctx.index,
-            ctx.sim,
-            query_labels,
+            ctx.scorer,
             kb_node,
             Some(ctx.goal_subgraph),
             &taken,
@@ -908,7 +891,6 @@ fn add_branch(
     eq: &str,
     o: &str,
     s: &str,
-    query_labels: &[String],
 ) -> Result<(String, String), String> {
     let taken: HashSet<usize> = HashSet::new();
     let mut picked = None;
@@ -925,7 +907,7 @@ fn add_branch(
             picked = Some((n, in_state, Default::default()));
             break;
         }
-        let r = retrieve(ctx.kb, ctx.index, ctx.sim, query_labels, n, None, &taken);
+        let r = retrieve(ctx.kb, ctx.index, ctx.scorer, n, None, &taken);
         if private_branch(ctx.kb, &r, eq) {
             picked = Some((n, in_state, r));
             break;

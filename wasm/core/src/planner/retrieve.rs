@@ -7,11 +7,10 @@
 //! a valid execution order (every unit after the units making its inputs), unlike a reversed BFS order.
 
 use super::index::PlannerIndex;
+use super::score::Scorer;
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, UnitId};
-use crate::similarity::Similarity;
-use crate::taxonomy::is_utensil;
-use std::collections::{BTreeSet, HashMap, HashSet, VecDeque};
+use std::collections::{HashMap, HashSet, VecDeque};
 
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Retrieved {
@@ -21,47 +20,6 @@ pub(crate) struct Retrieved {
     pub chosen: HashMap<NodeId, UnitId>,
     /// Nodes that needed a unit but every unit making them would close a cycle (used as they are).
     pub blocked: Vec<NodeId>,
-}
-
-/// Ingredient labels a unit handles: its non-utensil inputs and the contents of its inputs.
-fn unit_ingredients(kb: &KnowledgeBase, u: UnitId) -> BTreeSet<&str> {
-    let mut out = BTreeSet::new();
-    if let Some(unit) = kb.units.get(u) {
-        for n in unit.input_nodes() {
-            let node = &kb.nodes[n];
-            if !is_utensil(&node.label) {
-                out.insert(node.label.as_str());
-            }
-            for s in &node.states {
-                if let Some(crate::model::StateArg::Ingredients(list)) = &s.arg {
-                    out.extend(list.iter().map(String::as_str));
-                }
-            }
-        }
-    }
-    out
-}
-
-/// g(u): similarity-weighted overlap of the query ingredients and the unit's ingredients.
-pub(crate) fn heuristic(
-    kb: &KnowledgeBase,
-    sim: &dyn Similarity,
-    query: &[String],
-    u: UnitId,
-) -> f32 {
-    let have = unit_ingredients(kb, u);
-    query
-        .iter()
-        .map(|q| {
-            if have.contains(q.as_str()) {
-                1.0
-            } else {
-                have.iter()
-                    .map(|a| sim.similarity(q, a))
-                    .fold(0.0f32, f32::max)
-            }
-        })
-        .sum()
 }
 
 /// Whether `target` can be reached from `from` following chosen producers (node → unit → inputs).
@@ -94,8 +52,7 @@ fn depends_on(
 pub(crate) fn retrieve(
     kb: &KnowledgeBase,
     index: &PlannerIndex,
-    sim: &dyn Similarity,
-    query: &[String],
+    scorer: &Scorer,
     root: NodeId,
     prefer: Option<&str>,
     taken: &HashSet<UnitId>,
@@ -108,7 +65,6 @@ pub(crate) fn retrieve(
     // each node with the unit that needs it (None for the root)
     let mut queue: VecDeque<(NodeId, Option<UnitId>)> = VecDeque::from([(root, None)]);
     visited.insert(root);
-    let mut scores: HashMap<UnitId, f32> = HashMap::new();
     while let Some((node, parent)) = queue.pop_front() {
         if node != root && kb.kitchen.get(node).copied().unwrap_or(true) {
             continue;
@@ -142,9 +98,7 @@ pub(crate) fn retrieve(
                 cyclic_in_recipe |= same_recipe;
                 continue; // would close a cycle
             }
-            let g = *scores
-                .entry(u)
-                .or_insert_with(|| heuristic(kb, sim, query, u));
+            let g = scorer.unit(u);
             let reused = in_tree.contains(&u) || taken.contains(&u);
             let made_inputs = unit.input_nodes().filter(|&n| !kb.kitchen[n]).count();
             // larger is better: a unit already in the tree, then one of the reference recipe (so that
