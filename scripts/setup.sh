@@ -29,6 +29,7 @@ fi
 step "npm packages"
 if [ -f package-lock.json ]; then npm ci --no-audit --no-fund --loglevel=warn; else npm install --no-audit --no-fund --loglevel=warn; fi
 
-step "WebAssembly build"
+step "WebAssembly build and knowledge-base bundle"
 npm run build:wasm
+npm run build:kb
 echo "setup done"

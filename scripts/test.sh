@@ -27,6 +27,9 @@ npm run --silent build:wasm
 step "tsc --noEmit"
 npx tsc --noEmit
 
+step "knowledge-base bundle (starter KB; unit tests read it too)"
+npm run --silent build:kb
+
 step "vitest (unit tests on the real WASM build)"
 npx vitest run
 
@@ -35,7 +38,6 @@ SHARED="${FOON_SHARED:-../shared}"
 npm run --silent eval -- --kb "$SHARED/foon/subgraphs-plain" --queries "$SHARED/recipes/dev" --both --quiet --out test-results/eval
 
 step "app build (vite, starter knowledge base)"
-npm run --silent build:kb
 npx vite build --logLevel warn
 
 step "end-to-end tests (headless Chromium)"
