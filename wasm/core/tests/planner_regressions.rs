@@ -16,7 +16,6 @@ fn plan(kb_text: &str, request: &str) -> foon_core::Plan {
 /// makes the goal is pruned (not asked for), leaving "slice" with no inputs; its FOON export then does not
 /// read back (`motion_without_inputs`).
 #[test]
-#[ignore = "planner defect, reported: pruning can leave a unit with no inputs (src/planner, not fixed here)"]
 fn pruning_never_leaves_a_unit_without_inputs() {
     let p = plan(
         "//\nO\ttomato\t0\nM\tslice\t<Assumed>\n!O\tonion\t0\n//\n",
