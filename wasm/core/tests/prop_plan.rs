@@ -3,6 +3,7 @@
 //! unit twice, or a typed error (`bad_query`, `no_goal`, `too_large`). A plan's FOON text export reads back
 //! to the same units. Random JSON never panics the plan-request decoder.
 
+mod common;
 mod gen;
 use foon_core::decode;
 use foon_core::plan::{PlanRequest, Query, QueryIngredient};
@@ -35,19 +36,7 @@ struct Loaded {
 fn starter() -> Arc<Loaded> {
     static KB: OnceLock<Arc<Loaded>> = OnceLock::new();
     KB.get_or_init(|| {
-        let dir = repo().join("public/kb/starter");
-        let mut files: Vec<(String, Vec<u8>)> = std::fs::read_dir(&dir)
-            .unwrap()
-            .map(|e| e.unwrap().path())
-            .filter(|p| p.extension().is_some_and(|x| x == "txt"))
-            .map(|p| {
-                (
-                    p.file_name().unwrap().to_string_lossy().into_owned(),
-                    std::fs::read(&p).unwrap(),
-                )
-            })
-            .collect();
-        files.sort();
+        let files = common::starter_kb_files();
         let kb = load(&files).unwrap();
         let index = PlannerIndex::new(&kb);
         Arc::new(Loaded { kb, index })
