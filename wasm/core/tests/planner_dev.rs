@@ -4,43 +4,12 @@
 //! labels are never remapped, and the output does not depend on the order the subgraph files are read in.
 
 mod common;
-use common::{foon111, load, shared_dir};
+use common::{dev_queries, embeddings, foon111, load};
 use foon_core::plan::Status;
 use foon_core::planner::violations;
 use foon_core::similarity::{ExactMatch, Similarity};
-use foon_core::{plan, EmbeddingSimilarity, PlanRequest, PlannerIndex, Query};
+use foon_core::{plan, PlanRequest, PlannerIndex, Query};
 use std::collections::BTreeMap;
-use std::path::PathBuf;
-
-fn embeddings() -> EmbeddingSimilarity {
-    let path =
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../public/data/food-embeddings.bin");
-    let bytes = std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    EmbeddingSimilarity::from_bytes(&bytes).unwrap()
-}
-
-fn dev_queries() -> Vec<(String, Query)> {
-    let dir = shared_dir().join("recipes").join("dev");
-    let mut out = Vec::new();
-    let mut classes: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .collect();
-    classes.sort();
-    for class in classes {
-        let mut files: Vec<_> = std::fs::read_dir(&class)
-            .unwrap()
-            .map(|e| e.unwrap().path())
-            .filter(|p| p.extension().is_some_and(|x| x == "json"))
-            .collect();
-        files.sort();
-        for f in files {
-            let q: Query = serde_json::from_slice(&std::fs::read(&f).unwrap()).unwrap();
-            out.push((f.display().to_string(), q));
-        }
-    }
-    out
-}
 
 #[test]
 fn every_dev_query_plans_soundly_with_exact_matching() {
