@@ -4,34 +4,16 @@
 //! JSON lines (`{"variant","plan"}`). `PLAN_SIM=exact` uses exact matching instead of the embedding table.
 
 mod common;
-use common::{foon111, load, shared_dir};
+use common::{dev_queries, embeddings, foon111, load};
 use foon_core::planner::violations;
 use foon_core::similarity::{ExactMatch, Similarity};
-use foon_core::{plan, EmbeddingSimilarity, PlanRequest, PlannerIndex, Query};
-use std::path::{Path, PathBuf};
+use foon_core::{plan, PlanRequest, PlannerIndex, Query};
 
 fn similarity() -> Box<dyn Similarity> {
     if std::env::var("PLAN_SIM").is_ok_and(|v| v == "exact") {
         return Box::new(ExactMatch);
     }
-    let path =
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../public/data/food-embeddings.bin");
-    Box::new(EmbeddingSimilarity::from_bytes(&std::fs::read(path).unwrap()).unwrap())
-}
-
-fn queries_under(dir: &Path, out: &mut Vec<PathBuf>) {
-    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .collect();
-    entries.sort();
-    for p in entries {
-        if p.is_dir() {
-            queries_under(&p, out);
-        } else if p.extension().is_some_and(|x| x == "json") {
-            out.push(p);
-        }
-    }
+    Box::new(embeddings())
 }
 
 #[test]
@@ -42,11 +24,8 @@ fn dump_dev_plans() {
     let kb = load(&foon111("plain"));
     let index = PlannerIndex::new(&kb);
     let sim = similarity();
-    let mut files = Vec::new();
-    queries_under(&shared_dir().join("recipes").join("dev"), &mut files);
     let mut lines = String::new();
-    for f in files {
-        let q: Query = serde_json::from_slice(&std::fs::read(&f).unwrap()).unwrap();
+    for (_, q) in dev_queries() {
         for modify in [true, false] {
             let mut request = PlanRequest::new(q.clone());
             request.modify = modify;
@@ -123,12 +102,7 @@ fn time_dev_plans() {
     let kb = load(&foon111("plain"));
     let index = PlannerIndex::new(&kb);
     let sim = similarity();
-    let mut files = Vec::new();
-    queries_under(&shared_dir().join("recipes").join("dev"), &mut files);
-    let queries: Vec<Query> = files
-        .iter()
-        .map(|f| serde_json::from_slice(&std::fs::read(f).unwrap()).unwrap())
-        .collect();
+    let queries: Vec<Query> = dev_queries().into_iter().map(|(_, q)| q).collect();
     let mut times = Vec::new();
     for round in 0..4 {
         for q in &queries {
