@@ -97,7 +97,10 @@ export function structureMetrics(units: readonly PlanUnit[], goal: Plan["goal"])
     const early = unit.inputs.filter((node) => {
       const key = nodeKey(node);
       const first = firstProducer.get(key);
-      if (first === undefined || first < i || availableAtStart(node)) return false;
+      if (first === undefined || first < i) return false;
+      // the finished dish is never in the kitchen at the start, whatever its states say
+      if (isGoal(node, goal)) return true;
+      if (availableAtStart(node)) return false;
       // a state the recipe returns to (a lid put back, butter melted again in the pot) was there from
       // the start: every unit making it again needs this one first, so no order could do better
       return !(producers.get(key) ?? []).every((j) => dependsOn(j, i));

@@ -18,6 +18,16 @@ describe("things a kitchen has before cooking starts", () => {
     const m = structureMetrics([...units.slice(0, 3), empty, ...units.slice(3)], plan().goal);
     expect(m.units_before_inputs).toBe(0);
   });
+
+  it("but never the finished dish: a unit taking the goal before it is made is reported", () => {
+    const leaves = node("leaf");
+    const cooked = node("leaf", ["cooked"]);
+    const units = [unit([leaves], "cook", [cooked]), unit([cooked], "slice", [leaves])];
+    const m = structureMetrics(units, { ...plan().goal, label: "leaf", states: [] });
+    expect(availableAtStart(leaves)).toBe(true);
+    expect(m.units_before_inputs).toBe(1);
+    expect(m.violations[0]).toContain("unit 1 (cook) needs");
+  });
 });
 
 describe("states a recipe returns to", () => {

@@ -29,3 +29,33 @@ fn pruning_never_leaves_a_unit_without_inputs() {
     let text = foon_core::foon_text(&p);
     parse_str("plan.txt", &text).unwrap_or_else(|e| panic!("{e}\n{text}"));
 }
+
+/// Found by `planning_on_random_graphs_terminates_in_order_or_fails_typed` (on CI): the query asks for the
+/// goal's own object in another state ("cooked leaves" for a salad whose goal is "leaves"). The branch grown
+/// to reach that state started from the goal itself, so the plan took the finished goal from the kitchen,
+/// cooked it, and made it again. Nothing may use the goal before it is made.
+#[test]
+fn no_unit_takes_the_goal_before_it_is_made() {
+    let p = plan(
+        "//\nO\ttomato\t0\nM\tslice\t<Assumed>\n!O\tLeaves\t0\n//\nO\ttomato\t0\nM\tslice\t<Assumed>\nO\ttomato\t0\n//\nO\ttomato\t0\nM\tslice\t<Assumed>\nO\ttomato\t0\nS\tfried\n//\n",
+        r#"{"query": {"type": "salad", "ingredients": [{"object": "Leaves", "state": "cooked"}]}}"#,
+    );
+    let last = p.units.last().expect("a plan with units");
+    assert!(
+        last.outputs
+            .iter()
+            .any(|n| n.label == "leaf" && n.states.is_empty()),
+        "{:#?}",
+        p.units
+    );
+    for (i, u) in p.units.iter().enumerate() {
+        assert!(
+            !u.inputs
+                .iter()
+                .any(|n| n.label == "leaf" && n.states.is_empty()),
+            "unit {i} takes the goal: {:#?}",
+            p.units
+        );
+    }
+    assert_eq!(foon_core::planner::violations(&p), Vec::<String>::new());
+}

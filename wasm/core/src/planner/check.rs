@@ -1,6 +1,7 @@
 //! Structural checks of a plan from its `units` alone, with exactly the definitions of the evaluator
 //! (`src/eval/structure.ts`): no unit twice, no unit before a unit making one of its inputs (unless the
-//! input is something a kitchen has at the start), no unit whose products nobody uses, the goal made.
+//! input is something a kitchen has at the start, which the goal never is), no unit whose products nobody
+//! uses, the goal made.
 
 use crate::plan::{Plan, PlanNode, PlanUnit};
 use std::collections::{HashMap, HashSet};
@@ -88,7 +89,8 @@ pub fn violations(plan: &Plan) -> Vec<String> {
         }
         for n in &u.inputs {
             let first = first_producer.get(&node_key(n)).copied();
-            if first.is_some_and(|f| f >= i) && !available_at_start(n) {
+            let from_kitchen = available_at_start(n) && !is_goal(n, plan);
+            if first.is_some_and(|f| f >= i) && !from_kitchen {
                 out.push(format!(
                     "unit {i} ({}) takes '{}' ({}) made only by unit {}",
                     u.motion,

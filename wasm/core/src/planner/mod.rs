@@ -13,7 +13,7 @@ mod score;
 pub mod states;
 mod tree;
 
-pub use check::violations;
+pub use check::{available_at_start, violations};
 pub use index::PlannerIndex;
 
 use crate::error::{ErrorCode, FoonError, Result};

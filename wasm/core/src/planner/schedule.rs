@@ -4,7 +4,8 @@
 //! bowl must come after that unit. So every unit is ordered after every unit that makes one of its
 //! inputs. When that is impossible (a state cycle: the pan is greased again by a unit that needs the
 //! greased pan first), the node counts as available from the start and the later unit no longer lists
-//! it as a product. Duplicated units and units whose products nobody uses are dropped.
+//! it as a product. The goal is never in the kitchen at the start: a unit that needs it before it is made
+//! is dropped. Duplicated units and units whose products nobody uses are dropped.
 
 use super::check::{available_at_start, node_key, NodeKey};
 use super::output::plan_node;
@@ -67,8 +68,10 @@ fn shape(tree: &Tree, v: &Values, u: TUnitId) -> Shape {
 /// Orders the live units the goal needs so that the evaluator's invariants hold, editing the tree where
 /// the order alone cannot (see the module comment). Returns the order; dropped units are marked dead.
 pub(crate) fn schedule(tree: &mut Tree) -> Vec<TUnitId> {
-    let vals = values(tree);
+    let mut vals = values(tree);
     let goal = vals.of_slot[tree.goal];
+    // the finished dish is never in the kitchen at the start, whatever its states say
+    vals.start[goal] = false;
     let mut units: Vec<TUnitId> = tree.order();
     // each round either settles or removes a product or a unit, so the rounds are bounded
     let limit = 4 * units.len() + 8;
@@ -89,8 +92,12 @@ pub(crate) fn schedule(tree: &mut Tree) -> Vec<TUnitId> {
                 units = kept;
             }
             Err((p, v, value)) => {
-                if value == goal || !break_cycle(tree, &vals, p, value) {
-                    // never unmake the goal: the consumer takes the value from the kitchen instead
+                if value == goal {
+                    // never unmake the goal: a unit that needs the finished dish before it is made has
+                    // no place in the plan; what it made comes from the kitchen instead
+                    tree.units[v].alive = false;
+                    units.retain(|&u| u != v);
+                } else if !break_cycle(tree, &vals, p, value) {
                     tree.units[v].inputs.retain(|i| vals.of_slot[i.0] != value);
                 }
             }

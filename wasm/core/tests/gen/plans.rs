@@ -3,6 +3,7 @@
 
 use foon_core::parse::{parse_str, ParsedObject};
 use foon_core::plan::{Plan, PlanNode};
+use foon_core::planner::available_at_start;
 use std::collections::HashSet;
 
 type Key = (Vec<String>, String, Vec<String>);
@@ -25,7 +26,7 @@ fn sorted(mut v: Vec<String>) -> Vec<String> {
 }
 
 /// What is wrong with the plan's units: duplicates, or a unit that uses something only a later unit
-/// makes. Empty when nothing is.
+/// makes (other than what a kitchen has at the start). Empty when nothing is.
 pub fn order_problems(plan: &Plan) -> Vec<String> {
     let mut out = Vec::new();
     let mut seen: HashSet<Key> = HashSet::new();
@@ -49,7 +50,15 @@ pub fn order_problems(plan: &Plan) -> Vec<String> {
         if !seen.insert(key) {
             out.push(format!("unit {} ({}) appears twice", i + 1, u.motion));
         }
-        for n in u.inputs.iter().map(node_text) {
+        for node in &u.inputs {
+            // the kitchen has empty bowls and whole onions even when a later unit makes them again,
+            // but never the finished dish
+            let is_goal = node.label == plan.goal.label
+                && sorted(node.states.clone()) == sorted(plan.goal.states.clone());
+            if available_at_start(node) && !is_goal {
+                continue;
+            }
+            let n = node_text(node);
             let later = (i + 1..plan.units.len()).any(|j| made[j].contains(&n));
             let earlier = (0..i).any(|j| made[j].contains(&n));
             if later && !earlier {
