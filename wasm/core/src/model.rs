@@ -83,6 +83,34 @@ impl ObjectNode {
         })
     }
 
+    /// Ingredients the object holds (`contains {…}`) as written, without allocating (may repeat).
+    pub fn contents(&self) -> impl Iterator<Item = &str> {
+        self.states
+            .iter()
+            .filter(|s| s.name == "contains")
+            .filter_map(|s| match &s.arg {
+                Some(StateArg::Ingredients(list)) => Some(list.iter().map(String::as_str)),
+                _ => None,
+            })
+            .flatten()
+    }
+
+    /// Every name in any of the object's lists (`contains {…}`, `greased {…}`, ...), without allocating.
+    pub fn listed(&self) -> impl Iterator<Item = &str> {
+        self.states
+            .iter()
+            .filter_map(|s| match &s.arg {
+                Some(StateArg::Ingredients(list)) => Some(list.iter().map(String::as_str)),
+                _ => None,
+            })
+            .flatten()
+    }
+
+    /// Whether the object holds any ingredient.
+    pub fn holds_something(&self) -> bool {
+        self.contents().next().is_some()
+    }
+
     /// Ingredients the object holds (`contains {…}`), sorted and unique.
     pub fn ingredients(&self) -> Vec<String> {
         let set: BTreeSet<&String> = self

@@ -19,8 +19,8 @@ use crate::kb::KnowledgeBase;
 use crate::label::normalize_label;
 use crate::similarity::Similarity;
 use rust_stemmers::{Algorithm, Stemmer};
+use rustc_hash::FxHashMap as HashMap;
 use serde::Serialize;
-use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
 const TAXONOMY_TSV: &str = include_str!("../data/food_taxonomy.tsv");
@@ -211,7 +211,7 @@ pub struct Taxonomy {
 impl Taxonomy {
     pub fn parse(text: &str) -> Taxonomy {
         let mut categories: Vec<Category> = Vec::new();
-        let mut by_key = HashMap::new();
+        let mut by_key = HashMap::default();
         let mut members = Vec::new();
         for line in data_lines(text) {
             let mut parts = line.split('\t');
@@ -262,7 +262,7 @@ impl Taxonomy {
             names.iter().map(|n| stem_key(n).join(" ")).collect();
         let mut out = Taxonomy {
             categories: self.categories.clone(),
-            by_key: HashMap::new(),
+            by_key: HashMap::default(),
             members: Vec::new(),
         };
         for (name, c) in &self.members {
@@ -443,8 +443,8 @@ impl EmbeddingSimilarity {
             options,
             member_vectors,
             confident_from: CONFIDENT_FROM,
-            cache: Mutex::new(HashMap::new()),
-            ranked: Mutex::new(HashMap::new()),
+            cache: Mutex::new(HashMap::default()),
+            ranked: Mutex::new(HashMap::default()),
         }
     }
 

@@ -4,7 +4,7 @@
 //! uses, the goal made.
 
 use crate::plan::{Plan, PlanNode, PlanUnit};
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 /// States of things a kitchen has before cooking starts (`START_STATES` of the evaluator).
 pub const START_STATES: &[&str] = &[
@@ -68,20 +68,20 @@ fn is_goal(n: &PlanNode, plan: &Plan) -> bool {
 pub fn violations(plan: &Plan) -> Vec<String> {
     let units = &plan.units;
     let produced: Vec<HashSet<NodeKey>> = units.iter().map(produced_keys).collect();
-    let mut first_producer: HashMap<&NodeKey, usize> = HashMap::new();
+    let mut first_producer: HashMap<&NodeKey, usize> = HashMap::default();
     for (i, keys) in produced.iter().enumerate() {
         for k in keys {
             first_producer.entry(k).or_insert(i);
         }
     }
-    let mut last_use: HashMap<NodeKey, usize> = HashMap::new();
+    let mut last_use: HashMap<NodeKey, usize> = HashMap::default();
     for (i, u) in units.iter().enumerate() {
         for n in &u.inputs {
             last_use.insert(node_key(n), i);
         }
     }
     let mut out = Vec::new();
-    let mut seen = HashSet::new();
+    let mut seen = HashSet::default();
     let mut goal_made = false;
     for (i, u) in units.iter().enumerate() {
         if !seen.insert(unit_key(u)) {

@@ -1,7 +1,8 @@
 //! Algorithm 1: the reference goal node, by a graded similarity of ingredient sets.
 
+use super::index::PlannerIndex;
+use super::score::Scorer;
 use crate::kb::{Goal, KnowledgeBase};
-use crate::similarity::Similarity;
 use crate::taxonomy::{dish_class_name, is_utensil};
 use std::cmp::Ordering;
 
@@ -11,31 +12,11 @@ pub(crate) struct Chosen<'a> {
     pub score: f32,
 }
 
-/// Mean over `a` of the best similarity to any of `b` (exact matches count 1 without asking `sim`).
-fn coverage(sim: &dyn Similarity, a: &[&str], b: &[&str]) -> f32 {
-    if a.is_empty() {
-        return 0.0;
-    }
-    let total: f32 = a
-        .iter()
-        .map(|x| {
-            if b.contains(x) {
-                1.0
-            } else {
-                b.iter()
-                    .map(|y| sim.similarity(x, y))
-                    .fold(0.0f32, f32::max)
-            }
-        })
-        .sum();
-    total / a.len() as f32
-}
-
 /// The score of a goal for a query: how much of the query the goal covers (weight 2) and how much of the
 /// goal the query uses (weight 1, fewer ingredients to prune), as a weighted harmonic mean.
-pub(crate) fn score(sim: &dyn Similarity, query: &[&str], goal: &[&str]) -> f32 {
-    let recall = coverage(sim, query, goal);
-    let precision = coverage(sim, goal, query);
+fn score(scorer: &Scorer, goal: &[u32]) -> f32 {
+    let recall = scorer.query_coverage(goal);
+    let precision = scorer.labels_coverage(goal);
     if recall + precision <= 0.0 {
         return 0.0;
     }
@@ -46,22 +27,23 @@ pub(crate) fn score(sim: &dyn Similarity, query: &[&str], goal: &[&str]) -> f32 
 /// first; ties go to more exact matches, then fewer goal ingredients, then label and subgraph name.
 pub(crate) fn select<'a>(
     kb: &'a KnowledgeBase,
-    sim: &dyn Similarity,
+    index: &PlannerIndex,
+    scorer: &Scorer,
     class: Option<u32>,
-    query: &[&str],
     notes: &mut Vec<String>,
     dish_type: &str,
 ) -> Option<Chosen<'a>> {
     // a goal must be made by some unit, and be a dish rather than a container
-    let usable = |g: &&Goal| {
+    let usable = |(_, g): &(usize, &Goal)| {
         kb.producers.get(g.node).is_some_and(|p| !p.is_empty())
             && !is_utensil(&kb.nodes[g.node].label)
     };
-    let mut candidates: Vec<&Goal> = match class {
+    let mut candidates: Vec<(usize, &Goal)> = match class {
         Some(c) => kb
             .goals
             .iter()
-            .filter(|g| g.dish_class == Some(c))
+            .enumerate()
+            .filter(|(_, g)| g.dish_class == Some(c))
             .filter(usable)
             .collect(),
         None => Vec::new(),
@@ -76,18 +58,15 @@ pub(crate) fn select<'a>(
                 dish_class_name(c).unwrap_or("?")
             )),
         }
-        candidates = kb.goals.iter().filter(usable).collect();
+        candidates = kb.goals.iter().enumerate().filter(usable).collect();
     }
     let mut best: Option<(Chosen<'a>, usize, usize)> = None;
-    for g in candidates {
-        let ings: Vec<&str> = g
-            .ingredients
-            .iter()
-            .map(String::as_str)
-            .filter(|l| !is_utensil(l))
-            .collect();
-        let s = score(sim, query, &ings);
-        let exact = query.iter().filter(|q| ings.contains(q)).count();
+    for (i, g) in candidates {
+        let ings = index.goal_ingredients(i);
+        let s = score(scorer, ings);
+        let exact = (0..scorer.query_len())
+            .filter(|&q| scorer.query_id(q).is_some_and(|id| ings.contains(&id)))
+            .count();
         let better = match &best {
             None => true,
             Some((b, bexact, bn)) => {

@@ -5,7 +5,8 @@ use super::states::{category, is_food_state, Category};
 use crate::kb::KnowledgeBase;
 use crate::model::NodeId;
 use crate::taxonomy::is_utensil;
-use std::collections::{BTreeMap, BTreeSet, HashMap};
+use rustc_hash::FxHashMap as HashMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 /// Built once per knowledge base (`PlannerIndex::new`) and passed to every `plan` call.
@@ -32,6 +33,8 @@ pub struct PlannerIndex {
     label_ids: HashMap<String, u32>,
     /// Per unit, the ids of the ingredients it handles: its non-utensil inputs and their contents.
     unit_ingredients: Vec<Vec<u32>>,
+    /// Per goal (`kb.goals` order), the ids of its ingredients that are not utensils, as listed.
+    goal_ingredients: Vec<Vec<u32>>,
     /// For each node, the subgraphs (sorted) in which some unit makes it (not merely passes it on).
     made_in: Vec<Vec<String>>,
 }
@@ -51,7 +54,7 @@ fn best<K: Ord + Clone>(counts: &BTreeMap<K, u32>) -> Option<K> {
 
 impl PlannerIndex {
     pub fn new(kb: &KnowledgeBase) -> PlannerIndex {
-        let mut by_label: HashMap<String, Vec<NodeId>> = HashMap::new();
+        let mut by_label: HashMap<String, Vec<NodeId>> = HashMap::default();
         for (id, n) in kb.nodes.iter().enumerate() {
             by_label.entry(n.label.clone()).or_default().push(id);
         }
@@ -60,15 +63,15 @@ impl PlannerIndex {
             .into_iter()
             .map(str::to_string)
             .collect();
-        let mut subgraph_class: HashMap<String, Option<u32>> = HashMap::new();
+        let mut subgraph_class: HashMap<String, Option<u32>> = HashMap::default();
         for g in &kb.goals {
             subgraph_class
                 .entry(g.subgraph.clone())
                 .or_insert(g.dish_class);
         }
 
-        let mut label_state: HashMap<(Option<u32>, String, String), u32> = HashMap::new();
-        let mut state_freq: HashMap<(Option<u32>, String), u32> = HashMap::new();
+        let mut label_state: HashMap<(Option<u32>, String, String), u32> = HashMap::default();
+        let mut state_freq: HashMap<(Option<u32>, String), u32> = HashMap::default();
         let mut motion_state: BTreeMap<String, BTreeMap<String, u32>> = BTreeMap::new();
         let mut motion_cat: BTreeMap<Category, BTreeMap<String, u32>> = BTreeMap::new();
         let mut motion_utensil: BTreeMap<String, BTreeMap<NodeId, u32>> = BTreeMap::new();
@@ -138,7 +141,7 @@ impl PlannerIndex {
             }
         }
         let mut label_names: Vec<String> = Vec::new();
-        let mut label_ids: HashMap<String, u32> = HashMap::new();
+        let mut label_ids: HashMap<String, u32> = HashMap::default();
         let mut intern = |l: &str| -> u32 {
             if let Some(&i) = label_ids.get(l) {
                 return i;
@@ -170,10 +173,22 @@ impl PlannerIndex {
                 ids
             })
             .collect();
+        let goal_ingredients = kb
+            .goals
+            .iter()
+            .map(|g| {
+                g.ingredients
+                    .iter()
+                    .filter(|l| !is_utensil(l))
+                    .map(|l| intern(l))
+                    .collect()
+            })
+            .collect();
         for n in &kb.nodes {
             intern(&n.label);
         }
         PlannerIndex {
+            goal_ingredients,
             label_names,
             label_ids,
             unit_ingredients,
@@ -228,6 +243,14 @@ impl PlannerIndex {
     pub(crate) fn unit_ingredients(&self, u: usize) -> &[u32] {
         self.unit_ingredients
             .get(u)
+            .map(Vec::as_slice)
+            .unwrap_or(&[])
+    }
+
+    /// The non-utensil ingredient ids of goal `g` (an index into `kb.goals`).
+    pub(crate) fn goal_ingredients(&self, g: usize) -> &[u32] {
+        self.goal_ingredients
+            .get(g)
             .map(Vec::as_slice)
             .unwrap_or(&[])
     }

@@ -23,7 +23,8 @@ use crate::limits;
 use crate::plan::{DishClassRef, Plan, PlanRequest, Query, QueryIngredient, FORMAT_VERSION};
 use crate::similarity::Similarity;
 use crate::taxonomy::{dish_class_name, dish_class_of};
-use std::collections::{BTreeMap, HashSet};
+use rustc_hash::FxHashSet as HashSet;
+use std::collections::BTreeMap;
 
 /// Plans a query against a knowledge base. `index` must have been built from the same `kb`
 /// (`PlannerIndex::new(kb)`, once). Never panics; a malformed request is `ErrorCode::BadQuery`, a knowledge
@@ -39,7 +40,7 @@ pub fn plan(
     let overrides = normalize_overrides(&request.overrides)?;
     let class = dish_class_of(&query.dish_type);
     let labels: Vec<String> = {
-        let mut seen = HashSet::new();
+        let mut seen = HashSet::default();
         query
             .ingredients
             .iter()
@@ -47,29 +48,21 @@ pub fn plan(
             .map(|i| i.object.clone())
             .collect()
     };
-    let label_refs: Vec<&str> = labels.iter().map(String::as_str).collect();
-    let chosen = goal::select(
-        kb,
-        similarity,
-        class,
-        &label_refs,
-        &mut notes,
-        &query.dish_type,
-    )
-    .ok_or_else(|| {
-        FoonError::new(
-            ErrorCode::NoGoal,
-            "the knowledge base has no goal node with a functional unit that makes it",
-        )
-    })?;
     let scorer = score::Scorer::new(similarity, index, &labels);
+    let chosen =
+        goal::select(kb, index, &scorer, class, &mut notes, &query.dish_type).ok_or_else(|| {
+            FoonError::new(
+                ErrorCode::NoGoal,
+                "the knowledge base has no goal node with a functional unit that makes it",
+            )
+        })?;
     let reference = retrieve::retrieve(
         kb,
         index,
         &scorer,
         chosen.goal.node,
         Some(&chosen.goal.subgraph),
-        &HashSet::new(),
+        &HashSet::default(),
     );
     for &n in &reference.blocked {
         notes.push(format!(

@@ -10,7 +10,8 @@ use crate::model::{NodeId, ObjectNode, State};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
 use crate::similarity::Similarity;
 use crate::taxonomy::{dish_class_name, is_utensil};
-use std::collections::{BTreeMap, BTreeSet, HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use std::collections::{BTreeMap, BTreeSet};
 
 pub(crate) struct Context<'a> {
     pub kb: &'a KnowledgeBase,
@@ -108,8 +109,8 @@ pub(crate) fn modify(
         .iter()
         .map(|i| i.object.as_str())
         .collect();
-    let mut claimed: HashSet<String> = HashSet::new();
-    let mut restated: HashMap<String, String> = HashMap::new();
+    let mut claimed: HashSet<String> = HashSet::default();
+    let mut restated: HashMap<String, String> = HashMap::default();
     let mut works: Vec<Work> = Vec::with_capacity(query.ingredients.len());
     // ingredients to bring from elsewhere in FOON: (work index, equivalent, state)
     let mut pending: Vec<(usize, String, String)> = Vec::new();
@@ -501,8 +502,8 @@ fn best_state_slot(tree: &Tree, label: &str, s: &str) -> Option<SlotId> {
 /// Live slots of `label` downstream of the given units (through units that pass the object on).
 fn downstream(tree: &Tree, start: Vec<TUnitId>, label: &str, order: &[TUnitId]) -> Vec<SlotId> {
     let mut out = Vec::new();
-    let mut seen_units: HashSet<TUnitId> = HashSet::new();
-    let mut seen_slots: HashSet<SlotId> = HashSet::new();
+    let mut seen_units: HashSet<TUnitId> = HashSet::default();
+    let mut seen_slots: HashSet<SlotId> = HashSet::default();
     let mut work = start;
     while let Some(u) = work.pop() {
         if !seen_units.insert(u) {
@@ -561,7 +562,7 @@ fn restate(ctx: &Context, tree: &mut Tree, eq: &str, o: &str, s: &str) -> Result
                 "no way to make '{leaf_node}' from '{s}' is known; taken as it is"
             ));
         };
-        let taken: HashSet<usize> = HashSet::new();
+        let taken: HashSet<usize> = HashSet::default();
         let r = retrieve(
             ctx.kb,
             ctx.index,
@@ -575,7 +576,7 @@ fn restate(ctx: &Context, tree: &mut Tree, eq: &str, o: &str, s: &str) -> Result
                 "FOON has no way to make '{leaf_state}' {o} from '{s}'; it is taken as it is"
             ));
         }
-        let mut slot_of: HashMap<NodeId, SlotId> = HashMap::from([(kb_node, leaf)]);
+        let mut slot_of: HashMap<NodeId, SlotId> = [(kb_node, leaf)].into_iter().collect();
         let before = tree.slots.len();
         let added = tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
         if eq != o {
@@ -719,15 +720,13 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
         .iter()
         .flat_map(|&u| tree.units[u].outputs.iter().map(|o| o.0))
         .collect();
-    let mut copy_of: HashMap<SlotId, SlotId> = HashMap::new();
+    let mut copy_of: HashMap<SlotId, SlotId> = HashMap::default();
     let copy = |tree: &mut Tree, s: SlotId, copy_of: &mut HashMap<SlotId, SlotId>| -> SlotId {
         if let Some(&c) = copy_of.get(&s) {
             return c;
         }
         let node = &tree.slots[s].node;
-        if node.label != eq
-            && !produced_in_branch.contains(&s)
-            && !node.ingredients().iter().any(|i| i == eq)
+        if node.label != eq && !produced_in_branch.contains(&s) && !node.contents().any(|i| i == eq)
         {
             return s;
         }
@@ -799,11 +798,11 @@ fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
                 })
                 .sum()
         };
-        let bare = node.container().is_none() && node.ingredients().is_empty();
+        let bare = node.container().is_none() && !node.holds_something();
         let key = (
             exact,
             cat,
-            node.ingredients().is_empty(),
+            !node.holds_something(),
             bare,
             freq(ctx.class),
             freq(None),
@@ -820,7 +819,7 @@ fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
         .nodes_of(eq)
         .iter()
         .copied()
-        .filter(|&n| ctx.kb.kitchen[n] && ctx.kb.nodes[n].ingredients().is_empty())
+        .filter(|&n| ctx.kb.kitchen[n] && !ctx.kb.nodes[n].holds_something())
         .min_by_key(|&n| (ctx.kb.nodes[n].states.len(), n))
         .or_else(|| ctx.index.nodes_of(eq).first().copied())
     {
@@ -835,8 +834,7 @@ fn private_branch(kb: &KnowledgeBase, r: &super::retrieve::Retrieved, eq: &str) 
     r.units.iter().all(|&u| {
         kb.units[u].input_nodes().all(|n| {
             let node = &kb.nodes[n];
-            (is_utensil(&node.label) || node.label == eq)
-                && node.ingredients().iter().all(|i| i == eq)
+            (is_utensil(&node.label) || node.label == eq) && node.contents().all(|i| i == eq)
         })
     })
 }
@@ -853,7 +851,7 @@ fn attach_point(ctx: &Context, tree: &Tree, o: &str, c: Category) -> Option<TUni
         let takes = unit
             .outputs
             .iter()
-            .any(|x| !tree.slots[x.0].node.ingredients().is_empty());
+            .any(|x| tree.slots[x.0].node.holds_something());
         if !takes || !accepts_more(&unit.motion) {
             continue;
         }
@@ -866,9 +864,10 @@ fn attach_point(ctx: &Context, tree: &Tree, o: &str, c: Category) -> Option<TUni
             let n = &tree.slots[i.0].node;
             !is_utensil(&n.label)
                 && n.label != o
-                && ((!matches!(c, Category::Whole | Category::Other) && node_category(n) == c)
-                    || ctx.sim.accepts(ctx.sim.similarity(o, &n.label))
-                        && ctx.sim.similarity(o, &n.label) < 1.0)
+                && ((!matches!(c, Category::Whole | Category::Other) && node_category(n) == c) || {
+                    let sim = ctx.sim.similarity(o, &n.label);
+                    ctx.sim.accepts(sim) && sim < 1.0
+                })
         });
         let pref = pattern
             .iter()
@@ -892,7 +891,7 @@ fn add_branch(
     o: &str,
     s: &str,
 ) -> Result<(String, String), String> {
-    let taken: HashSet<usize> = HashSet::new();
+    let taken: HashSet<usize> = HashSet::default();
     let mut picked = None;
     let candidates = pick_nodes(ctx, eq, s);
     let count = candidates.len();
@@ -922,7 +921,7 @@ fn add_branch(
             format!("'{eq}' taken as bought (FOON makes it only together with other ingredients)");
         return finish_branch(ctx, tree, eq, o, s, before, bare, String::new(), false, how);
     };
-    let mut slot_of: HashMap<NodeId, SlotId> = HashMap::new();
+    let mut slot_of: HashMap<NodeId, SlotId> = HashMap::default();
     // utensils the tree already starts with are shared rather than duplicated
     for x in tree.live_slots() {
         if let Some(k) = tree.slots[x].kb {
@@ -1024,8 +1023,11 @@ fn map_states(node: &ObjectNode, s: &str) -> ObjectNode {
 
 /// Removes `labels` from every list of contents; units touching a changed node are marked renamed.
 fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
-    let mut touched: HashSet<SlotId> = HashSet::new();
+    let mut touched: HashSet<SlotId> = HashSet::default();
     for (i, slot) in tree.slots.iter_mut().enumerate() {
+        if !slot.node.listed().any(|x| labels.contains(x)) {
+            continue;
+        }
         let mut changed = false;
         let node = map_contents(&slot.node, &mut |list| {
             let n = list.len();
@@ -1050,20 +1052,12 @@ fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
     }
 }
 
-/// Ingredients a unit handles: its non-utensil inputs and their contents.
-fn handled(tree: &Tree, inputs: &[(SlotId, bool)], gone: &HashSet<SlotId>) -> BTreeSet<String> {
-    let mut set = BTreeSet::new();
-    for &(x, _) in inputs {
-        if gone.contains(&x) {
-            continue;
-        }
+/// Whether a unit with these inputs handles any ingredient: a non-utensil input or a listed content.
+fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &HashSet<SlotId>) -> bool {
+    inputs.iter().any(|&(x, _)| {
         let n = &tree.slots[x].node;
-        if !is_utensil(&n.label) {
-            set.insert(n.label.clone());
-        }
-        set.extend(n.ingredients());
-    }
-    set
+        !gone.contains(&x) && (!is_utensil(&n.label) || n.holds_something())
+    })
 }
 
 /// Removes every starting ingredient not asked for, with the units that only served it; containers that
@@ -1086,7 +1080,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
         .map(|&u| {
             (
                 u,
-                !handled(tree, &tree.units[u].inputs, &HashSet::new()).is_empty(),
+                handles_any(tree, &tree.units[u].inputs, &HashSet::default()),
             )
         })
         .collect();
@@ -1096,7 +1090,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
         .copied()
         .filter(|&x| pruned.contains(&tree.slots[x].node.label))
         .collect();
-    let mut alias: HashMap<SlotId, SlotId> = HashMap::new();
+    let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
     let resolve = |alias: &HashMap<SlotId, SlotId>, mut s: SlotId| {
         for _ in 0..10_000 {
             match alias.get(&s) {
@@ -1121,8 +1115,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
             .filter(|o| !gone.contains(&o.0))
             .collect();
         let makes_goal = outputs.iter().any(|o| o.0 == goal);
-        let left = handled(tree, &inputs, &gone);
-        let lost_all = had.get(&u).copied().unwrap_or(false) && left.is_empty();
+        let lost_all = had.get(&u).copied().unwrap_or(false) && !handles_any(tree, &inputs, &gone);
         // nothing new comes out: every output is one of the inputs as they are now
         let no_op = outputs.iter().all(|o| {
             inputs
@@ -1158,7 +1151,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
             continue;
         }
         let unit = &mut tree.units[u];
-        let mut seen: HashSet<SlotId> = HashSet::new();
+        let mut seen: HashSet<SlotId> = HashSet::default();
         unit.inputs = inputs.into_iter().filter(|i| seen.insert(i.0)).collect();
         unit.outputs = outputs;
     }

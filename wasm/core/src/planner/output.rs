@@ -10,7 +10,7 @@ use crate::plan::{
     ProgressState, Query, Status,
 };
 use crate::taxonomy::is_utensil;
-use std::collections::HashSet;
+use rustc_hash::FxHashSet as HashSet;
 
 pub(crate) struct Parts<'a> {
     pub kb: &'a KnowledgeBase,
@@ -74,7 +74,7 @@ pub(crate) fn build(p: Parts) -> Plan {
         })
         .collect();
     let mut progress_lines = Vec::new();
-    let mut done: HashSet<String> = HashSet::new();
+    let mut done: HashSet<String> = HashSet::default();
     for o in &p.outcomes {
         if o.status != Status::Planned || !done.insert(o.object.clone()) {
             continue;
@@ -155,7 +155,7 @@ fn progress_line(
     }];
     let mut motions = Vec::new();
     let mut at = start;
-    let mut seen: HashSet<SlotId> = HashSet::from([start]);
+    let mut seen: HashSet<SlotId> = [start].into_iter().collect();
     let mut from = 0usize;
     let mut end_product = None;
     let mut last_step: Option<(usize, TUnitId)> = None;
@@ -181,7 +181,7 @@ fn progress_line(
                     .iter()
                     .map(|o| o.0)
                     .filter(|&x| is_utensil(&tree.slots[x].node.label))
-                    .find(|&x| tree.slots[x].node.ingredients().iter().any(|i| i == label))
+                    .find(|&x| tree.slots[x].node.contents().any(|i| i == label))
                     .and_then(|x| product_of(tree, order, pos, x, label));
             }
             break;
@@ -238,13 +238,13 @@ fn product_of(
     entered: SlotId,
     label: &str,
 ) -> Option<String> {
-    let lists = |x: SlotId| tree.slots[x].node.ingredients().iter().any(|i| i == label);
+    let lists = |x: SlotId| tree.slots[x].node.contents().any(|i| i == label);
     let food = |x: SlotId| !is_utensil(&tree.slots[x].node.label);
     if food(entered) {
         return Some(tree.slots[entered].node.label.clone());
     }
     // a vessel holding it: the first food made from that vessel's contents
-    let mut vessels: HashSet<SlotId> = HashSet::from([entered]);
+    let mut vessels: HashSet<SlotId> = [entered].into_iter().collect();
     for &u in &order[pos + 1..] {
         let unit = &tree.units[u];
         if !unit.inputs.iter().any(|i| vessels.contains(&i.0)) {

@@ -10,7 +10,8 @@ use super::index::PlannerIndex;
 use super::score::Scorer;
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, UnitId};
-use std::collections::{HashMap, HashSet, VecDeque};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use std::collections::VecDeque;
 
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Retrieved {
@@ -30,7 +31,7 @@ fn depends_on(
     target: NodeId,
 ) -> bool {
     let mut stack = vec![from];
-    let mut seen = HashSet::new();
+    let mut seen = HashSet::default();
     while let Some(n) = stack.pop() {
         if n == target {
             return true;
@@ -57,11 +58,11 @@ pub(crate) fn retrieve(
     prefer: Option<&str>,
     taken: &HashSet<UnitId>,
 ) -> Retrieved {
-    let mut chosen: HashMap<NodeId, UnitId> = HashMap::new();
-    let mut in_tree: HashSet<UnitId> = HashSet::new();
+    let mut chosen: HashMap<NodeId, UnitId> = HashMap::default();
+    let mut in_tree: HashSet<UnitId> = HashSet::default();
     let mut selection_order: Vec<UnitId> = Vec::new();
     let mut blocked = Vec::new();
-    let mut visited: HashSet<NodeId> = HashSet::new();
+    let mut visited: HashSet<NodeId> = HashSet::default();
     // each node with the unit that needs it (None for the root)
     let mut queue: VecDeque<(NodeId, Option<UnitId>)> = VecDeque::from([(root, None)]);
     visited.insert(root);
@@ -160,8 +161,8 @@ fn execution_order(
     root: NodeId,
 ) -> Vec<UnitId> {
     let mut order = Vec::new();
-    let mut done: HashSet<UnitId> = HashSet::new();
-    let mut seen_nodes: HashSet<NodeId> = HashSet::new();
+    let mut done: HashSet<UnitId> = HashSet::default();
+    let mut seen_nodes: HashSet<NodeId> = HashSet::default();
     // iterative DFS: (node, expanded?)
     let mut stack: Vec<(NodeId, bool)> = vec![(root, false)];
     while let Some((node, expanded)) = stack.pop() {

@@ -12,7 +12,8 @@ use super::output::plan_node;
 use super::tree::{SlotId, TUnitId, Tree};
 use crate::model::StateArg;
 use crate::plan::{IngredientOutcome, Status};
-use std::collections::{BTreeSet, BinaryHeap, HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use std::collections::{BTreeSet, BinaryHeap};
 
 type Value = usize;
 
@@ -23,7 +24,7 @@ struct Values {
 }
 
 fn values(tree: &Tree) -> Values {
-    let mut ids: HashMap<NodeKey, Value> = HashMap::new();
+    let mut ids: HashMap<NodeKey, Value> = HashMap::default();
     let mut start = Vec::new();
     let of_slot = tree
         .slots
@@ -108,7 +109,7 @@ pub(crate) fn schedule(tree: &mut Tree) -> Vec<TUnitId> {
 
 /// Drops every unit equal in value to an earlier one (its products are the earlier one's).
 fn drop_duplicates(tree: &mut Tree, units: &mut Vec<TUnitId>, shapes: &HashMap<TUnitId, Shape>) {
-    let mut seen: HashSet<(&str, &[Value], &[Value])> = HashSet::new();
+    let mut seen: HashSet<(&str, &[Value], &[Value])> = HashSet::default();
     let mut keep = Vec::with_capacity(units.len());
     for &u in units.iter() {
         let s = &shapes[&u];
@@ -133,7 +134,7 @@ fn topological(
     shapes: &HashMap<TUnitId, Shape>,
     vals: &Values,
 ) -> Result<Vec<TUnitId>, (TUnitId, TUnitId, Value)> {
-    let mut makers: HashMap<Value, Vec<usize>> = HashMap::new();
+    let mut makers: HashMap<Value, Vec<usize>> = HashMap::default();
     for (i, u) in units.iter().enumerate() {
         for &m in &shapes[u].made {
             makers.entry(m).or_default().push(i);
@@ -145,7 +146,7 @@ fn topological(
         .enumerate()
         .map(|(i, u)| {
             let mut out = Vec::new();
-            let mut seen = HashSet::new();
+            let mut seen = HashSet::default();
             for &x in &shapes[u].inputs {
                 if vals.start[x] || !seen.insert(x) {
                     continue;
@@ -178,7 +179,7 @@ fn topological(
             changed |= needs[v].len() != len;
         }
         if !changed {
-            let sizes = comp.iter().fold(HashMap::new(), |mut m, c| {
+            let sizes = comp.iter().fold(HashMap::default(), |mut m, c| {
                 *m.entry(*c).or_insert(0usize) += 1;
                 m
             });
@@ -301,7 +302,7 @@ fn drop_dead(
     shapes: &HashMap<TUnitId, Shape>,
     goal: Value,
 ) -> Vec<TUnitId> {
-    let mut used: HashSet<Value> = HashSet::new();
+    let mut used: HashSet<Value> = HashSet::default();
     let mut kept = Vec::with_capacity(order.len());
     for &u in order.iter().rev() {
         let s = &shapes[&u];
@@ -326,7 +327,7 @@ pub(crate) fn confirm_planned(tree: &Tree, order: &[TUnitId], outcomes: &mut [In
             unit.inputs.iter().chain(unit.outputs.iter()).map(|x| x.0)
         })
         .collect();
-    let mut present: HashSet<&str> = HashSet::new();
+    let mut present: HashSet<&str> = HashSet::default();
     for &s in &slots {
         let node = &tree.slots[s].node;
         present.insert(node.label.as_str());

@@ -1,11 +1,12 @@
-//! g(u) of the retrieval (Alg. 2) for one query, remembered: the query's similarity to each label is
-//! computed once per plan (not once per unit and retrieval), and each unit's score once per plan.
+//! Similarities of one query's ingredients to the knowledge base's labels, remembered for the plan: g(u)
+//! of the retrieval (Alg. 2), once per unit, and the ingredient-set coverage of goal selection (Alg. 1).
+//! Each similarity is computed at most once per plan (not once per unit, goal and retrieval).
 
 use super::index::PlannerIndex;
 use crate::model::UnitId;
 use crate::similarity::Similarity;
+use rustc_hash::FxHashMap as HashMap;
 use std::cell::RefCell;
-use std::collections::HashMap;
 
 pub(crate) struct Scorer<'a> {
     sim: &'a dyn Similarity,
@@ -15,6 +16,8 @@ pub(crate) struct Scorer<'a> {
     query_ids: Vec<Option<u32>>,
     /// Per query name, its similarity to each label id (NaN until asked).
     rows: RefCell<Vec<Vec<f32>>>,
+    /// Per query name, each label id's similarity to it (the other direction; NaN until asked).
+    reverse: RefCell<Vec<Vec<f32>>>,
     units: RefCell<HashMap<UnitId, f32>>,
 }
 
@@ -26,23 +29,91 @@ impl<'a> Scorer<'a> {
             query,
             query_ids: query.iter().map(|q| index.label_id(q)).collect(),
             rows: RefCell::new(vec![Vec::new(); query.len()]),
-            units: RefCell::new(HashMap::new()),
+            reverse: RefCell::new(vec![Vec::new(); query.len()]),
+            units: RefCell::new(HashMap::default()),
         }
     }
 
+    /// sim(query name `q`, label).
     fn similarity(&self, q: usize, label: u32) -> f32 {
-        let mut rows = self.rows.borrow_mut();
+        self.remembered(&self.rows, q, label, |name, label| {
+            self.sim.similarity(name, label)
+        })
+    }
+
+    /// sim(label, query name `q`).
+    fn similarity_to(&self, label: u32, q: usize) -> f32 {
+        self.remembered(&self.reverse, q, label, |name, label| {
+            self.sim.similarity(label, name)
+        })
+    }
+
+    fn remembered(
+        &self,
+        table: &RefCell<Vec<Vec<f32>>>,
+        q: usize,
+        label: u32,
+        compute: impl Fn(&str, &str) -> f32,
+    ) -> f32 {
+        let mut rows = table.borrow_mut();
         let row = &mut rows[q];
         if row.is_empty() {
             row.resize(self.index.label_count(), f32::NAN);
         }
         let cell = &mut row[label as usize];
         if cell.is_nan() {
-            *cell = self
-                .sim
-                .similarity(&self.query[q], self.index.label_name(label));
+            *cell = compute(&self.query[q], self.index.label_name(label));
         }
         *cell
+    }
+
+    /// Label id of query name `q`, when the knowledge base has the name.
+    pub fn query_id(&self, q: usize) -> Option<u32> {
+        self.query_ids[q]
+    }
+
+    pub fn query_len(&self) -> usize {
+        self.query.len()
+    }
+
+    /// Mean over the query of the best similarity to any of `labels` (exact matches count 1).
+    pub fn query_coverage(&self, labels: &[u32]) -> f32 {
+        if self.query.is_empty() {
+            return 0.0;
+        }
+        let total: f32 = (0..self.query.len())
+            .map(|q| {
+                if self.query_ids[q].is_some_and(|id| labels.contains(&id)) {
+                    1.0
+                } else {
+                    labels
+                        .iter()
+                        .map(|&l| self.similarity(q, l))
+                        .fold(0.0f32, f32::max)
+                }
+            })
+            .sum();
+        total / self.query.len() as f32
+    }
+
+    /// Mean over `labels` of the best similarity to any query name (exact matches count 1).
+    pub fn labels_coverage(&self, labels: &[u32]) -> f32 {
+        if labels.is_empty() {
+            return 0.0;
+        }
+        let total: f32 = labels
+            .iter()
+            .map(|&l| {
+                if self.query_ids.contains(&Some(l)) {
+                    1.0
+                } else {
+                    (0..self.query.len())
+                        .map(|q| self.similarity_to(l, q))
+                        .fold(0.0f32, f32::max)
+                }
+            })
+            .sum();
+        total / labels.len() as f32
     }
 
     /// g(u) = Σ_q max_a sim(q, a) over the ingredients a the unit handles (exact matches count 1).

@@ -2,7 +2,8 @@
 //! each other, and which category can be reached from which (a chopped onion cannot be made whole again).
 
 use crate::label::normalize_word;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
+use std::cell::RefCell;
 use std::sync::OnceLock;
 
 const STATES_TSV: &str = include_str!("../../data/states.tsv");
@@ -110,6 +111,34 @@ fn table() -> &'static HashMap<String, Category> {
 /// The category of a state word (normalised or not). Unlisted words are classified by their parts
 /// ("thinly sliced" → cut, "whole wheat" → whole); anything else is `Other`.
 pub fn category(state: &str) -> Category {
+    // planning asks for the same few dozen states thousands of times per plan
+    thread_local! {
+        static SEEN: RefCell<HashMap<String, Category>> = RefCell::new(HashMap::default());
+    }
+    if let Some(c) = table().get(state) {
+        return *c;
+    }
+    if let Some(c) = SEEN.with(|m| m.borrow().get(state).copied()) {
+        return c;
+    }
+    let c = classify(state);
+    if state.len() <= MAX_REMEMBERED_STATE {
+        SEEN.with(|m| {
+            let mut m = m.borrow_mut();
+            if m.len() >= MAX_REMEMBERED_STATES {
+                m.clear();
+            }
+            m.insert(state.to_string(), c);
+        });
+    }
+    c
+}
+
+/// Bounds of the memo of `category` (a hostile knowledge base may have any number of states).
+const MAX_REMEMBERED_STATES: usize = 4096;
+const MAX_REMEMBERED_STATE: usize = 64;
+
+fn classify(state: &str) -> Category {
     let word = normalize_word(state);
     if let Some(c) = table().get(&word) {
         return *c;

@@ -7,7 +7,8 @@ use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, StateArg};
 use crate::plan::Origin;
 use crate::taxonomy::is_utensil;
-use std::collections::{BTreeSet, HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use std::collections::BTreeSet;
 
 pub(crate) type SlotId = usize;
 pub(crate) type TUnitId = usize;
@@ -68,7 +69,7 @@ impl Tree {
     /// A tree from a retrieval result whose root is the goal.
     pub fn from_retrieved(kb: &KnowledgeBase, r: &Retrieved, root: NodeId) -> Tree {
         let mut t = Tree::default();
-        let mut slot_of: HashMap<NodeId, SlotId> = HashMap::new();
+        let mut slot_of: HashMap<NodeId, SlotId> = HashMap::default();
         t.goal = t.kb_slot(kb, root, &mut slot_of);
         t.add_retrieved(kb, r, &mut slot_of, Origin::Reference);
         t
@@ -102,7 +103,7 @@ impl Tree {
         slot_of: &mut HashMap<NodeId, SlotId>,
         origin: Origin,
     ) -> Vec<TUnitId> {
-        let mut unit_of: HashMap<usize, TUnitId> = HashMap::new();
+        let mut unit_of: HashMap<usize, TUnitId> = HashMap::default();
         let mut added = Vec::new();
         for &u in &r.units {
             let unit = &kb.units[u];
@@ -180,8 +181,8 @@ impl Tree {
     /// Units the goal does not need are not listed.
     pub fn order(&self) -> Vec<TUnitId> {
         let mut order = Vec::new();
-        let mut done: HashSet<TUnitId> = HashSet::new();
-        let mut seen: HashSet<SlotId> = HashSet::new();
+        let mut done: HashSet<TUnitId> = HashSet::default();
+        let mut seen: HashSet<SlotId> = HashSet::default();
         let mut stack: Vec<(SlotId, bool)> = vec![(self.goal, false)];
         while let Some((slot, expanded)) = stack.pop() {
             let Some(u) = self.producer.get(slot).copied().flatten() else {
@@ -237,11 +238,17 @@ impl Tree {
         out
     }
 
+    /// Live slots with the label, in slot order.
     pub fn slots_with_label(&self, label: &str) -> Vec<SlotId> {
-        self.live_slots()
-            .into_iter()
+        let mut out: Vec<SlotId> = self
+            .alive_units()
+            .flat_map(|(_, u)| u.inputs.iter().chain(u.outputs.iter()).map(|x| x.0))
+            .chain(std::iter::once(self.goal))
             .filter(|&s| self.slots[s].node.label == label)
-            .collect()
+            .collect();
+        out.sort_unstable();
+        out.dedup();
+        out
     }
 
     /// Ingredient labels in the tree (not utensils, not the goal's own label).
@@ -266,11 +273,14 @@ impl Tree {
 
     /// Renames an object in the given slots, in their labels and their lists of contents.
     pub fn rename_in(&mut self, slots: &[SlotId], from: &str, to: &str) {
-        let mut touched: HashSet<SlotId> = HashSet::new();
+        let mut touched: HashSet<SlotId> = HashSet::default();
         for &s in slots {
             let Some(slot) = self.slots.get_mut(s) else {
                 continue;
             };
+            if slot.node.label != from && !slot.node.listed().any(|i| i == from) {
+                continue;
+            }
             let mut changed = false;
             let mut node = map_contents(&slot.node, &mut |list| {
                 for item in list.iter_mut() {
@@ -325,7 +335,7 @@ impl Tree {
             .map(|x| x.0)
             .collect();
         let order = self.order();
-        let mut seen: HashSet<SlotId> = HashSet::new();
+        let mut seen: HashSet<SlotId> = HashSet::default();
         while let Some(s) = work.pop() {
             if !seen.insert(s) {
                 continue;
@@ -359,9 +369,9 @@ impl Tree {
         for _ in 0..16 {
             let mut changed = self.join_equal_leaves();
             let order = self.order();
-            let mut alias: HashMap<SlotId, SlotId> = HashMap::new();
+            let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
             type Key = (Vec<ObjectNode>, String, Vec<ObjectNode>);
-            let mut first: HashMap<Key, TUnitId> = HashMap::new();
+            let mut first: HashMap<Key, TUnitId> = HashMap::default();
             for (pos, &u) in order.iter().enumerate() {
                 {
                     let unit = &mut self.units[u];
@@ -373,7 +383,7 @@ impl Tree {
                             i.0 = a;
                         }
                     }
-                    let mut seen = HashSet::new();
+                    let mut seen = HashSet::default();
                     unit.inputs.retain(|i| seen.insert(i.0));
                 }
                 let unit = &self.units[u];
@@ -460,7 +470,7 @@ impl Tree {
                         guard += 1;
                     }
                 }
-                let mut seen = HashSet::new();
+                let mut seen = HashSet::default();
                 unit.inputs.retain(|i| seen.insert(i.0));
             }
             self.drop_unneeded();
@@ -471,7 +481,7 @@ impl Tree {
     /// joined to the made one, so its users come after its maker, when that makes no cycle.
     fn join_equal_leaves(&mut self) -> bool {
         let order = self.order();
-        let mut made: HashMap<ObjectNode, SlotId> = HashMap::new();
+        let mut made: HashMap<ObjectNode, SlotId> = HashMap::default();
         for &u in &order {
             let ins: Vec<SlotId> = self.units[u].inputs.iter().map(|i| i.0).collect();
             for &(o, _) in &self.units[u].outputs {
@@ -507,7 +517,7 @@ impl Tree {
     /// Whether making slot `s` needs unit `v` (through designated producers).
     fn depends_on_unit(&self, s: SlotId, v: TUnitId) -> bool {
         let mut stack = vec![s];
-        let mut seen = HashSet::new();
+        let mut seen = HashSet::default();
         while let Some(x) = stack.pop() {
             if !seen.insert(x) {
                 continue;
