@@ -40,12 +40,37 @@ impl State {
     }
 }
 
+impl State {
+    /// The state as FOON writes it, `in [bowl]` or `contains {egg,milk}` (built without `fmt`: plans
+    /// render every state of every node).
+    pub fn text(&self) -> String {
+        let mut out = String::with_capacity(self.name.len() + 16);
+        out.push_str(&self.name);
+        match &self.arg {
+            None => {}
+            Some(StateArg::Container(c)) => {
+                out.push_str(" [");
+                out.push_str(c);
+                out.push(']');
+            }
+            Some(StateArg::Ingredients(list)) => {
+                out.push_str(" {");
+                for (i, x) in list.iter().enumerate() {
+                    if i > 0 {
+                        out.push(',');
+                    }
+                    out.push_str(x);
+                }
+                out.push('}');
+            }
+        }
+        out
+    }
+}
+
 impl std::fmt::Display for State {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self.arg_text() {
-            Some(arg) => write!(f, "{} {}", self.name, arg),
-            None => f.write_str(&self.name),
-        }
+        f.write_str(&self.text())
     }
 }
 

@@ -79,6 +79,7 @@ pub fn plan(
         overrides: &overrides,
         goal_subgraph: &chosen.goal.subgraph,
         scorer: &scorer,
+        motion_fit: Default::default(),
     };
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);

@@ -11,6 +11,7 @@ use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
 use crate::similarity::Similarity;
 use crate::taxonomy::{dish_class_name, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
 
 pub(crate) struct Context<'a> {
@@ -21,6 +22,9 @@ pub(crate) struct Context<'a> {
     pub overrides: &'a BTreeMap<String, String>,
     pub goal_subgraph: &'a str,
     pub scorer: &'a super::score::Scorer<'a>,
+    /// Per motion: whether it takes more ingredients, and its rank in the dish's pattern (see
+    /// `attach_point`; remembered because every attachment asks it of every unit).
+    pub motion_fit: RefCell<HashMap<String, (bool, usize)>>,
 }
 
 /// Food states of a node (not its place, contents or an appliance's condition).
@@ -846,13 +850,29 @@ fn attach_point(ctx: &Context, tree: &Tree, o: &str, c: Category) -> Option<TUni
     let pattern = dish_pattern(ctx.class);
     let goal_label = tree.slots[tree.goal].node.label.clone();
     let mut best: Option<(TUnitId, (bool, bool, usize, usize))> = None;
+    let mut motions = ctx.motion_fit.borrow_mut();
     for (pos, &u) in order.iter().enumerate() {
         let unit = &tree.units[u];
         let takes = unit
             .outputs
             .iter()
             .any(|x| tree.slots[x.0].node.holds_something());
-        if !takes || !accepts_more(&unit.motion) {
+        if !takes {
+            continue;
+        }
+        let (more, pref) = match motions.get(unit.motion.as_str()) {
+            Some(&fit) => fit,
+            None => {
+                let pref = pattern
+                    .iter()
+                    .position(|m| unit.motion.contains(m))
+                    .unwrap_or(pattern.len());
+                let fit = (accepts_more(&unit.motion), pref);
+                motions.insert(unit.motion.clone(), fit);
+                fit
+            }
+        };
+        if !more {
             continue;
         }
         // a unit that adds an ingredient, not one that only moves the dish itself
@@ -869,10 +889,6 @@ fn attach_point(ctx: &Context, tree: &Tree, o: &str, c: Category) -> Option<TUni
                     ctx.sim.accepts(sim) && sim < 1.0
                 })
         });
-        let pref = pattern
-            .iter()
-            .position(|m| unit.motion.contains(m))
-            .unwrap_or(pattern.len());
         let key = (adds, kin, usize::MAX - pref, pos);
         if best.as_ref().is_none_or(|(_, b)| key > *b) {
             best = Some((u, key));

@@ -4,7 +4,7 @@
 use super::modify::food_states;
 use super::tree::{SlotId, TUnitId, Tree};
 use crate::kb::{Goal, KnowledgeBase};
-use crate::model::{ObjectNode, StateArg};
+use crate::model::{ObjectNode, State, StateArg};
 use crate::plan::{
     DishClassRef, GoalInfo, IngredientOutcome, Plan, PlanNode, PlanUnit, ProgressLine,
     ProgressState, Query, Status,
@@ -31,7 +31,7 @@ pub(crate) struct Parts<'a> {
 pub(crate) fn plan_node(n: &ObjectNode) -> PlanNode {
     PlanNode {
         label: n.label.clone(),
-        states: n.states.iter().map(|s| s.to_string()).collect(),
+        states: n.states.iter().map(State::text).collect(),
         ingredients: n.ingredients(),
         container: n.container().map(str::to_string),
     }

@@ -24,14 +24,18 @@ pub(crate) struct Retrieved {
 }
 
 /// Whether `target` can be reached from `from` following chosen producers (node → unit → inputs).
+/// `scratch` is reused between calls (the search asks this for every input of every candidate unit).
 fn depends_on(
     kb: &KnowledgeBase,
     chosen: &HashMap<NodeId, UnitId>,
     from: NodeId,
     target: NodeId,
+    scratch: &mut (Vec<NodeId>, HashSet<NodeId>),
 ) -> bool {
-    let mut stack = vec![from];
-    let mut seen = HashSet::default();
+    let (stack, seen) = scratch;
+    stack.clear();
+    seen.clear();
+    stack.push(from);
     while let Some(n) = stack.pop() {
         if n == target {
             return true;
@@ -63,6 +67,7 @@ pub(crate) fn retrieve(
     let mut selection_order: Vec<UnitId> = Vec::new();
     let mut blocked = Vec::new();
     let mut visited: HashSet<NodeId> = HashSet::default();
+    let mut scratch = (Vec::new(), HashSet::default());
     // each node with the unit that needs it (None for the root)
     let mut queue: VecDeque<(NodeId, Option<UnitId>)> = VecDeque::from([(root, None)]);
     visited.insert(root);
@@ -94,7 +99,10 @@ pub(crate) fn retrieve(
                     .any(|s| kb.provenance[p].binary_search(s).is_ok()),
                 None => prefer.is_some_and(|p| kb.provenance[u].iter().any(|s| s == p)),
             };
-            if unit.input_nodes().any(|n| depends_on(kb, &chosen, n, node)) {
+            if unit
+                .input_nodes()
+                .any(|n| depends_on(kb, &chosen, n, node, &mut scratch))
+            {
                 cyclic = true;
                 cyclic_in_recipe |= same_recipe;
                 continue; // would close a cycle

@@ -24,14 +24,21 @@ struct Values {
 }
 
 fn values(tree: &Tree) -> Values {
+    let mut live = vec![false; tree.slots.len()];
+    for x in tree.live_slots() {
+        live[x] = true;
+    }
     let mut ids: HashMap<NodeKey, Value> = HashMap::default();
-    let mut start = Vec::new();
-    let of_slot = tree
-        .slots
-        .iter()
-        .map(|s| {
-            let p = plan_node(&s.node);
-            let next = ids.len();
+    // one value for every slot no live unit uses (never looked at)
+    let unused = 0;
+    let mut start = vec![false];
+    let of_slot = (0..tree.slots.len())
+        .map(|x| {
+            if !live[x] {
+                return unused;
+            }
+            let p = plan_node(&tree.slots[x].node);
+            let next = ids.len() + 1;
             *ids.entry(node_key(&p)).or_insert_with(|| {
                 start.push(available_at_start(&p));
                 next

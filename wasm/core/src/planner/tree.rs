@@ -38,31 +38,34 @@ pub(crate) struct Tree {
     pub goal: SlotId,
 }
 
-/// A node with one of its lists of contents rewritten; states stay sorted and unique.
-pub(crate) fn map_contents(node: &ObjectNode, f: &mut dyn FnMut(&mut Vec<String>)) -> ObjectNode {
-    let mut states: Vec<State> = Vec::with_capacity(node.states.len());
-    for s in &node.states {
-        match &s.arg {
-            Some(StateArg::Ingredients(list)) => {
-                let mut list = list.clone();
-                f(&mut list);
-                list.sort();
-                list.dedup();
-                if list.is_empty() {
-                    if s.name == "contains" {
-                        states.push(State::plain("empty"));
-                    }
-                } else {
-                    states.push(State {
-                        name: s.name.clone(),
-                        arg: Some(StateArg::Ingredients(list)),
-                    });
-                }
-            }
-            _ => states.push(s.clone()),
+/// Rewrites each of a node's lists of contents in place (an emptied `contains` list becomes `empty`);
+/// states stay sorted and unique.
+pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<String>)) {
+    node.states.retain_mut(|s| {
+        let Some(StateArg::Ingredients(list)) = &mut s.arg else {
+            return true;
+        };
+        f(list);
+        list.sort();
+        list.dedup();
+        if !list.is_empty() {
+            return true;
         }
-    }
-    ObjectNode::new(node.label.clone(), states)
+        if s.name == "contains" {
+            *s = State::plain("empty");
+            return true;
+        }
+        false
+    });
+    node.states.sort();
+    node.states.dedup();
+}
+
+/// A copy of a node with its lists of contents rewritten (see `edit_contents`).
+pub(crate) fn map_contents(node: &ObjectNode, f: &mut dyn FnMut(&mut Vec<String>)) -> ObjectNode {
+    let mut copy = node.clone();
+    edit_contents(&mut copy, f);
+    copy
 }
 
 impl Tree {
@@ -181,9 +184,11 @@ impl Tree {
     /// Units the goal does not need are not listed.
     pub fn order(&self) -> Vec<TUnitId> {
         let mut order = Vec::new();
-        let mut done: HashSet<TUnitId> = HashSet::default();
-        let mut seen: HashSet<SlotId> = HashSet::default();
+        // dense ids: flags by index are cheaper than hashing on this hot path
+        let mut done = vec![false; self.units.len()];
+        let mut seen = vec![false; self.slots.len()];
         let mut stack: Vec<(SlotId, bool)> = vec![(self.goal, false)];
+        let mut inputs: Vec<SlotId> = Vec::new();
         while let Some((slot, expanded)) = stack.pop() {
             let Some(u) = self.producer.get(slot).copied().flatten() else {
                 continue;
@@ -192,20 +197,23 @@ impl Tree {
                 continue;
             }
             if expanded {
-                if done.insert(u) {
+                if !done[u] {
+                    done[u] = true;
                     order.push(u);
                 }
                 continue;
             }
-            if !seen.insert(slot) || done.contains(&u) {
+            if seen[slot] || done[u] {
                 continue;
             }
+            seen[slot] = true;
             stack.push((slot, true));
-            let mut inputs: Vec<SlotId> = self.units[u].inputs.iter().map(|i| i.0).collect();
+            inputs.clear();
+            inputs.extend(self.units[u].inputs.iter().map(|i| i.0));
             inputs.sort_by(|a, b| self.slots[*a].node.cmp(&self.slots[*b].node).then(a.cmp(b)));
             inputs.dedup();
-            for s in inputs.into_iter().rev() {
-                if !seen.contains(&s) {
+            for &s in inputs.iter().rev() {
+                if !seen[s] {
                     stack.push((s, false));
                 }
             }
@@ -227,14 +235,15 @@ impl Tree {
         self.units.iter().enumerate().filter(|(_, u)| u.alive)
     }
 
-    /// Slots used by live units.
-    pub fn live_slots(&self) -> BTreeSet<SlotId> {
-        let mut out = BTreeSet::new();
-        for (_, u) in self.alive_units() {
-            out.extend(u.inputs.iter().map(|i| i.0));
-            out.extend(u.outputs.iter().map(|o| o.0));
-        }
-        out.insert(self.goal);
+    /// Slots used by live units, and the goal, ascending.
+    pub fn live_slots(&self) -> Vec<SlotId> {
+        let mut out: Vec<SlotId> = self
+            .alive_units()
+            .flat_map(|(_, u)| u.inputs.iter().chain(u.outputs.iter()).map(|x| x.0))
+            .chain(std::iter::once(self.goal))
+            .collect();
+        out.sort_unstable();
+        out.dedup();
         out
     }
 
@@ -254,12 +263,13 @@ impl Tree {
     /// Ingredient labels in the tree (not utensils, not the goal's own label).
     pub fn ingredient_labels(&self) -> BTreeSet<String> {
         let goal = &self.slots[self.goal].node.label;
-        self.live_slots()
+        let labels: BTreeSet<&String> = self
+            .live_slots()
             .into_iter()
             .map(|s| &self.slots[s].node.label)
-            .filter(|l| !is_utensil(l) && *l != goal)
-            .cloned()
-            .collect()
+            .filter(|l| *l != goal && !is_utensil(l))
+            .collect();
+        labels.into_iter().cloned().collect()
     }
 
     /// Live units that take the slot as input, in execution order.
@@ -340,20 +350,19 @@ impl Tree {
             if !seen.insert(s) {
                 continue;
             }
-            let old: BTreeSet<String> = self.slots[s].node.ingredients().into_iter().collect();
-            if old.contains(label) {
+            let old = self.slots[s].node.ingredients();
+            if old.iter().any(|x| x == label) {
                 continue;
             }
-            let node = map_contents(&self.slots[s].node, &mut |list| {
+            edit_contents(&mut self.slots[s].node, &mut |list| {
                 list.push(label.to_string())
             });
-            self.slots[s].node = node;
             for v in self.consumers(s, &order) {
                 for &(o, _) in &self.units[v].outputs {
-                    let theirs: BTreeSet<String> =
-                        self.slots[o].node.ingredients().into_iter().collect();
-                    let same_vessel = self.slots[o].node.label == self.slots[s].node.label;
-                    if !theirs.is_empty() && (old.is_subset(&theirs) || same_vessel) && o != s {
+                    let theirs = &self.slots[o].node;
+                    let took_over = old.iter().all(|x| theirs.contents().any(|c| c == x));
+                    let same_vessel = theirs.label == self.slots[s].node.label;
+                    if theirs.holds_something() && (took_over || same_vessel) && o != s {
                         work.push(o);
                     }
                 }
@@ -366,11 +375,20 @@ impl Tree {
     /// new that a later unit uses (only passes its inputs on) is dropped, its outputs replaced by the
     /// equal inputs. Repeats until nothing changes.
     pub fn normalize(&mut self) {
+        // slots keep their nodes here: compare values by interned id rather than by node
+        let value = self.values();
         for _ in 0..16 {
-            let mut changed = self.join_equal_leaves();
+            let mut changed = self.join_equal_leaves(&value);
             let order = self.order();
+            // position of the last unit using each slot (inputs as they are at the start of the round)
+            let mut last_use: HashMap<SlotId, usize> = HashMap::default();
+            for (pos, &u) in order.iter().enumerate() {
+                for i in &self.units[u].inputs {
+                    last_use.insert(i.0, pos);
+                }
+            }
             let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
-            type Key = (Vec<ObjectNode>, String, Vec<ObjectNode>);
+            type Key = (Vec<usize>, String, Vec<usize>);
             let mut first: HashMap<Key, TUnitId> = HashMap::default();
             for (pos, &u) in order.iter().enumerate() {
                 {
@@ -387,21 +405,17 @@ impl Tree {
                     unit.inputs.retain(|i| seen.insert(i.0));
                 }
                 let unit = &self.units[u];
-                let value = |x: SlotId| self.slots[x].node.clone();
                 let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
-                let mut ins: Vec<ObjectNode> = unit.inputs.iter().map(|i| value(i.0)).collect();
-                ins.sort();
-                let mut outs: Vec<ObjectNode> = unit.outputs.iter().map(|o| value(o.0)).collect();
-                outs.sort();
-                let key = (ins.clone(), unit.motion.clone(), outs);
+                let mut ins: Vec<usize> = unit.inputs.iter().map(|i| value[i.0]).collect();
+                ins.sort_unstable();
+                let mut outs: Vec<usize> = unit.outputs.iter().map(|o| value[o.0]).collect();
+                outs.sort_unstable();
+                let key = (ins, unit.motion.clone(), outs);
                 if !makes_goal {
                     if let Some(&f) = first.get(&key) {
                         let theirs = self.units[f].outputs.clone();
                         for &(o, _) in &self.units[u].outputs {
-                            if let Some(&(t, _)) = theirs
-                                .iter()
-                                .find(|t| self.slots[t.0].node == self.slots[o].node)
-                            {
+                            if let Some(&(t, _)) = theirs.iter().find(|t| value[t.0] == value[o]) {
                                 if t != o {
                                     alias.insert(o, t);
                                 }
@@ -412,23 +426,17 @@ impl Tree {
                         continue;
                     }
                 }
+                let ins = key.0.clone();
                 first.insert(key, u);
                 // new products a later unit uses (or the goal)
-                let later: HashSet<SlotId> = order[pos + 1..]
-                    .iter()
-                    .filter(|&&v| self.units[v].alive)
-                    .flat_map(|&v| self.units[v].inputs.iter().map(|i| i.0))
-                    .collect();
                 let useful = unit.outputs.iter().any(|&(o, _)| {
-                    !ins.contains(&self.slots[o].node) && (o == self.goal || later.contains(&o))
+                    !ins.contains(&value[o])
+                        && (o == self.goal || last_use.get(&o).is_some_and(|&l| l > pos))
                 });
                 if makes_goal && !useful {
                     // the goal's last unit changes nothing: the goal is its equal input
-                    let goal_node = self.slots[self.goal].node.clone();
-                    if let Some(&(i, _)) = unit
-                        .inputs
-                        .iter()
-                        .find(|i| self.slots[i.0].node == goal_node)
+                    if let Some(&(i, _)) =
+                        unit.inputs.iter().find(|i| value[i.0] == value[self.goal])
                     {
                         if self.producer[i].is_some() {
                             self.goal = i;
@@ -439,13 +447,8 @@ impl Tree {
                     }
                 }
                 if !useful && !makes_goal {
-                    let outputs = unit.outputs.clone();
-                    let inputs = unit.inputs.clone();
-                    for (o, _) in outputs {
-                        if let Some(&(i, _)) = inputs
-                            .iter()
-                            .find(|i| self.slots[i.0].node == self.slots[o].node)
-                        {
+                    for &(o, _) in &unit.outputs {
+                        if let Some(&(i, _)) = unit.inputs.iter().find(|i| value[i.0] == value[o]) {
                             if i != o {
                                 alias.insert(o, i);
                             }
@@ -477,20 +480,28 @@ impl Tree {
         }
     }
 
+    /// An id per slot, equal for slots with equal nodes.
+    fn values(&self) -> Vec<usize> {
+        let mut ids: HashMap<&ObjectNode, usize> = HashMap::default();
+        self.slots
+            .iter()
+            .map(|s| {
+                let next = ids.len();
+                *ids.entry(&s.node).or_insert(next)
+            })
+            .collect()
+    }
+
     /// A starting slot equal in value to a slot some unit makes is the same node in the plan: it is
     /// joined to the made one, so its users come after its maker, when that makes no cycle.
-    fn join_equal_leaves(&mut self) -> bool {
+    fn join_equal_leaves(&mut self, value: &[usize]) -> bool {
         let order = self.order();
-        let mut made: HashMap<ObjectNode, SlotId> = HashMap::default();
+        let mut made: HashMap<usize, SlotId> = HashMap::default();
         for &u in &order {
             let ins: Vec<SlotId> = self.units[u].inputs.iter().map(|i| i.0).collect();
             for &(o, _) in &self.units[u].outputs {
-                if self.producer[o] == Some(u)
-                    && !ins
-                        .iter()
-                        .any(|&i| self.slots[i].node == self.slots[o].node)
-                {
-                    made.entry(self.slots[o].node.clone()).or_insert(o);
+                if self.producer[o] == Some(u) && !ins.iter().any(|&i| value[i] == value[o]) {
+                    made.entry(value[o]).or_insert(o);
                 }
             }
         }
@@ -501,7 +512,7 @@ impl Tree {
                 if self.produced(x) {
                     continue;
                 }
-                let Some(&y) = made.get(&self.slots[x].node) else {
+                let Some(&y) = made.get(&value[x]) else {
                     continue;
                 };
                 if y == x || self.depends_on_unit(y, v) {
