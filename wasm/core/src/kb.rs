@@ -175,10 +175,15 @@ impl KnowledgeBase {
             warnings,
             node_index,
         };
-        kb.goals = goal_marks
+        let by_subgraph = kb.units_by_subgraph();
+        let goals = goal_marks
             .into_iter()
             .map(|(subgraph, node, dish_class)| {
-                let ingredients = kb.goal_ingredients(node, &subgraph);
+                let units = by_subgraph
+                    .get(subgraph.as_str())
+                    .map(Vec::as_slice)
+                    .unwrap_or(&[]);
+                let ingredients = kb.goal_ingredients(node, units);
                 Goal {
                     node,
                     dish_class,
@@ -187,6 +192,7 @@ impl KnowledgeBase {
                 }
             })
             .collect();
+        kb.goals = goals;
         Ok(kb)
     }
 
@@ -194,19 +200,25 @@ impl KnowledgeBase {
         self.node_index.get(node).copied()
     }
 
-    /// Units that occur in the given subgraph.
-    pub fn units_of(&self, subgraph: &str) -> impl Iterator<Item = UnitId> + '_ {
-        let name = subgraph.to_string();
-        (0..self.units.len()).filter(move |&u| self.provenance[u].binary_search(&name).is_ok())
+    /// The units of each subgraph, ascending (one pass: asking per subgraph would scan every unit for
+    /// every file, which is quadratic in a large universal FOON).
+    pub fn units_by_subgraph(&self) -> HashMap<&str, Vec<UnitId>> {
+        let mut out: HashMap<&str, Vec<UnitId>> = HashMap::new();
+        for (u, files) in self.provenance.iter().enumerate() {
+            for f in files {
+                out.entry(f.as_str()).or_default().push(u);
+            }
+        }
+        out
     }
 
-    /// The annotated `contains {…}` list of a goal, else the ingredients its subgraph starts from.
-    fn goal_ingredients(&self, node: NodeId, subgraph: &str) -> Vec<String> {
+    /// The annotated `contains {…}` list of a goal, else the ingredients its subgraph (`units`) starts
+    /// from.
+    fn goal_ingredients(&self, node: NodeId, units: &[UnitId]) -> Vec<String> {
         let annotated = self.nodes[node].ingredients();
         if !annotated.is_empty() {
             return annotated;
         }
-        let units: Vec<UnitId> = self.units_of(subgraph).collect();
         let produced: BTreeSet<NodeId> = units
             .iter()
             .flat_map(|&u| self.units[u].output_nodes())

@@ -83,10 +83,11 @@ pub fn kb_bundle(kb: &KnowledgeBase) -> String {
     let mut out = String::new();
     let mut names: Vec<&str> = kb.subgraphs.iter().map(|s| s.name.as_str()).collect();
     names.dedup();
+    let by_subgraph = kb.units_by_subgraph();
     for name in names {
         let _ = writeln!(out, "{FILE_MARK}{name}");
         let mut any = false;
-        for u in kb.units_of(name) {
+        for &u in by_subgraph.get(name).map(Vec::as_slice).unwrap_or(&[]) {
             any = true;
             let unit = &kb.units[u];
             out.push_str("//\n");

@@ -271,7 +271,7 @@ fn every_goal_is_retrievable_from_kitchen_items() {
             g.subgraph
         );
         // and from the file's own units alone
-        let own: Vec<usize> = kb.units_of(&g.subgraph).collect();
+        let own = kb.units_by_subgraph()[g.subgraph.as_str()].clone();
         assert!(
             reachable(&kb, &own)[g.node],
             "{}: goal unreachable from its own units",
