@@ -10,8 +10,8 @@ import { done, request, StorageError, toStorageError } from "../eval/storage";
 export const KB_DB_NAME = "foon-planner-kb";
 export const KB_DB_VERSION = 1;
 export const KB_CHANNEL = "foon-planner-kb";
-const STORE = "kb";
-const KEY = "current";
+export const KB_STORE = "kb";
+export const KB_KEY = "current";
 
 export interface SavedKnowledgeBase {
   /** Increases by one on every save, whichever tab saves. */
@@ -37,7 +37,7 @@ export class KbStore {
     try {
       const req = factory.open(KB_DB_NAME, KB_DB_VERSION);
       req.onupgradeneeded = (event) => {
-        if (event.oldVersion < 1) req.result.createObjectStore(STORE);
+        if (event.oldVersion < 1) req.result.createObjectStore(KB_STORE);
       };
       req.onblocked = () => undefined; // an older tab holds the database: open() resolves once it closes it
       const db = await request(req);
@@ -50,7 +50,7 @@ export class KbStore {
 
   async load(): Promise<SavedKnowledgeBase | null> {
     try {
-      const value = (await request(this.db.transaction(STORE).objectStore(STORE).get(KEY))) as SavedKnowledgeBase | undefined;
+      const value = (await request(this.db.transaction(KB_STORE).objectStore(KB_STORE).get(KB_KEY))) as SavedKnowledgeBase | undefined;
       return value ?? null;
     } catch (e) {
       throw toStorageError(e, "cannot read the saved knowledge base");
@@ -66,9 +66,9 @@ export class KbStore {
     let saved: SavedKnowledgeBase | null = null;
     let failure: unknown = null;
     try {
-      const tx = this.db.transaction(STORE, "readwrite", { durability: "strict" });
-      const store = tx.objectStore(STORE);
-      const get = store.get(KEY);
+      const tx = this.db.transaction(KB_STORE, "readwrite", { durability: "strict" });
+      const store = tx.objectStore(KB_STORE);
+      const get = store.get(KB_KEY);
       get.onsuccess = () => {
         const current = (get.result as SavedKnowledgeBase | undefined) ?? null;
         if (current !== null && current.savedAt > savedAt) {
@@ -77,7 +77,7 @@ export class KbStore {
         }
         const record: SavedKnowledgeBase = { version: (current?.version ?? 0) + 1, savedAt, files };
         try {
-          store.put(record, KEY);
+          store.put(record, KB_KEY);
           saved = record;
         } catch (e) {
           failure = e;

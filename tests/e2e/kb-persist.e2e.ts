@@ -4,6 +4,7 @@ import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
 import type { Browser, BrowserContext, Page } from "playwright-core";
 import { launch, screenshot, watchErrors } from "./browser";
 import { downloadOf, waitForPlan } from "./app-helpers";
+import { KB_DB_NAME, KB_KEY, KB_STORE } from "../../src/app/kb-store";
 
 let browser: Browser;
 beforeAll(async () => {
@@ -32,6 +33,33 @@ async function loadFile(page: Page, name: string, text: string): Promise<void> {
 
 const goal = (page: Page): Promise<string | null> => page.locator(".panel-reference .goal-label").textContent();
 
+/** Waits until the page's choice is in IndexedDB (the panel shows it at once; the write ends a moment
+ * later, and a reload before that restores the previous choice). */
+async function waitForSaved(page: Page, choice: "custom" | "bundled"): Promise<void> {
+  await page.waitForFunction(
+    async ([dbName, storeName, key, custom]) => {
+      const db = await new Promise<IDBDatabase>((resolve, reject) => {
+        const req = indexedDB.open(dbName);
+        req.onsuccess = () => resolve(req.result);
+        req.onerror = () => reject(req.error);
+      });
+      try {
+        if (!db.objectStoreNames.contains(storeName)) return false;
+        const saved = await new Promise<{ files: unknown[] | null } | undefined>((resolve, reject) => {
+          const req = db.transaction(storeName).objectStore(storeName).get(key);
+          req.onsuccess = () => resolve(req.result as { files: unknown[] | null } | undefined);
+          req.onerror = () => reject(req.error);
+        });
+        return saved !== undefined && (saved.files !== null) === custom;
+      } finally {
+        db.close();
+      }
+    },
+    [KB_DB_NAME, KB_STORE, KB_KEY, choice === "custom"] as const,
+    { polling: 50 },
+  );
+}
+
 describe("the user's knowledge base persists", () => {
   it("is restored after a reload and forgotten after switching back to the bundled one", async () => {
     const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
@@ -42,6 +70,7 @@ describe("the user's knowledge base persists", () => {
     await page.locator(".kb-status[data-source='custom']").waitFor();
     await waitForPlan(page);
     expect(await goal(page)).toBe("My own toast");
+    await waitForSaved(page, "custom");
 
     await page.reload();
     await page.locator(".kb-status[data-source='custom']").waitFor();
@@ -54,6 +83,7 @@ describe("the user's knowledge base persists", () => {
 
     await page.getByRole("button", { name: "Use the bundled knowledge base" }).click();
     await page.locator(".kb-status[data-source='bundled']").waitFor();
+    await waitForSaved(page, "bundled");
     await page.reload();
     await page.locator(".kb-status[data-source='bundled']").waitFor();
     await waitForPlan(page);
