@@ -1,6 +1,6 @@
 import { fileURLToPath } from "node:url";
 import { defineConfig } from "vitest/config";
-import { serviceWorkerManifest } from "./src/worker/sw-build";
+import { serviceWorkerManifest } from "./src/worker/sw-build.ts";
 
 const here = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
 
