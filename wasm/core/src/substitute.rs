@@ -369,6 +369,9 @@ pub struct EmbeddingSimilarity {
     /// Answers of `rank_in_set` per (query, candidate set, top): ranking every label of a knowledge base
     /// is the costliest step of planning, and ingredient names recur from query to query.
     ranked: Mutex<HashMap<RankKey, Vec<(String, f32)>>>,
+    /// The profiles of the last candidate set ranked by `rank_in_set` (one knowledge base's labels), so
+    /// that a ranking does not look every label up in the profile cache again.
+    set_profiles: Mutex<Option<(u64, Arc<Vec<Arc<Profile>>>)>>,
 }
 
 /// (query, candidate set, top) of a remembered ranking.
@@ -448,6 +451,7 @@ impl EmbeddingSimilarity {
             confident_from: CONFIDENT_FROM,
             cache: Mutex::new(HashMap::default()),
             ranked: Mutex::new(HashMap::default()),
+            set_profiles: Mutex::new(None),
         }
     }
 
@@ -663,25 +667,69 @@ impl EmbeddingSimilarity {
 
     /// Ranks candidates for a query; shared by `rank` and the evaluation.
     fn rank_profiles(&self, query: &str, candidates: &[&str], top: usize) -> Vec<(String, f32)> {
+        let profiles: Vec<Arc<Profile>> = candidates.iter().map(|c| self.profile(c)).collect();
+        self.rank_among(query, candidates, &profiles, top)
+    }
+
+    /// The `top` best of `candidates` (with their `profiles`, same order), best first, ties by label,
+    /// each label once. Keeps only the best few while scanning: a knowledge base has thousands of labels.
+    fn rank_among(
+        &self,
+        query: &str,
+        candidates: &[&str],
+        profiles: &[Arc<Profile>],
+        top: usize,
+    ) -> Vec<(String, f32)> {
         let q = self.profile(query);
         let keep_composites = !self.options.filter_composites || self.is_composite(&q);
-        let mut scored: Vec<(String, f32)> = Vec::new();
-        for &cand in candidates {
-            let c = self.profile(cand);
-            let exact = self.is_exact(&q, &c);
+        let better = |a: &(&str, f32), b: &(&str, f32)| {
+            b.1.total_cmp(&a.1).then_with(|| a.0.cmp(b.0)) == std::cmp::Ordering::Less
+        };
+        let mut best: Vec<(&str, f32)> = Vec::with_capacity(top + 1);
+        for (&cand, c) in candidates.iter().zip(profiles) {
+            let exact = self.is_exact(&q, c);
             if !exact
                 && (!q.is_known()
-                    || (!keep_composites && self.is_composite(&c))
-                    || (self.options.filter_composites && self.is_utensil(&c)))
+                    || (!keep_composites && self.is_composite(c))
+                    || (self.options.filter_composites && self.is_utensil(c)))
             {
                 continue;
             }
-            scored.push((cand.to_string(), self.score(&q, &c)));
+            let item = (cand, self.score(&q, c));
+            if best.len() == top && best.last().is_none_or(|w| !better(&item, w)) {
+                continue;
+            }
+            if best.iter().any(|b| b.0 == cand) {
+                continue; // the same label listed twice scores the same
+            }
+            let at = best.partition_point(|b| better(b, &item));
+            best.insert(at, item);
+            best.truncate(top);
         }
-        scored.sort_by(|a, b| b.1.total_cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
-        scored.dedup_by(|a, b| a.0 == b.0);
-        scored.truncate(top);
-        scored.into_iter().map(|(l, s)| (l, squash(s))).collect()
+        best.into_iter()
+            .map(|(l, s)| (l.to_string(), squash(s)))
+            .collect()
+    }
+
+    /// The profiles of a candidate set, remembered for the last set id asked.
+    fn set_profiles(&self, set: u64, candidates: &[&str]) -> Arc<Vec<Arc<Profile>>> {
+        if let Ok(last) = self.set_profiles.lock() {
+            if let Some((id, profiles)) = last.as_ref() {
+                if *id == set && profiles.len() == candidates.len() {
+                    return Arc::clone(profiles);
+                }
+            }
+        }
+        let profiles = Arc::new(
+            candidates
+                .iter()
+                .map(|c| self.profile(c))
+                .collect::<Vec<_>>(),
+        );
+        if let Ok(mut last) = self.set_profiles.lock() {
+            *last = Some((set, Arc::clone(&profiles)));
+        }
+        profiles
     }
 }
 
@@ -731,7 +779,8 @@ impl Similarity for EmbeddingSimilarity {
                 return r.clone();
             }
         }
-        let r = self.rank_profiles(query, candidates, top);
+        let profiles = self.set_profiles(set, candidates);
+        let r = self.rank_among(query, candidates, &profiles, top);
         if let Ok(mut cache) = self.ranked.lock() {
             if cache.len() >= RANK_CACHE_LIMIT {
                 cache.clear();
