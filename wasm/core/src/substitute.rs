@@ -371,8 +371,11 @@ pub struct EmbeddingSimilarity {
     ranked: Mutex<HashMap<RankKey, Vec<(String, f32)>>>,
     /// The profiles of the last candidate set ranked by `rank_in_set` (one knowledge base's labels), so
     /// that a ranking does not look every label up in the profile cache again.
-    set_profiles: Mutex<Option<(u64, Arc<Vec<Arc<Profile>>>)>>,
+    set_profiles: Mutex<Option<(u64, SetProfiles)>>,
 }
+
+/// The profiles of one candidate set, in its order.
+type SetProfiles = Arc<Vec<Arc<Profile>>>;
 
 /// (query, candidate set, top) of a remembered ranking.
 type RankKey = (String, u64, usize);
@@ -712,7 +715,7 @@ impl EmbeddingSimilarity {
     }
 
     /// The profiles of a candidate set, remembered for the last set id asked.
-    fn set_profiles(&self, set: u64, candidates: &[&str]) -> Arc<Vec<Arc<Profile>>> {
+    fn set_profiles(&self, set: u64, candidates: &[&str]) -> SetProfiles {
         if let Ok(last) = self.set_profiles.lock() {
             if let Some((id, profiles)) = last.as_ref() {
                 if *id == set && profiles.len() == candidates.len() {
