@@ -4,7 +4,7 @@
 use super::index::PlannerIndex;
 use super::retrieve::retrieve;
 use super::states::{category, is_food_state, Category};
-use super::tree::{map_contents, SlotId, TUnitId, Tree};
+use super::tree::{edit_contents, map_contents, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
@@ -1044,16 +1044,10 @@ fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
         if !slot.node.listed().any(|x| labels.contains(x)) {
             continue;
         }
-        let mut changed = false;
-        let node = map_contents(&slot.node, &mut |list| {
-            let n = list.len();
-            list.retain(|x| !labels.contains(x));
-            changed |= list.len() != n;
+        edit_contents(&mut slot.node, &mut |list| {
+            list.retain(|x| !labels.contains(x))
         });
-        if changed {
-            slot.node = node;
-            touched.insert(i);
-        }
+        touched.insert(i);
     }
     for u in tree.units.iter_mut() {
         if u.alive

@@ -249,14 +249,8 @@ impl Tree {
 
     /// Live slots with the label, in slot order.
     pub fn slots_with_label(&self, label: &str) -> Vec<SlotId> {
-        let mut out: Vec<SlotId> = self
-            .alive_units()
-            .flat_map(|(_, u)| u.inputs.iter().chain(u.outputs.iter()).map(|x| x.0))
-            .chain(std::iter::once(self.goal))
-            .filter(|&s| self.slots[s].node.label == label)
-            .collect();
-        out.sort_unstable();
-        out.dedup();
+        let mut out = self.live_slots();
+        out.retain(|&s| self.slots[s].node.label == label);
         out
     }
 
@@ -291,23 +285,15 @@ impl Tree {
             if slot.node.label != from && !slot.node.listed().any(|i| i == from) {
                 continue;
             }
-            let mut changed = false;
-            let mut node = map_contents(&slot.node, &mut |list| {
-                for item in list.iter_mut() {
-                    if item == from {
-                        *item = to.to_string();
-                        changed = true;
-                    }
+            edit_contents(&mut slot.node, &mut |list| {
+                for item in list.iter_mut().filter(|item| *item == from) {
+                    *item = to.to_string();
                 }
             });
-            if node.label == from {
-                node.label = to.to_string();
-                changed = true;
+            if slot.node.label == from {
+                slot.node.label = to.to_string();
             }
-            if changed {
-                slot.node = node;
-                touched.insert(s);
-            }
+            touched.insert(s);
         }
         for u in self.units.iter_mut() {
             if u.origin == Origin::Reference
