@@ -1,7 +1,6 @@
 //! FOON's building blocks: object nodes (a label in a set of states), motion nodes, functional units.
 
 use serde::Serialize;
-use std::collections::BTreeSet;
 
 /// What a state says about its object beyond its name: where it is, or what it holds.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
@@ -138,17 +137,18 @@ impl ObjectNode {
 
     /// Ingredients the object holds (`contains {…}`), sorted and unique.
     pub fn ingredients(&self) -> Vec<String> {
-        let set: BTreeSet<&String> = self
-            .states
-            .iter()
-            .filter(|s| s.name == "contains")
-            .filter_map(|s| match &s.arg {
-                Some(StateArg::Ingredients(list)) => Some(list.iter()),
-                _ => None,
-            })
-            .flatten()
-            .collect();
-        set.into_iter().cloned().collect()
+        self.ingredient_refs()
+            .into_iter()
+            .map(str::to_string)
+            .collect()
+    }
+
+    /// `ingredients` without copying the names.
+    pub fn ingredient_refs(&self) -> Vec<&str> {
+        let mut out: Vec<&str> = self.contents().collect();
+        out.sort_unstable();
+        out.dedup();
+        out
     }
 
     pub fn has_state(&self, name: &str) -> bool {

@@ -27,11 +27,29 @@ pub trait Similarity {
         &self,
         query: &str,
         set: u64,
-        candidates: &[&str],
+        candidates: &[String],
         top: usize,
     ) -> Vec<(String, f32)> {
         let _ = set;
-        self.rank(query, candidates, top)
+        let refs: Vec<&str> = candidates.iter().map(String::as_str).collect();
+        self.rank(query, &refs, top)
+    }
+
+    /// `query` made ready for many comparisons with the members of a candidate list that never changes
+    /// for a given `set` id: the planner asks thousands per plan, and an implementation can look the
+    /// query and the set up once instead of once per pair. The default compares by name each time.
+    fn prepare<'a>(
+        &'a self,
+        query: &str,
+        set: u64,
+        candidates: &'a [String],
+    ) -> Box<dyn Prepared + 'a> {
+        let _ = set;
+        Box::new(ByName {
+            sim: self,
+            query: query.to_string(),
+            candidates,
+        })
     }
 
     /// Whether a ranked substitute should be shown as doubtful (the UI then asks the user to pick from
@@ -43,6 +61,35 @@ pub trait Similarity {
     /// Whether a candidate this similar may stand in for an ingredient at all.
     fn accepts(&self, sim: f32) -> bool {
         sim >= 0.3
+    }
+}
+
+/// One name prepared by `Similarity::prepare`; `i` indexes its candidate list (out of range: 0).
+pub trait Prepared {
+    /// sim(query, candidates[i]).
+    fn to(&self, i: usize) -> f32;
+    /// sim(candidates[i], query): the similarity need not be symmetric.
+    fn from(&self, i: usize) -> f32;
+}
+
+/// `Similarity::prepare` for an implementation without anything to prepare.
+struct ByName<'a, S: ?Sized> {
+    sim: &'a S,
+    query: String,
+    candidates: &'a [String],
+}
+
+impl<S: Similarity + ?Sized> Prepared for ByName<'_, S> {
+    fn to(&self, i: usize) -> f32 {
+        self.candidates
+            .get(i)
+            .map_or(0.0, |c| self.sim.similarity(&self.query, c))
+    }
+
+    fn from(&self, i: usize) -> f32 {
+        self.candidates
+            .get(i)
+            .map_or(0.0, |c| self.sim.similarity(c, &self.query))
     }
 }
 

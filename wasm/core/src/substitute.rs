@@ -17,7 +17,7 @@ use crate::embedding::{is_stop_word, words, EmbeddingTable};
 use crate::error::Result;
 use crate::kb::KnowledgeBase;
 use crate::label::normalize_label;
-use crate::similarity::Similarity;
+use crate::similarity::{Prepared, Similarity};
 use rust_stemmers::{Algorithm, Stemmer};
 use rustc_hash::FxHashMap as HashMap;
 use serde::Serialize;
@@ -330,24 +330,65 @@ pub fn aliases() -> &'static Arc<HashMap<String, String>> {
     })
 }
 
+/// A string with its hash: nearly every comparison of the score is between unequal strings, and those
+/// differ at the first compare.
+#[derive(Clone, Debug)]
+struct Hashed {
+    hash: u64,
+    text: String,
+}
+
+impl Hashed {
+    fn new(text: String) -> Hashed {
+        use std::hash::{BuildHasher, BuildHasherDefault};
+        let hash = BuildHasherDefault::<rustc_hash::FxHasher>::default().hash_one(&text);
+        Hashed { hash, text }
+    }
+
+    /// Words joined by a space (words never hold one, so equal lists give equal texts).
+    fn words(words: &[String]) -> Hashed {
+        Hashed::new(words.join(" "))
+    }
+
+    fn is_empty(&self) -> bool {
+        self.text.is_empty()
+    }
+}
+
+impl PartialEq for Hashed {
+    fn eq(&self, other: &Hashed) -> bool {
+        self.hash == other.hash && self.text == other.text
+    }
+}
+
 /// Everything the score needs about one name, computed once per name.
 #[derive(Clone, Debug)]
 struct Profile {
     /// Normal form as given.
-    name: String,
+    name: Hashed,
     /// The name the embedding and taxonomy use (after the alias list).
-    canonical: String,
-    key: Vec<String>,
-    canonical_key: Vec<String>,
+    canonical: Hashed,
+    /// Word stems of `name`.
+    key: Hashed,
+    /// Word stems of the ingredient part of `canonical`, as the table resolves them.
+    canonical_key: Hashed,
+    /// The words of `canonical_key`; the last is the head noun.
+    stems: Vec<Hashed>,
     vector: Option<Vec<f32>>,
     category: Option<usize>,
+    /// The category's group, by index into the taxonomy's groups.
+    group: Option<usize>,
     /// Whether the category came from the listed names (not inferred from the vector).
     listed: bool,
+    /// A dish or a mixture rather than a base ingredient (see `is_composite`).
+    composite: bool,
+    /// A listed kitchen tool, container or appliance.
+    utensil: bool,
 }
 
 impl Profile {
-    fn head(&self) -> Option<&String> {
-        self.canonical_key.last()
+    fn head(&self) -> Option<&Hashed> {
+        self.stems.last()
     }
 
     fn is_known(&self) -> bool {
@@ -369,10 +410,13 @@ pub struct EmbeddingSimilarity {
     /// Answers of `rank_in_set` per (query, candidate set, top): ranking every label of a knowledge base
     /// is the costliest step of planning, and ingredient names recur from query to query.
     ranked: Mutex<HashMap<RankKey, Vec<(String, f32)>>>,
-    /// The profiles of the last candidate set ranked by `rank_in_set` (one knowledge base's labels), so
-    /// that a ranking does not look every label up in the profile cache again.
-    set_profiles: Mutex<Option<(u64, SetProfiles)>>,
+    /// The profiles of the candidate sets last used by `rank_in_set` and `prepare` (a knowledge base's
+    /// labels), most recent last, so that a ranking or a comparison does not look each label up again.
+    set_profiles: Mutex<Vec<(u64, SetProfiles)>>,
 }
+
+/// Candidate sets whose profiles are kept (a planner index has two: all labels, ingredient labels).
+const SET_PROFILES_KEPT: usize = 4;
 
 /// The profiles of one candidate set, in its order.
 type SetProfiles = Arc<Vec<Arc<Profile>>>;
@@ -454,7 +498,7 @@ impl EmbeddingSimilarity {
             confident_from: CONFIDENT_FROM,
             cache: Mutex::new(HashMap::default()),
             ranked: Mutex::new(HashMap::default()),
-            set_profiles: Mutex::new(None),
+            set_profiles: Mutex::new(Vec::new()),
         }
     }
 
@@ -567,15 +611,33 @@ impl EmbeddingSimilarity {
                 category = self.infer_category(v);
             }
         }
+        let group = category.map(|c| self.group_of(c));
+        let composite = self.is_composite(&name, listed, category);
+        let utensil =
+            listed && category.is_some_and(|c| self.taxonomy.category(c).group == UTENSIL_GROUP);
         Profile {
-            name,
-            canonical,
-            key,
-            canonical_key,
+            name: Hashed::new(name),
+            canonical: Hashed::new(canonical),
+            key: Hashed::words(&key),
+            canonical_key: Hashed::words(&canonical_key),
+            stems: canonical_key.into_iter().map(Hashed::new).collect(),
             vector,
             category,
+            group,
             listed,
+            composite,
+            utensil,
         }
+    }
+
+    /// Index of a category's group among the taxonomy's groups (first seen first).
+    fn group_of(&self, category: usize) -> usize {
+        let group = &self.taxonomy.category(category).group;
+        self.taxonomy
+            .categories
+            .iter()
+            .position(|c| c.group == *group)
+            .unwrap_or(category)
     }
 
     /// The category most of the nearest taxonomy members share (similarity-weighted vote of the
@@ -611,18 +673,12 @@ impl EmbeddingSimilarity {
             .map(|c| self.taxonomy.category(c))
     }
 
-    fn is_composite(&self, p: &Profile) -> bool {
-        let by_category = p.listed
-            && p.category.is_some_and(|c| {
+    fn is_composite(&self, name: &str, listed: bool, category: Option<usize>) -> bool {
+        let by_category = listed
+            && category.is_some_and(|c| {
                 COMPOSITE_GROUPS.contains(&self.taxonomy.category(c).group.as_str())
             });
-        by_category || p.name.contains('-') && !p.name.contains("-and-")
-    }
-
-    fn is_utensil(&self, p: &Profile) -> bool {
-        p.listed
-            && p.category
-                .is_some_and(|c| self.taxonomy.category(c).group == UTENSIL_GROUP)
+        by_category || name.contains('-') && !name.contains("-and-")
     }
 
     fn is_exact(&self, q: &Profile, c: &Profile) -> bool {
@@ -638,16 +694,17 @@ impl EmbeddingSimilarity {
         if self.is_exact(q, c) {
             return f32::INFINITY;
         }
+        self.graded(q, c, cosine_of(q, c))
+    }
+
+    /// The score of a pair that is not exact, from the cosine of their vectors.
+    fn graded(&self, q: &Profile, c: &Profile, cosine: f32) -> f32 {
         let o = &self.options;
-        let mut s = match (&q.vector, &c.vector) {
-            (Some(a), Some(b)) => a.iter().zip(b).map(|(x, y)| x * y).sum::<f32>(),
-            _ => 0.0,
-        };
+        let mut s = cosine;
         if let (Some(a), Some(b)) = (q.category, c.category) {
-            let (ca, cb) = (self.taxonomy.category(a), self.taxonomy.category(b));
             if a == b {
                 s += o.same_category;
-            } else if ca.group == cb.group {
+            } else if q.group == c.group {
                 s += o.same_group;
             } else {
                 s -= o.other_group;
@@ -658,47 +715,76 @@ impl EmbeddingSimilarity {
                 s += o.same_head;
             }
         }
-        let both_heads = |w: &String| q.head() == Some(w) && c.head() == Some(w);
-        if q.canonical_key
+        let both_heads = |w: &Hashed| q.head() == Some(w) && c.head() == Some(w);
+        if q.stems
             .iter()
-            .any(|w| c.canonical_key.contains(w) && !both_heads(w))
+            .any(|w| c.stems.contains(w) && !both_heads(w))
         {
             s += o.shared_word;
         }
         s
     }
 
+    /// The most `graded` can add to a cosine (with a margin for rounding): a candidate whose cosine
+    /// plus this cannot reach the ranking's last place is not scored.
+    fn max_bonus(&self) -> f32 {
+        let o = &self.options;
+        o.same_category.max(o.same_group).max(0.0)
+            + o.same_head.max(0.0)
+            + o.shared_word.max(0.0)
+            + 1e-3
+    }
+
     /// Ranks candidates for a query; shared by `rank` and the evaluation.
-    fn rank_profiles(&self, query: &str, candidates: &[&str], top: usize) -> Vec<(String, f32)> {
-        let profiles: Vec<Arc<Profile>> = candidates.iter().map(|c| self.profile(c)).collect();
+    fn rank_profiles<S: AsRef<str>>(
+        &self,
+        query: &str,
+        candidates: &[S],
+        top: usize,
+    ) -> Vec<(String, f32)> {
+        let profiles: Vec<Arc<Profile>> = candidates
+            .iter()
+            .map(|c| self.profile(c.as_ref()))
+            .collect();
         self.rank_among(query, candidates, &profiles, top)
     }
 
     /// The `top` best of `candidates` (with their `profiles`, same order), best first, ties by label,
     /// each label once. Keeps only the best few while scanning: a knowledge base has thousands of labels.
-    fn rank_among(
+    fn rank_among<S: AsRef<str>>(
         &self,
         query: &str,
-        candidates: &[&str],
+        candidates: &[S],
         profiles: &[Arc<Profile>],
         top: usize,
     ) -> Vec<(String, f32)> {
         let q = self.profile(query);
-        let keep_composites = !self.options.filter_composites || self.is_composite(&q);
+        let keep_composites = !self.options.filter_composites || q.composite;
+        let max_bonus = self.max_bonus();
         let better = |a: &(&str, f32), b: &(&str, f32)| {
             b.1.total_cmp(&a.1).then_with(|| a.0.cmp(b.0)) == std::cmp::Ordering::Less
         };
         let mut best: Vec<(&str, f32)> = Vec::with_capacity(top + 1);
-        for (&cand, c) in candidates.iter().zip(profiles) {
+        for (cand, c) in candidates.iter().zip(profiles) {
+            let cand = cand.as_ref();
             let exact = self.is_exact(&q, c);
             if !exact
                 && (!q.is_known()
-                    || (!keep_composites && self.is_composite(c))
-                    || (self.options.filter_composites && self.is_utensil(c)))
+                    || (!keep_composites && c.composite)
+                    || (self.options.filter_composites && c.utensil))
             {
                 continue;
             }
-            let item = (cand, self.score(&q, c));
+            let score = if exact {
+                f32::INFINITY
+            } else {
+                let cosine = cosine_of(&q, c);
+                if best.len() == top && best.last().is_some_and(|w| cosine + max_bonus < w.1) {
+                    continue; // cannot reach the last place
+                }
+                self.graded(&q, c, cosine)
+            };
+            let item = (cand, score);
             if best.len() == top && best.last().is_none_or(|w| !better(&item, w)) {
                 continue;
             }
@@ -714,13 +800,14 @@ impl EmbeddingSimilarity {
             .collect()
     }
 
-    /// The profiles of a candidate set, remembered for the last set id asked.
-    fn set_profiles(&self, set: u64, candidates: &[&str]) -> SetProfiles {
-        if let Ok(last) = self.set_profiles.lock() {
-            if let Some((id, profiles)) = last.as_ref() {
-                if *id == set && profiles.len() == candidates.len() {
-                    return Arc::clone(profiles);
-                }
+    /// The profiles of a candidate set, remembered for the last few set ids asked.
+    fn set_profiles(&self, set: u64, candidates: &[String]) -> SetProfiles {
+        if let Ok(kept) = self.set_profiles.lock() {
+            if let Some((_, profiles)) = kept
+                .iter()
+                .find(|(id, p)| *id == set && p.len() == candidates.len())
+            {
+                return Arc::clone(profiles);
             }
         }
         let profiles = Arc::new(
@@ -729,10 +816,51 @@ impl EmbeddingSimilarity {
                 .map(|c| self.profile(c))
                 .collect::<Vec<_>>(),
         );
-        if let Ok(mut last) = self.set_profiles.lock() {
-            *last = Some((set, Arc::clone(&profiles)));
+        if let Ok(mut kept) = self.set_profiles.lock() {
+            kept.retain(|(id, _)| *id != set);
+            if kept.len() >= SET_PROFILES_KEPT {
+                kept.remove(0);
+            }
+            kept.push((set, Arc::clone(&profiles)));
         }
         profiles
+    }
+
+    /// `Similarity::similarity` on profiles.
+    fn profile_similarity(&self, a: &Profile, b: &Profile) -> f32 {
+        if !a.is_known() && !self.is_exact(a, b) {
+            return 0.0;
+        }
+        squash(self.score(a, b))
+    }
+}
+
+/// A query's profile with the profiles of a candidate set (`Similarity::prepare`).
+struct PreparedName<'a> {
+    sim: &'a EmbeddingSimilarity,
+    query: Arc<Profile>,
+    set: SetProfiles,
+}
+
+impl Prepared for PreparedName<'_> {
+    fn to(&self, i: usize) -> f32 {
+        self.set
+            .get(i)
+            .map_or(0.0, |c| self.sim.profile_similarity(&self.query, c))
+    }
+
+    fn from(&self, i: usize) -> f32 {
+        self.set
+            .get(i)
+            .map_or(0.0, |c| self.sim.profile_similarity(c, &self.query))
+    }
+}
+
+/// Cosine of two profiles' unit vectors (0 when either has none).
+fn cosine_of(q: &Profile, c: &Profile) -> f32 {
+    match (&q.vector, &c.vector) {
+        (Some(a), Some(b)) => a.iter().zip(b).map(|(x, y)| x * y).sum::<f32>(),
+        _ => 0.0,
     }
 }
 
@@ -755,11 +883,7 @@ fn squash(score: f32) -> f32 {
 
 impl Similarity for EmbeddingSimilarity {
     fn similarity(&self, a: &str, b: &str) -> f32 {
-        let (p, q) = (self.profile(a), self.profile(b));
-        if !p.is_known() && !self.is_exact(&p, &q) {
-            return 0.0;
-        }
-        squash(self.score(&p, &q))
+        self.profile_similarity(&self.profile(a), &self.profile(b))
     }
 
     fn rank(&self, query: &str, candidates: &[&str], top: usize) -> Vec<(String, f32)> {
@@ -770,7 +894,7 @@ impl Similarity for EmbeddingSimilarity {
         &self,
         query: &str,
         set: u64,
-        candidates: &[&str],
+        candidates: &[String],
         top: usize,
     ) -> Vec<(String, f32)> {
         if query.len() > MAX_CACHED_NAME {
@@ -791,6 +915,19 @@ impl Similarity for EmbeddingSimilarity {
             cache.insert(key, r.clone());
         }
         r
+    }
+
+    fn prepare<'a>(
+        &'a self,
+        query: &str,
+        set: u64,
+        candidates: &'a [String],
+    ) -> Box<dyn Prepared + 'a> {
+        Box::new(PreparedName {
+            sim: self,
+            query: self.profile(query),
+            set: self.set_profiles(set, candidates),
+        })
     }
 
     fn low_confidence(&self, query: &str, label: &str, similarity: f32) -> bool {

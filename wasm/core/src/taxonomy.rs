@@ -2,7 +2,7 @@
 //! containers and appliances that are never ingredients. Both are project files under `data/`.
 
 use crate::label::{fold, normalize_label};
-use std::collections::HashSet;
+use rustc_hash::FxHashSet as HashSet;
 use std::sync::OnceLock;
 
 const DISH_CLASSES_TSV: &str = include_str!("../data/dish_classes.tsv");
@@ -89,7 +89,8 @@ pub fn dish_class_of(text: &str) -> Option<u32> {
     best.map(|b| b.2)
 }
 
-/// Labels that are utensils, containers or appliances rather than ingredients.
+/// Labels that are utensils, containers or appliances rather than ingredients (Fx hashing: the planner
+/// asks this of nearly every node it touches).
 pub fn utensils() -> &'static HashSet<String> {
     static UTENSILS: OnceLock<HashSet<String>> = OnceLock::new();
     UTENSILS.get_or_init(|| data_lines(UTENSILS_TXT).map(normalize_label).collect())

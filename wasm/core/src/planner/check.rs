@@ -23,11 +23,14 @@ pub const START_STATES: &[&str] = &[
 pub(crate) type NodeKey = (String, Vec<String>, Vec<String>, Option<String>);
 
 pub(crate) fn node_key(n: &PlanNode) -> NodeKey {
-    let mut states = n.states.clone();
-    states.sort();
-    let mut ingredients = n.ingredients.clone();
-    ingredients.sort();
-    (n.label.clone(), states, ingredients, n.container.clone())
+    into_node_key(n.clone())
+}
+
+/// `node_key` of a node that is no longer needed (no copies).
+pub(crate) fn into_node_key(mut n: PlanNode) -> NodeKey {
+    n.states.sort();
+    n.ingredients.sort();
+    (n.label, n.states, n.ingredients, n.container)
 }
 
 /// A node the kitchen has at the start even when some unit makes it again (an empty bowl, a lid put

@@ -12,8 +12,10 @@ use std::sync::atomic::{AtomicU64, Ordering};
 /// Built once per knowledge base (`PlannerIndex::new`) and passed to every `plan` call.
 #[derive(Clone, Debug, Default)]
 pub struct PlannerIndex {
-    /// Unique for the process: names this index's label list for `Similarity::rank_in_set`.
+    /// Unique for the process: names this index's ingredient labels for `Similarity::rank_in_set`.
     pub(crate) id: u64,
+    /// Unique for the process: names `label_names` for `Similarity::prepare`.
+    pub(crate) label_set: u64,
     /// Object nodes per label (ids ascending).
     pub(crate) by_label: HashMap<String, Vec<NodeId>>,
     /// Distinct ingredient labels (not utensils), sorted.
@@ -35,8 +37,13 @@ pub struct PlannerIndex {
     unit_ingredients: Vec<Vec<u32>>,
     /// Per goal (`kb.goals` order), the ids of its ingredients that are not utensils, as listed.
     goal_ingredients: Vec<Vec<u32>>,
-    /// For each node, the subgraphs (sorted) in which some unit makes it (not merely passes it on).
-    made_in: Vec<Vec<String>>,
+    /// Subgraph names by id; ids follow name order, so sorted id lists are sorted name lists.
+    subgraph_ids: HashMap<String, u32>,
+    /// For each unit, the ids of the subgraphs it occurs in (sorted): `kb.provenance` without strings.
+    unit_sources: Vec<Vec<u32>>,
+    /// For each node, the ids of the subgraphs (sorted) in which some unit makes it (not merely passes
+    /// it on).
+    made_in: Vec<Vec<u32>>,
 }
 
 static NEXT_ID: AtomicU64 = AtomicU64::new(1);
@@ -75,11 +82,27 @@ impl PlannerIndex {
         let mut motion_state: BTreeMap<String, BTreeMap<String, u32>> = BTreeMap::new();
         let mut motion_cat: BTreeMap<Category, BTreeMap<String, u32>> = BTreeMap::new();
         let mut motion_utensil: BTreeMap<String, BTreeMap<NodeId, u32>> = BTreeMap::new();
-        let mut made_in: Vec<BTreeSet<&str>> = vec![BTreeSet::new(); kb.nodes.len()];
+        let names: BTreeSet<&String> = kb.provenance.iter().flatten().collect();
+        let subgraph_ids: HashMap<String, u32> = names
+            .into_iter()
+            .enumerate()
+            .map(|(i, n)| (n.clone(), i as u32))
+            .collect();
+        let unit_sources: Vec<Vec<u32>> = kb
+            .provenance
+            .iter()
+            .map(|p| {
+                let mut ids: Vec<u32> = p.iter().map(|s| subgraph_ids[s]).collect();
+                ids.sort_unstable();
+                ids.dedup();
+                ids
+            })
+            .collect();
+        let mut made_in: Vec<Vec<u32>> = vec![Vec::new(); kb.nodes.len()];
         for (uid, u) in kb.units.iter().enumerate() {
             for o in u.output_nodes() {
                 if !u.input_nodes().any(|i| i == o) {
-                    made_in[o].extend(kb.provenance[uid].iter().map(String::as_str));
+                    made_in[o].extend_from_slice(&unit_sources[uid]);
                 }
             }
             let classes: BTreeSet<Option<u32>> = kb.provenance[uid]
@@ -193,6 +216,7 @@ impl PlannerIndex {
             label_ids,
             unit_ingredients,
             id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
+            label_set: NEXT_ID.fetch_add(1, Ordering::Relaxed),
             by_label,
             ingredient_labels,
             label_state,
@@ -211,29 +235,50 @@ impl PlannerIndex {
                 .collect(),
             made_in: made_in
                 .into_iter()
-                .map(|s| s.into_iter().map(str::to_string).collect())
+                .map(|mut ids| {
+                    ids.sort_unstable();
+                    ids.dedup();
+                    ids
+                })
                 .collect(),
+            subgraph_ids,
+            unit_sources,
         }
     }
 
     /// Whether node `n` is a starting item of one of the recipes unit `u` comes from (that recipe
     /// never makes it): retrieval takes it from the kitchen there, as the recipe did.
-    pub(crate) fn starts_in_recipe_of(&self, kb: &KnowledgeBase, u: usize, n: NodeId) -> bool {
+    pub(crate) fn starts_in_recipe_of(&self, u: usize, n: NodeId) -> bool {
         let made = self.made_in.get(n).map(Vec::as_slice).unwrap_or(&[]);
-        kb.provenance
-            .get(u)
-            .is_some_and(|p| p.iter().any(|s| made.binary_search(s).is_err()))
+        self.sources(u)
+            .iter()
+            .any(|s| made.binary_search(s).is_err())
+    }
+
+    /// The ids of the subgraphs unit `u` occurs in, sorted.
+    pub(crate) fn sources(&self, u: usize) -> &[u32] {
+        self.unit_sources.get(u).map(Vec::as_slice).unwrap_or(&[])
+    }
+
+    /// Whether units `u` and `v` occur in a common subgraph.
+    pub(crate) fn share_recipe(&self, u: usize, v: usize) -> bool {
+        let theirs = self.sources(v);
+        self.sources(u)
+            .iter()
+            .any(|s| theirs.binary_search(s).is_ok())
+    }
+
+    pub(crate) fn subgraph_id(&self, name: &str) -> Option<u32> {
+        self.subgraph_ids.get(name).copied()
     }
 
     pub(crate) fn label_id(&self, label: &str) -> Option<u32> {
         self.label_ids.get(label).copied()
     }
 
-    pub(crate) fn label_name(&self, id: u32) -> &str {
-        self.label_names
-            .get(id as usize)
-            .map(String::as_str)
-            .unwrap_or("")
+    /// Every label name, by id.
+    pub(crate) fn label_names(&self) -> &[String] {
+        &self.label_names
     }
 
     pub(crate) fn label_count(&self) -> usize {

@@ -61,7 +61,7 @@ pub fn plan(
         index,
         &scorer,
         chosen.goal.node,
-        Some(&chosen.goal.subgraph),
+        index.subgraph_id(&chosen.goal.subgraph),
         &HashSet::default(),
     );
     for &n in &reference.blocked {
@@ -77,7 +77,7 @@ pub fn plan(
         sim: similarity,
         class,
         overrides: &overrides,
-        goal_subgraph: &chosen.goal.subgraph,
+        goal_subgraph: index.subgraph_id(&chosen.goal.subgraph),
         scorer: &scorer,
         motion_fit: Default::default(),
     };

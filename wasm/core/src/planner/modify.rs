@@ -20,7 +20,8 @@ pub(crate) struct Context<'a> {
     pub sim: &'a dyn Similarity,
     pub class: Option<u32>,
     pub overrides: &'a BTreeMap<String, String>,
-    pub goal_subgraph: &'a str,
+    /// The reference recipe's subgraph id.
+    pub goal_subgraph: Option<u32>,
     pub scorer: &'a super::score::Scorer<'a>,
     /// Per motion: whether it takes more ingredients, and its rank in the dish's pattern (see
     /// `attach_point`; remembered because every attachment asks it of every unit).
@@ -358,13 +359,9 @@ fn equivalent(
     tree_labels: &[String],
     w: &mut Work,
 ) -> Option<(String, f32)> {
-    let all: Vec<&str> = ctx
-        .index
-        .ingredient_labels
-        .iter()
-        .map(String::as_str)
-        .collect();
-    let ranked = ctx.sim.rank_in_set(o, ctx.index.id, &all, 6);
+    let ranked = ctx
+        .sim
+        .rank_in_set(o, ctx.index.id, &ctx.index.ingredient_labels, 6);
     let alternatives = |eq: &str| -> Vec<Alternative> {
         ranked
             .iter()
@@ -572,7 +569,7 @@ fn restate(ctx: &Context, tree: &mut Tree, eq: &str, o: &str, s: &str) -> Result
             ctx.index,
             ctx.scorer,
             kb_node,
-            Some(ctx.goal_subgraph),
+            ctx.goal_subgraph,
             &taken,
         );
         if r.units.is_empty() {
@@ -885,7 +882,7 @@ fn attach_point(ctx: &Context, tree: &Tree, o: &str, c: Category) -> Option<TUni
             !is_utensil(&n.label)
                 && n.label != o
                 && ((!matches!(c, Category::Whole | Category::Other) && node_category(n) == c) || {
-                    let sim = ctx.sim.similarity(o, &n.label);
+                    let sim = ctx.scorer.pair(o, &n.label);
                     ctx.sim.accepts(sim) && sim < 1.0
                 })
         });

@@ -51,7 +51,7 @@ fn depends_on(
 }
 
 /// Retrieves the tree making `root`. `root` is expanded even when it is a kitchen item (a goal, or a
-/// leaf whose making is asked for); every other kitchen node stops the search. `prefer` names a subgraph
+/// leaf whose making is asked for); every other kitchen node stops the search. `prefer` is a subgraph id
 /// whose units win ties (the reference recipe), and `taken` lists units already in the caller's tree.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn retrieve(
@@ -59,15 +59,19 @@ pub(crate) fn retrieve(
     index: &PlannerIndex,
     scorer: &Scorer,
     root: NodeId,
-    prefer: Option<&str>,
+    prefer: Option<u32>,
     taken: &HashSet<UnitId>,
 ) -> Retrieved {
-    let mut chosen: HashMap<NodeId, UnitId> = HashMap::default();
-    let mut in_tree: HashSet<UnitId> = HashSet::default();
-    let mut selection_order: Vec<UnitId> = Vec::new();
+    // sized for a typical recipe's tree, so that the tables do not grow step by step
+    let mut chosen: HashMap<NodeId, UnitId> =
+        HashMap::with_capacity_and_hasher(64, Default::default());
+    let mut in_tree: HashSet<UnitId> = HashSet::with_capacity_and_hasher(64, Default::default());
     let mut blocked = Vec::new();
-    let mut visited: HashSet<NodeId> = HashSet::default();
-    let mut scratch = (Vec::new(), HashSet::default());
+    let mut visited: HashSet<NodeId> = HashSet::with_capacity_and_hasher(128, Default::default());
+    let mut scratch = (
+        Vec::new(),
+        HashSet::with_capacity_and_hasher(64, Default::default()),
+    );
     // each node with the unit that needs it (None for the root)
     let mut queue: VecDeque<(NodeId, Option<UnitId>)> = VecDeque::from([(root, None)]);
     visited.insert(root);
@@ -76,7 +80,7 @@ pub(crate) fn retrieve(
             continue;
         }
         // a starting item of the recipe that needs it is taken from the kitchen, as that recipe did
-        if parent.is_some_and(|p| index.starts_in_recipe_of(kb, p, node)) {
+        if parent.is_some_and(|p| index.starts_in_recipe_of(p, node)) {
             continue;
         }
         let Some(producers) = kb.producers.get(node) else {
@@ -94,10 +98,8 @@ pub(crate) fn retrieve(
                 continue; // the unit needs what it makes: it only passes the object on
             }
             let same_recipe = match parent {
-                Some(p) => kb.provenance[u]
-                    .iter()
-                    .any(|s| kb.provenance[p].binary_search(s).is_ok()),
-                None => prefer.is_some_and(|p| kb.provenance[u].iter().any(|s| s == p)),
+                Some(p) => index.share_recipe(u, p),
+                None => prefer.is_some_and(|p| index.sources(u).contains(&p)),
             };
             if unit
                 .input_nodes()
@@ -143,9 +145,7 @@ pub(crate) fn retrieve(
             continue;
         }
         chosen.insert(node, u);
-        if in_tree.insert(u) {
-            selection_order.push(u);
-        }
+        in_tree.insert(u);
         let mut inputs: Vec<NodeId> = kb.units[u].input_nodes().collect();
         inputs.sort_unstable();
         for n in inputs {

@@ -7,10 +7,10 @@
 //! it as a product. The goal is never in the kitchen at the start: a unit that needs it before it is made
 //! is dropped. Duplicated units and units whose products nobody uses are dropped.
 
-use super::check::{available_at_start, node_key, NodeKey};
+use super::check::{available_at_start, into_node_key, NodeKey};
 use super::output::plan_node;
 use super::tree::{SlotId, TUnitId, Tree};
-use crate::model::StateArg;
+use crate::model::{ObjectNode, StateArg};
 use crate::plan::{IngredientOutcome, Status};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::collections::{BTreeSet, BinaryHeap};
@@ -28,7 +28,11 @@ fn values(tree: &Tree) -> Values {
     for x in tree.live_slots() {
         live[x] = true;
     }
-    let mut ids: HashMap<NodeKey, Value> = HashMap::default();
+    // Equal nodes have equal plan keys, so each distinct node is keyed once (plan nodes are costly).
+    let mut by_node: HashMap<&ObjectNode, Value> =
+        HashMap::with_capacity_and_hasher(tree.slots.len(), Default::default());
+    let mut ids: HashMap<NodeKey, Value> =
+        HashMap::with_capacity_and_hasher(tree.slots.len(), Default::default());
     // one value for every slot no live unit uses (never looked at)
     let unused = 0;
     let mut start = vec![false];
@@ -37,12 +41,19 @@ fn values(tree: &Tree) -> Values {
             if !live[x] {
                 return unused;
             }
-            let p = plan_node(&tree.slots[x].node);
+            let node = &tree.slots[x].node;
+            if let Some(&v) = by_node.get(node) {
+                return v;
+            }
+            let p = plan_node(node);
+            let at_start = available_at_start(&p);
             let next = ids.len() + 1;
-            *ids.entry(node_key(&p)).or_insert_with(|| {
-                start.push(available_at_start(&p));
+            let v = *ids.entry(into_node_key(p)).or_insert_with(|| {
+                start.push(at_start);
                 next
-            })
+            });
+            by_node.insert(node, v);
+            v
         })
         .collect();
     Values { of_slot, start }

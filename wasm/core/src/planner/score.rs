@@ -4,7 +4,7 @@
 
 use super::index::PlannerIndex;
 use crate::model::UnitId;
-use crate::similarity::Similarity;
+use crate::similarity::{Prepared, Similarity};
 use rustc_hash::FxHashMap as HashMap;
 use std::cell::RefCell;
 
@@ -12,6 +12,8 @@ pub(crate) struct Scorer<'a> {
     sim: &'a dyn Similarity,
     index: &'a PlannerIndex,
     query: &'a [String],
+    /// Each query name prepared against the index's labels (by label id).
+    prepared: Vec<Box<dyn Prepared + 'a>>,
     /// Label id of each query name, when the knowledge base has it.
     query_ids: Vec<Option<u32>>,
     /// Per query name, its similarity to each label id (NaN until asked).
@@ -28,6 +30,10 @@ impl<'a> Scorer<'a> {
             index,
             query,
             query_ids: query.iter().map(|q| index.label_id(q)).collect(),
+            prepared: query
+                .iter()
+                .map(|q| sim.prepare(q, index.label_set, index.label_names()))
+                .collect(),
             rows: RefCell::new(vec![Vec::new(); query.len()]),
             reverse: RefCell::new(vec![Vec::new(); query.len()]),
             units: RefCell::new(HashMap::default()),
@@ -36,16 +42,12 @@ impl<'a> Scorer<'a> {
 
     /// sim(query name `q`, label).
     fn similarity(&self, q: usize, label: u32) -> f32 {
-        self.remembered(&self.rows, q, label, |name, label| {
-            self.sim.similarity(name, label)
-        })
+        self.remembered(&self.rows, q, label, |p, i| p.to(i))
     }
 
     /// sim(label, query name `q`).
     fn similarity_to(&self, label: u32, q: usize) -> f32 {
-        self.remembered(&self.reverse, q, label, |name, label| {
-            self.sim.similarity(label, name)
-        })
+        self.remembered(&self.reverse, q, label, |p, i| p.from(i))
     }
 
     fn remembered(
@@ -53,7 +55,7 @@ impl<'a> Scorer<'a> {
         table: &RefCell<Vec<Vec<f32>>>,
         q: usize,
         label: u32,
-        compute: impl Fn(&str, &str) -> f32,
+        compute: impl Fn(&dyn Prepared, usize) -> f32,
     ) -> f32 {
         let mut rows = table.borrow_mut();
         let row = &mut rows[q];
@@ -62,9 +64,21 @@ impl<'a> Scorer<'a> {
         }
         let cell = &mut row[label as usize];
         if cell.is_nan() {
-            *cell = compute(&self.query[q], self.index.label_name(label));
+            *cell = compute(self.prepared[q].as_ref(), label as usize);
         }
         *cell
+    }
+
+    /// sim(query name `name`, `label`), remembered when both are known to the scorer (an attachment
+    /// asks it of every ingredient of every unit).
+    pub fn pair(&self, name: &str, label: &str) -> f32 {
+        match (
+            self.query.iter().position(|q| q == name),
+            self.index.label_id(label),
+        ) {
+            (Some(q), Some(id)) => self.similarity(q, id),
+            _ => self.sim.similarity(name, label),
+        }
     }
 
     /// Label id of query name `q`, when the knowledge base has the name.

@@ -237,21 +237,30 @@ impl Tree {
 
     /// Slots used by live units, and the goal, ascending.
     pub fn live_slots(&self) -> Vec<SlotId> {
-        let mut out: Vec<SlotId> = self
-            .alive_units()
-            .flat_map(|(_, u)| u.inputs.iter().chain(u.outputs.iter()).map(|x| x.0))
-            .chain(std::iter::once(self.goal))
-            .collect();
-        out.sort_unstable();
-        out.dedup();
-        out
+        self.live_where(|_| true)
     }
 
     /// Live slots with the label, in slot order.
     pub fn slots_with_label(&self, label: &str) -> Vec<SlotId> {
-        let mut out = self.live_slots();
-        out.retain(|&s| self.slots[s].node.label == label);
-        out
+        self.live_where(|s| s.node.label == label)
+    }
+
+    /// Live slots that pass `keep`, ascending (marks by index: no sort, asked many times per plan).
+    fn live_where(&self, keep: impl Fn(&Slot) -> bool) -> Vec<SlotId> {
+        let mut live = vec![false; self.slots.len()];
+        if let Some(goal) = live.get_mut(self.goal) {
+            *goal = true;
+        }
+        for (_, u) in self.alive_units() {
+            for x in u.inputs.iter().chain(u.outputs.iter()) {
+                live[x.0] = true;
+            }
+        }
+        live.iter()
+            .enumerate()
+            .filter(|&(s, &l)| l && keep(&self.slots[s]))
+            .map(|(s, _)| s)
+            .collect()
     }
 
     /// Ingredient labels in the tree (not utensils, not the goal's own label).
@@ -321,7 +330,7 @@ impl Tree {
         let with_lists: Vec<(SlotId, usize)> = u
             .outputs
             .iter()
-            .map(|o| (o.0, self.slots[o.0].node.ingredients().len()))
+            .map(|o| (o.0, self.slots[o.0].node.ingredient_refs().len()))
             .filter(|(_, n)| *n > 0)
             .collect();
         let longest = with_lists.iter().map(|x| x.1).max().unwrap_or(0);
@@ -336,10 +345,10 @@ impl Tree {
             if !seen.insert(s) {
                 continue;
             }
-            let old = self.slots[s].node.ingredients();
-            if old.iter().any(|x| x == label) {
+            if self.slots[s].node.contents().any(|x| x == label) {
                 continue;
             }
+            let old = self.slots[s].node.ingredients();
             edit_contents(&mut self.slots[s].node, &mut |list| {
                 list.push(label.to_string())
             });
