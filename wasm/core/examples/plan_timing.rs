@@ -67,6 +67,9 @@ fn main() {
             std::hint::black_box(json.ok());
         }
     }
+    if times.is_empty() {
+        return;
+    }
     times.sort_by(f64::total_cmp);
     let at = |p: f64| times[((p * times.len() as f64) as usize).min(times.len() - 1)];
     println!(

@@ -9,6 +9,7 @@ use crate::model::{FunctionalUnit, NodeId, ObjectNode, UnitId, UnitObject};
 use crate::parse::Subgraph;
 use crate::taxonomy::{is_utensil, RAW_STATES};
 use serde::Serialize;
+use rustc_hash::{FxHashMap, FxHashSet};
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 /// A goal node of one subgraph: the finished dish that subgraph annotates.
@@ -48,7 +49,7 @@ pub struct KnowledgeBase {
     pub units_before_merge: usize,
     /// Reader warnings of all files (skipped units), sorted by file and line.
     pub warnings: Vec<FoonError>,
-    node_index: HashMap<ObjectNode, NodeId>,
+    node_index: FxHashMap<ObjectNode, NodeId>,
 }
 
 type UnitKey = (Vec<NodeId>, String, Vec<NodeId>);
@@ -75,14 +76,17 @@ impl KnowledgeBase {
             ));
         }
         // Number nodes in sorted order so that ids do not depend on file order.
-        let all: BTreeSet<&ObjectNode> = subgraphs
+        // distinct first, then sorted: nodes recur in many units, and comparing them is the cost
+        let distinct: FxHashSet<&ObjectNode> = subgraphs
             .iter()
             .flat_map(|g| g.units.iter())
             .flat_map(|u| u.inputs.iter().chain(u.outputs.iter()))
             .map(|o| &o.node)
             .collect();
+        let mut all: Vec<&ObjectNode> = distinct.into_iter().collect();
+        all.sort_unstable();
         let nodes: Vec<ObjectNode> = all.into_iter().cloned().collect();
-        let node_index: HashMap<ObjectNode, NodeId> = nodes
+        let node_index: FxHashMap<ObjectNode, NodeId> = nodes
             .iter()
             .cloned()
             .enumerate()
@@ -245,7 +249,7 @@ impl KnowledgeBase {
 
 fn objects(
     list: &[crate::parse::ParsedObject],
-    index: &HashMap<ObjectNode, NodeId>,
+    index: &FxHashMap<ObjectNode, NodeId>,
 ) -> Vec<UnitObject> {
     let mut out: Vec<UnitObject> = list
         .iter()

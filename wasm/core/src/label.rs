@@ -59,8 +59,28 @@ const IRREGULAR: &[(&str, &str)] = &[
 
 /// Lower case, trimmed, inner white space and underscores folded to single spaces.
 pub fn fold(text: &str) -> String {
+    if is_folded(text) {
+        return text.to_string(); // the common case: a reader folds every label of every line
+    }
     let lowered = text.to_lowercase().replace('_', " ");
     lowered.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// Whether `fold` would return the text unchanged: ASCII without capitals or underscores, words
+/// separated by single spaces.
+fn is_folded(text: &str) -> bool {
+    let bytes = text.as_bytes();
+    let mut last = b' ';
+    for &b in bytes {
+        if !b.is_ascii() || b.is_ascii_uppercase() || b == b'_' {
+            return false;
+        }
+        if b.is_ascii_whitespace() && (b != b' ' || last == b' ') {
+            return false;
+        }
+        last = b;
+    }
+    last != b' ' || bytes.is_empty()
 }
 
 /// Singular form of one English word; never invents a non-word for the exceptions above
@@ -92,11 +112,13 @@ pub fn singular(word: &str) -> String {
 /// The normal form of an object label: folded, with its head (last) word singular.
 /// Modifiers are left alone ("brussels sprouts" -> "brussels sprout").
 pub fn normalize_label(text: &str) -> String {
-    let folded = fold(text);
-    match folded.rsplit_once(' ') {
-        Some((head, last)) => format!("{head} {}", singular(last)),
-        None => singular(&folded),
+    let mut folded = fold(text);
+    let at = folded.rfind(' ').map_or(0, |i| i + 1);
+    let last = singular(&folded[at..]);
+    if last != folded[at..] {
+        folded.replace_range(at.., &last);
     }
+    folded
 }
 
 /// States and motions are verbs/adjectives: folded only, never singularised.
@@ -130,6 +152,24 @@ mod tests {
             ("hummus", "hummus"),
         ] {
             assert_eq!(normalize_label(given), want, "{given}");
+        }
+    }
+
+    #[test]
+    fn folding_leaves_folded_text_alone_and_folds_the_rest() {
+        for (given, want) in [
+            ("chopped onion", "chopped onion"),
+            ("", ""),
+            (" ", ""),
+            ("a  b", "a b"),
+            (" a", "a"),
+            ("a ", "a"),
+            ("a\tb", "a b"),
+            ("a_b", "a b"),
+            ("Crème Brûlée", "crème brûlée"),
+            ("off (ready)", "off (ready)"),
+        ] {
+            assert_eq!(fold(given), want, "{given:?}");
         }
     }
 
