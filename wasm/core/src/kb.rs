@@ -8,8 +8,8 @@ use crate::limits;
 use crate::model::{FunctionalUnit, NodeId, ObjectNode, UnitId, UnitObject};
 use crate::parse::Subgraph;
 use crate::taxonomy::{is_utensil, RAW_STATES};
-use serde::Serialize;
 use rustc_hash::{FxHashMap, FxHashSet};
+use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 /// A goal node of one subgraph: the finished dish that subgraph annotates.

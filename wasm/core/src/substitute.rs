@@ -418,8 +418,61 @@ pub struct EmbeddingSimilarity {
 /// Candidate sets whose profiles are kept (a planner index has two: all labels, ingredient labels).
 const SET_PROFILES_KEPT: usize = 4;
 
-/// The profiles of one candidate set, in its order.
-type SetProfiles = Arc<Vec<Arc<Profile>>>;
+/// The profiles of one candidate set, in its order, remembered between calls.
+type SetProfiles = Arc<CandidateSet>;
+
+/// The profiles of a candidate set, with what a ranking reads of every candidate laid out in order: a
+/// scan of a large knowledge base's labels then reads memory front to back instead of one profile here
+/// and one there.
+struct CandidateSet {
+    profiles: Vec<Arc<Profile>>,
+    dims: usize,
+    /// `dims` values per candidate: its unit vector, or zeros when `has_vector` is false.
+    vectors: Vec<f32>,
+    has_vector: Vec<bool>,
+    /// Hashes of each candidate's name and word-stem key: only one sharing a hash with the query can be
+    /// an exact match.
+    name_hash: Vec<u64>,
+    key_hash: Vec<u64>,
+    composite: Vec<bool>,
+    utensil: Vec<bool>,
+}
+
+impl CandidateSet {
+    fn new(profiles: Vec<Arc<Profile>>, dims: usize) -> CandidateSet {
+        let mut vectors = vec![0.0; profiles.len() * dims];
+        for (p, row) in profiles.iter().zip(vectors.chunks_exact_mut(dims.max(1))) {
+            if let Some(v) = &p.vector {
+                row.copy_from_slice(&v[..dims]);
+            }
+        }
+        CandidateSet {
+            dims,
+            vectors,
+            has_vector: profiles.iter().map(|p| p.vector.is_some()).collect(),
+            name_hash: profiles.iter().map(|p| p.name.hash).collect(),
+            key_hash: profiles.iter().map(|p| p.key.hash).collect(),
+            composite: profiles.iter().map(|p| p.composite).collect(),
+            utensil: profiles.iter().map(|p| p.utensil).collect(),
+            profiles,
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.profiles.len()
+    }
+
+    /// `cosine_of(q, candidate i)`, from the laid-out vectors.
+    fn cosine(&self, q: &Profile, i: usize) -> f32 {
+        match &q.vector {
+            Some(a) if self.has_vector[i] => {
+                let b = &self.vectors[i * self.dims..(i + 1) * self.dims];
+                a.iter().zip(b).map(|(x, y)| x * y).sum::<f32>()
+            }
+            _ => 0.0,
+        }
+    }
+}
 
 /// (query, candidate set, top) of a remembered ranking.
 type RankKey = (String, u64, usize);
@@ -648,8 +701,13 @@ impl EmbeddingSimilarity {
             .iter()
             .map(|(m, c)| (m.iter().zip(v).map(|(a, b)| a * b).sum::<f32>(), *c))
             .collect();
-        near.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
-        near.truncate(INFER_NEIGHBOURS);
+        let nearer = |a: &(f32, usize), b: &(f32, usize)| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1));
+        if near.len() > INFER_NEIGHBOURS {
+            // only the nearest few vote: select them rather than sort every member
+            near.select_nth_unstable_by(INFER_NEIGHBOURS - 1, nearer);
+            near.truncate(INFER_NEIGHBOURS);
+        }
+        near.sort_by(nearer);
         if near.first()?.0 < self.options.infer_category_above {
             return None;
         }
@@ -746,16 +804,18 @@ impl EmbeddingSimilarity {
             .iter()
             .map(|c| self.profile(c.as_ref()))
             .collect();
-        self.rank_among(query, candidates, &profiles, top)
+        let set = CandidateSet::new(profiles, self.table.dims());
+        self.rank_among(query, candidates, &set, top)
     }
 
-    /// The `top` best of `candidates` (with their `profiles`, same order), best first, ties by label,
-    /// each label once. Keeps only the best few while scanning: a knowledge base has thousands of labels.
+    /// The `top` best of `candidates` (with their profiles in `set`, same order), best first, ties by
+    /// label, each label once. Keeps only the best few while scanning: a knowledge base has thousands of
+    /// labels, and a candidate that cannot place is not scored.
     fn rank_among<S: AsRef<str>>(
         &self,
         query: &str,
         candidates: &[S],
-        profiles: &[Arc<Profile>],
+        set: &CandidateSet,
         top: usize,
     ) -> Vec<(String, f32)> {
         let q = self.profile(query);
@@ -765,24 +825,31 @@ impl EmbeddingSimilarity {
             b.1.total_cmp(&a.1).then_with(|| a.0.cmp(b.0)) == std::cmp::Ordering::Less
         };
         let mut best: Vec<(&str, f32)> = Vec::with_capacity(top + 1);
-        for (cand, c) in candidates.iter().zip(profiles) {
+        let exact_first = self.options.exact_first;
+        for (i, cand) in candidates.iter().enumerate().take(set.len()) {
             let cand = cand.as_ref();
-            let exact = self.is_exact(&q, c);
+            let (name, key) = (set.name_hash[i], set.key_hash[i]);
+            let may_be_exact = name == q.name.hash
+                || (exact_first
+                    && (name == q.canonical.hash
+                        || (!q.key.is_empty() && key == q.key.hash)
+                        || (!q.canonical_key.is_empty() && key == q.canonical_key.hash)));
+            let exact = may_be_exact && self.is_exact(&q, &set.profiles[i]);
             if !exact
                 && (!q.is_known()
-                    || (!keep_composites && c.composite)
-                    || (self.options.filter_composites && c.utensil))
+                    || (!keep_composites && set.composite[i])
+                    || (self.options.filter_composites && set.utensil[i]))
             {
                 continue;
             }
             let score = if exact {
                 f32::INFINITY
             } else {
-                let cosine = cosine_of(&q, c);
+                let cosine = set.cosine(&q, i);
                 if best.len() == top && best.last().is_some_and(|w| cosine + max_bonus < w.1) {
                     continue; // cannot reach the last place
                 }
-                self.graded(&q, c, cosine)
+                self.graded(&q, &set.profiles[i], cosine)
             };
             let item = (cand, score);
             if best.len() == top && best.last().is_none_or(|w| !better(&item, w)) {
@@ -810,12 +877,10 @@ impl EmbeddingSimilarity {
                 return Arc::clone(profiles);
             }
         }
-        let profiles = Arc::new(
-            candidates
-                .iter()
-                .map(|c| self.profile(c))
-                .collect::<Vec<_>>(),
-        );
+        let profiles = Arc::new(CandidateSet::new(
+            candidates.iter().map(|c| self.profile(c)).collect(),
+            self.table.dims(),
+        ));
         if let Ok(mut kept) = self.set_profiles.lock() {
             kept.retain(|(id, _)| *id != set);
             if kept.len() >= SET_PROFILES_KEPT {
@@ -845,12 +910,14 @@ struct PreparedName<'a> {
 impl Prepared for PreparedName<'_> {
     fn to(&self, i: usize) -> f32 {
         self.set
+            .profiles
             .get(i)
             .map_or(0.0, |c| self.sim.profile_similarity(&self.query, c))
     }
 
     fn from(&self, i: usize) -> f32 {
         self.set
+            .profiles
             .get(i)
             .map_or(0.0, |c| self.sim.profile_similarity(c, &self.query))
     }

@@ -251,11 +251,27 @@ fn a_prepared_name_scores_every_label_as_the_pairwise_similarity_does() {
     // the planner compares each query name with thousands of labels through `prepare`; it must agree
     // with `similarity` in both directions (the similarity is not symmetric for aliases and unknowns)
     let set: Vec<String> = labels().into_iter().map(str::to_string).collect();
-    for name in ["tomato", "cool whip", "chili pepper", "molass", "qwzxv", "egg mixture", ""] {
+    for name in [
+        "tomato",
+        "cool whip",
+        "chili pepper",
+        "molass",
+        "qwzxv",
+        "egg mixture",
+        "",
+    ] {
         let prepared = sim().prepare(name, 7, &set);
         for (i, label) in set.iter().enumerate() {
-            assert_eq!(prepared.to(i), sim().similarity(name, label), "{name} -> {label}");
-            assert_eq!(prepared.from(i), sim().similarity(label, name), "{label} -> {name}");
+            assert_eq!(
+                prepared.to(i),
+                sim().similarity(name, label),
+                "{name} -> {label}"
+            );
+            assert_eq!(
+                prepared.from(i),
+                sim().similarity(label, name),
+                "{label} -> {name}"
+            );
         }
         assert_eq!(prepared.to(set.len()), 0.0, "out of range");
     }
@@ -266,11 +282,22 @@ fn ranking_in_a_remembered_set_is_the_plain_ranking() {
     // `rank_in_set` keeps profiles and answers between calls and skips candidates that cannot place:
     // neither may change the answer
     let set: Vec<String> = labels().into_iter().map(str::to_string).collect();
-    for name in ["cherry tomato", "whipped cream", "jalapeno", "brown sugar", "salt", "zzz"] {
+    for name in [
+        "cherry tomato",
+        "whipped cream",
+        "jalapeno",
+        "brown sugar",
+        "salt",
+        "zzz",
+    ] {
         for top in [1, 6] {
             let plain = sim().rank(name, &labels(), top);
             assert_eq!(sim().rank_in_set(name, 11, &set, top), plain, "{name}");
-            assert_eq!(sim().rank_in_set(name, 11, &set, top), plain, "{name}, remembered");
+            assert_eq!(
+                sim().rank_in_set(name, 11, &set, top),
+                plain,
+                "{name}, remembered"
+            );
             for (label, s) in &plain {
                 assert_eq!(*s, sim().similarity(name, label), "{name} ~ {label}");
             }
