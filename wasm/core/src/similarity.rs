@@ -70,6 +70,11 @@ pub trait Prepared {
     fn to(&self, i: usize) -> f32;
     /// sim(candidates[i], query): the similarity need not be symmetric.
     fn from(&self, i: usize) -> f32;
+
+    /// (`to(i)`, `from(i)`), for an implementation that shares work between the two.
+    fn both(&self, i: usize) -> (f32, f32) {
+        (self.to(i), self.from(i))
+    }
 }
 
 /// `Similarity::prepare` for an implementation without anything to prepare.

@@ -921,6 +921,23 @@ impl Prepared for PreparedName<'_> {
             .get(i)
             .map_or(0.0, |c| self.sim.profile_similarity(c, &self.query))
     }
+
+    fn both(&self, i: usize) -> (f32, f32) {
+        let Some(c) = self.set.profiles.get(i) else {
+            return (0.0, 0.0);
+        };
+        let q = &self.query;
+        let (to_exact, from_exact) = (self.sim.is_exact(q, c), self.sim.is_exact(c, q));
+        if to_exact || from_exact {
+            return (self.to(i), self.from(i));
+        }
+        // neither is exact: the graded score is symmetric, so one comparison serves both
+        let s = squash(self.sim.graded(q, c, self.set.cosine(q, i)));
+        (
+            if q.is_known() { s } else { 0.0 },
+            if c.is_known() { s } else { 0.0 },
+        )
+    }
 }
 
 /// Cosine of two profiles' unit vectors (0 when either has none).

@@ -16,10 +16,9 @@ pub(crate) struct Scorer<'a> {
     prepared: Vec<Box<dyn Prepared + 'a>>,
     /// Label id of each query name, when the knowledge base has it.
     query_ids: Vec<Option<u32>>,
-    /// Per query name, its similarity to each label id (NaN until asked).
-    rows: RefCell<Vec<Vec<f32>>>,
-    /// Per query name, each label id's similarity to it (the other direction; NaN until asked).
-    reverse: RefCell<Vec<Vec<f32>>>,
+    /// Per query name and label id: (sim(name, label), sim(label, name)), NaN until asked. Both
+    /// directions come from one comparison, and goal selection asks both of every pair.
+    rows: RefCell<Vec<Vec<(f32, f32)>>>,
     units: RefCell<HashMap<UnitId, f32>>,
 }
 
@@ -35,36 +34,29 @@ impl<'a> Scorer<'a> {
                 .map(|q| sim.prepare(q, index.label_set, index.label_names()))
                 .collect(),
             rows: RefCell::new(vec![Vec::new(); query.len()]),
-            reverse: RefCell::new(vec![Vec::new(); query.len()]),
             units: RefCell::new(HashMap::default()),
         }
     }
 
     /// sim(query name `q`, label).
     fn similarity(&self, q: usize, label: u32) -> f32 {
-        self.remembered(&self.rows, q, label, |p, i| p.to(i))
+        self.remembered(q, label).0
     }
 
     /// sim(label, query name `q`).
     fn similarity_to(&self, label: u32, q: usize) -> f32 {
-        self.remembered(&self.reverse, q, label, |p, i| p.from(i))
+        self.remembered(q, label).1
     }
 
-    fn remembered(
-        &self,
-        table: &RefCell<Vec<Vec<f32>>>,
-        q: usize,
-        label: u32,
-        compute: impl Fn(&dyn Prepared, usize) -> f32,
-    ) -> f32 {
-        let mut rows = table.borrow_mut();
+    fn remembered(&self, q: usize, label: u32) -> (f32, f32) {
+        let mut rows = self.rows.borrow_mut();
         let row = &mut rows[q];
         if row.is_empty() {
-            row.resize(self.index.label_count(), f32::NAN);
+            row.resize(self.index.label_count(), (f32::NAN, f32::NAN));
         }
         let cell = &mut row[label as usize];
-        if cell.is_nan() {
-            *cell = compute(self.prepared[q].as_ref(), label as usize);
+        if cell.0.is_nan() {
+            *cell = self.prepared[q].both(label as usize);
         }
         *cell
     }
