@@ -274,7 +274,11 @@ fn a_prepared_name_scores_every_label_as_the_pairwise_similarity_does() {
             );
         }
         for i in 0..set.len() {
-            assert_eq!(prepared.both(i), (prepared.to(i), prepared.from(i)), "{name} <-> {i}");
+            assert_eq!(
+                prepared.both(i),
+                (prepared.to(i), prepared.from(i)),
+                "{name} <-> {i}"
+            );
         }
         assert_eq!(prepared.to(set.len()), 0.0, "out of range");
     }

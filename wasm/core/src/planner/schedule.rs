@@ -95,8 +95,9 @@ pub(crate) fn schedule(tree: &mut Tree) -> Vec<TUnitId> {
     // each round either settles or removes a product or a unit, so the rounds are bounded
     let limit = 4 * units.len() + 8;
     for _ in 0..limit {
-        let shapes: HashMap<TUnitId, Shape> =
-            units.iter().map(|&u| (u, shape(tree, &vals, u))).collect();
+        let mut shapes: HashMap<TUnitId, Shape> =
+            HashMap::with_capacity_and_hasher(units.len(), Default::default());
+        shapes.extend(units.iter().map(|&u| (u, shape(tree, &vals, u))));
         let before = units.len();
         drop_duplicates(tree, &mut units, &shapes);
         if units.len() != before {
@@ -152,7 +153,8 @@ fn topological(
     shapes: &HashMap<TUnitId, Shape>,
     vals: &Values,
 ) -> Result<Vec<TUnitId>, (TUnitId, TUnitId, Value)> {
-    let mut makers: HashMap<Value, Vec<usize>> = HashMap::default();
+    let mut makers: HashMap<Value, Vec<usize>> =
+        HashMap::with_capacity_and_hasher(units.len() * 2, Default::default());
     for (i, u) in units.iter().enumerate() {
         for &m in &shapes[u].made {
             makers.entry(m).or_default().push(i);

@@ -34,7 +34,8 @@ impl<'a> Scorer<'a> {
                 .map(|q| sim.prepare(q, index.label_set, index.label_names()))
                 .collect(),
             rows: RefCell::new(vec![Vec::new(); query.len()]),
-            units: RefCell::new(HashMap::default()),
+            // a plan scores a few hundred units: sized so that the table does not grow step by step
+            units: RefCell::new(HashMap::with_capacity_and_hasher(512, Default::default())),
         }
     }
 

@@ -376,7 +376,9 @@ impl Tree {
             let mut changed = self.join_equal_leaves(&value);
             let order = self.order();
             // position of the last unit using each slot (inputs as they are at the start of the round)
-            let mut last_use: HashMap<SlotId, usize> = HashMap::default();
+            let cap = order.len() * 4;
+            let mut last_use: HashMap<SlotId, usize> =
+                HashMap::with_capacity_and_hasher(cap, Default::default());
             for (pos, &u) in order.iter().enumerate() {
                 for i in &self.units[u].inputs {
                     last_use.insert(i.0, pos);
@@ -384,7 +386,8 @@ impl Tree {
             }
             let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
             type Key = (Vec<usize>, String, Vec<usize>);
-            let mut first: HashMap<Key, TUnitId> = HashMap::default();
+            let mut first: HashMap<Key, TUnitId> =
+                HashMap::with_capacity_and_hasher(order.len(), Default::default());
             for (pos, &u) in order.iter().enumerate() {
                 {
                     let unit = &mut self.units[u];
