@@ -1,6 +1,8 @@
 //! One normal form for object labels, states and motions, used by the reader, the planner and the
 //! similarity table alike, so that "Tomatoes ", "tomato" and "TOMATO" are the same object.
 
+use std::borrow::Cow;
+
 /// Words whose final "s" is not a plural ending (or whose plural is the everyday name of the food).
 const KEEP_AS_IS: &[&str] = &[
     "asparagus",
@@ -86,27 +88,36 @@ fn is_folded(text: &str) -> bool {
 /// Singular form of one English word; never invents a non-word for the exceptions above
 /// (e.g. "glass" stays "glass", "molasses" stays "molasses").
 pub fn singular(word: &str) -> String {
-    if word.len() < 4 || !word.is_ascii() || KEEP_AS_IS.contains(&word) {
-        return word.to_string();
+    singular_of(word).into_owned()
+}
+
+/// `singular`, borrowing the word when it is already singular (most words a reader sees).
+fn singular_of(word: &str) -> Cow<'_, str> {
+    if word.len() < 4 || !word.is_ascii() {
+        return Cow::Borrowed(word);
     }
     if let Some((_, s)) = IRREGULAR.iter().find(|(p, _)| *p == word) {
-        return s.to_string();
+        return Cow::Borrowed(s);
+    }
+    // every rule below removes a final "s"
+    if !word.ends_with('s') || KEEP_AS_IS.contains(&word) {
+        return Cow::Borrowed(word);
     }
     let ends = |suffix: &str| word.ends_with(suffix);
-    let cut = |n: usize| word[..word.len() - n].to_string();
+    let cut = |n: usize| &word[..word.len() - n];
     if ends("ss") || ends("us") || ends("is") || ends("ous") {
-        return word.to_string();
+        return Cow::Borrowed(word);
     }
     if ends("ies") {
-        return format!("{}y", cut(3));
+        return Cow::Owned(format!("{}y", cut(3)));
     }
     if ends("oes") || ends("ches") || ends("shes") || ends("xes") || ends("sses") || ends("zzes") {
-        return cut(2);
+        return Cow::Borrowed(cut(2));
     }
-    if ends("s") && !ends("'s") {
-        return cut(1);
+    if !ends("'s") {
+        return Cow::Borrowed(cut(1));
     }
-    word.to_string()
+    Cow::Borrowed(word)
 }
 
 /// The normal form of an object label: folded, with its head (last) word singular.
@@ -114,8 +125,9 @@ pub fn singular(word: &str) -> String {
 pub fn normalize_label(text: &str) -> String {
     let mut folded = fold(text);
     let at = folded.rfind(' ').map_or(0, |i| i + 1);
-    let last = singular(&folded[at..]);
+    let last = singular_of(&folded[at..]);
     if last != folded[at..] {
+        let last = last.into_owned();
         folded.replace_range(at.., &last);
     }
     folded
@@ -150,6 +162,11 @@ mod tests {
             ("  Sweet_potato   FRIES ", "sweet potato fries"),
             ("egg", "egg"),
             ("hummus", "hummus"),
+            ("potatoes", "potato"),
+            ("Red Dishes", "red dish"),
+            ("geese", "goose"),
+            ("baker's", "baker's"),
+            ("chopped onion", "chopped onion"),
         ] {
             assert_eq!(normalize_label(given), want, "{given}");
         }
