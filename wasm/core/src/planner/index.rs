@@ -20,10 +20,11 @@ pub struct PlannerIndex {
     pub(crate) by_label: HashMap<String, Vec<NodeId>>,
     /// Distinct ingredient labels (not utensils), sorted.
     pub(crate) ingredient_labels: Vec<String>,
-    /// (dish class, label, state) -> occurrences in units of recipes of that class; class `None` counts all.
-    label_state: HashMap<(Option<u32>, String, String), u32>,
-    /// (dish class, state) -> occurrences; class `None` counts all.
-    state_freq: HashMap<(Option<u32>, String), u32>,
+    /// label -> state -> dish class -> occurrences in units of recipes of that class; class `None`
+    /// counts all. Nested so that a lookup borrows its words.
+    label_state: HashMap<String, HashMap<String, ClassCounts>>,
+    /// state -> dish class -> occurrences; class `None` counts all.
+    state_freq: HashMap<String, ClassCounts>,
     /// State word -> the motion most used to bring an object into it.
     motion_for_state: HashMap<String, String>,
     /// Category -> the motion most used to bring an object into a state of it.
@@ -48,6 +49,9 @@ pub struct PlannerIndex {
 
 static NEXT_ID: AtomicU64 = AtomicU64::new(1);
 
+/// Occurrences per dish class (`None`: all classes).
+type ClassCounts = HashMap<Option<u32>, u32>;
+
 fn best<K: Ord + Clone>(counts: &BTreeMap<K, u32>) -> Option<K> {
     // highest count; ties to the smallest key (BTreeMap order), independent of insertion order
     let mut out: Option<(&K, u32)> = None;
@@ -57,6 +61,21 @@ fn best<K: Ord + Clone>(counts: &BTreeMap<K, u32>) -> Option<K> {
         }
     }
     out.map(|(k, _)| k.clone())
+}
+
+/// (label, state, class) counts as label -> state -> class -> count.
+fn nest_counts(
+    flat: HashMap<(&str, &str, Option<u32>), u32>,
+) -> HashMap<String, HashMap<String, ClassCounts>> {
+    let mut out: HashMap<String, HashMap<String, ClassCounts>> = HashMap::default();
+    for ((label, state, class), n) in flat {
+        out.entry(label.to_string())
+            .or_default()
+            .entry(state.to_string())
+            .or_default()
+            .insert(class, n);
+    }
+    out
 }
 
 impl PlannerIndex {
@@ -77,8 +96,9 @@ impl PlannerIndex {
                 .or_insert(g.dish_class);
         }
 
-        let mut label_state: HashMap<(Option<u32>, String, String), u32> = HashMap::default();
-        let mut state_freq: HashMap<(Option<u32>, String), u32> = HashMap::default();
+        // counted on borrowed words, owned once per distinct key at the end
+        let mut label_state: HashMap<(&str, &str, Option<u32>), u32> = HashMap::default();
+        let mut state_freq: HashMap<(&str, Option<u32>), u32> = HashMap::default();
         let mut motion_state: BTreeMap<String, BTreeMap<String, u32>> = BTreeMap::new();
         let mut motion_cat: BTreeMap<Category, BTreeMap<String, u32>> = BTreeMap::new();
         let mut motion_utensil: BTreeMap<String, BTreeMap<NodeId, u32>> = BTreeMap::new();
@@ -116,10 +136,8 @@ impl PlannerIndex {
                 }
                 for s in node.physical_states() {
                     for c in classes.iter().copied().chain([None]) {
-                        *label_state
-                            .entry((c, node.label.clone(), s.to_string()))
-                            .or_insert(0) += 1;
-                        *state_freq.entry((c, s.to_string())).or_insert(0) += 1;
+                        *label_state.entry((&node.label, s, c)).or_insert(0) += 1;
+                        *state_freq.entry((s, c)).or_insert(0) += 1;
                     }
                 }
             }
@@ -219,8 +237,14 @@ impl PlannerIndex {
             label_set: NEXT_ID.fetch_add(1, Ordering::Relaxed),
             by_label,
             ingredient_labels,
-            label_state,
-            state_freq,
+            label_state: nest_counts(label_state),
+            state_freq: state_freq.into_iter().fold(
+                HashMap::default(),
+                |mut out: HashMap<String, ClassCounts>, ((s, c), n)| {
+                    out.entry(s.to_string()).or_default().insert(c, n);
+                    out
+                },
+            ),
             motion_for_state: motion_state
                 .iter()
                 .filter_map(|(s, m)| Some((s.clone(), best(m)?)))
@@ -311,14 +335,17 @@ impl PlannerIndex {
     /// How often `label` is in `state` in recipes of the class (or in all recipes for `None`).
     pub(crate) fn label_state_count(&self, class: Option<u32>, label: &str, state: &str) -> u32 {
         self.label_state
-            .get(&(class, label.to_string(), state.to_string()))
+            .get(label)
+            .and_then(|states| states.get(state))
+            .and_then(|counts| counts.get(&class))
             .copied()
             .unwrap_or(0)
     }
 
     pub(crate) fn state_count(&self, class: Option<u32>, state: &str) -> u32 {
         self.state_freq
-            .get(&(class, state.to_string()))
+            .get(state)
+            .and_then(|counts| counts.get(&class))
             .copied()
             .unwrap_or(0)
     }
