@@ -466,8 +466,7 @@ impl CandidateSet {
     fn cosine(&self, q: &Profile, i: usize) -> f32 {
         match &q.vector {
             Some(a) if self.has_vector[i] => {
-                let b = &self.vectors[i * self.dims..(i + 1) * self.dims];
-                a.iter().zip(b).map(|(x, y)| x * y).sum::<f32>()
+                dot(a, &self.vectors[i * self.dims..(i + 1) * self.dims])
             }
             _ => 0.0,
         }
@@ -699,7 +698,7 @@ impl EmbeddingSimilarity {
         let mut near: Vec<(f32, usize)> = self
             .member_vectors
             .iter()
-            .map(|(m, c)| (m.iter().zip(v).map(|(a, b)| a * b).sum::<f32>(), *c))
+            .map(|(m, c)| (dot(m, v), *c))
             .collect();
         let nearer = |a: &(f32, usize), b: &(f32, usize)| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1));
         if near.len() > INFER_NEIGHBOURS {
@@ -740,11 +739,23 @@ impl EmbeddingSimilarity {
     }
 
     fn is_exact(&self, q: &Profile, c: &Profile) -> bool {
-        q.name == c.name
+        self.exact_rule(q, |x| *x == c.name, |x| *x == c.key)
+    }
+
+    /// When a candidate is an exact match for `q`, given what its name equals (`name_is`) and what its
+    /// word-stem key equals (`key_is`): `is_exact` asks with the candidate's strings, a ranking first
+    /// with its hashes alone (equal strings have equal hashes).
+    fn exact_rule(
+        &self,
+        q: &Profile,
+        name_is: impl Fn(&Hashed) -> bool,
+        key_is: impl Fn(&Hashed) -> bool,
+    ) -> bool {
+        name_is(&q.name)
             || (self.options.exact_first
-                && (q.canonical == c.name
-                    || (!q.key.is_empty() && q.key == c.key)
-                    || (!q.canonical_key.is_empty() && q.canonical_key == c.key)))
+                && (name_is(&q.canonical)
+                    || (!q.key.is_empty() && key_is(&q.key))
+                    || (!q.canonical_key.is_empty() && key_is(&q.canonical_key))))
     }
 
     /// The unbounded score behind `similarity` (higher is better).
@@ -825,16 +836,12 @@ impl EmbeddingSimilarity {
             b.1.total_cmp(&a.1).then_with(|| a.0.cmp(b.0)) == std::cmp::Ordering::Less
         };
         let mut best: Vec<(&str, f32)> = Vec::with_capacity(top + 1);
-        let exact_first = self.options.exact_first;
         for (i, cand) in candidates.iter().enumerate().take(set.len()) {
             let cand = cand.as_ref();
             let (name, key) = (set.name_hash[i], set.key_hash[i]);
-            let may_be_exact = name == q.name.hash
-                || (exact_first
-                    && (name == q.canonical.hash
-                        || (!q.key.is_empty() && key == q.key.hash)
-                        || (!q.canonical_key.is_empty() && key == q.canonical_key.hash)));
-            let exact = may_be_exact && self.is_exact(&q, &set.profiles[i]);
+            // the hashes rule most candidates out without reading their profiles
+            let exact = self.exact_rule(&q, |x| x.hash == name, |x| x.hash == key)
+                && self.is_exact(&q, &set.profiles[i]);
             if !exact
                 && (!q.is_known()
                     || (!keep_composites && set.composite[i])
@@ -943,9 +950,14 @@ impl Prepared for PreparedName<'_> {
 /// Cosine of two profiles' unit vectors (0 when either has none).
 fn cosine_of(q: &Profile, c: &Profile) -> f32 {
     match (&q.vector, &c.vector) {
-        (Some(a), Some(b)) => a.iter().zip(b).map(|(x, y)| x * y).sum::<f32>(),
+        (Some(a), Some(b)) => dot(a, b),
         _ => 0.0,
     }
+}
+
+/// Dot product, summed in order (every score adds it up the same way, so equal pairs score equal).
+fn dot(a: &[f32], b: &[f32]) -> f32 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum::<f32>()
 }
 
 fn unit(mut v: Vec<f32>) -> Vec<f32> {

@@ -32,6 +32,11 @@ fn labels() -> Vec<&'static str> {
     foon().ingredient_labels().into_iter().collect()
 }
 
+/// The labels as a knowledge base's index holds them (a candidate set for `prepare` and `rank_in_set`).
+fn owned_labels() -> Vec<String> {
+    labels().into_iter().map(str::to_string).collect()
+}
+
 fn top(query: &str, n: usize) -> Vec<String> {
     sim()
         .rank(query, &labels(), n)
@@ -250,7 +255,7 @@ fn the_taxonomy_lists_every_foon111_ingredient_label() {
 fn a_prepared_name_scores_every_label_as_the_pairwise_similarity_does() {
     // the planner compares each query name with thousands of labels through `prepare`; it must agree
     // with `similarity` in both directions (the similarity is not symmetric for aliases and unknowns)
-    let set: Vec<String> = labels().into_iter().map(str::to_string).collect();
+    let set = owned_labels();
     for name in [
         "tomato",
         "cool whip",
@@ -288,7 +293,7 @@ fn a_prepared_name_scores_every_label_as_the_pairwise_similarity_does() {
 fn ranking_in_a_remembered_set_is_the_plain_ranking() {
     // `rank_in_set` keeps profiles and answers between calls and skips candidates that cannot place:
     // neither may change the answer
-    let set: Vec<String> = labels().into_iter().map(str::to_string).collect();
+    let set = owned_labels();
     for name in [
         "cherry tomato",
         "whipped cream",

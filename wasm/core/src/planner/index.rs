@@ -63,17 +63,11 @@ fn best<K: Ord + Clone>(counts: &BTreeMap<K, u32>) -> Option<K> {
     out.map(|(k, _)| k.clone())
 }
 
-/// (label, state, class) counts as label -> state -> class -> count.
-fn nest_counts(
-    flat: HashMap<(&str, &str, Option<u32>), u32>,
-) -> HashMap<String, HashMap<String, ClassCounts>> {
-    let mut out: HashMap<String, HashMap<String, ClassCounts>> = HashMap::default();
-    for ((label, state, class), n) in flat {
-        out.entry(label.to_string())
-            .or_default()
-            .entry(state.to_string())
-            .or_default()
-            .insert(class, n);
+/// Counts per (word, class) counted on borrowed words, as owned word -> class -> count.
+fn by_word(flat: HashMap<(&str, Option<u32>), u32>) -> HashMap<String, ClassCounts> {
+    let mut out: HashMap<String, ClassCounts> = HashMap::default();
+    for ((word, class), n) in flat {
+        out.entry(word.to_string()).or_default().insert(class, n);
     }
     out
 }
@@ -97,7 +91,7 @@ impl PlannerIndex {
         }
 
         // counted on borrowed words, owned once per distinct key at the end
-        let mut label_state: HashMap<(&str, &str, Option<u32>), u32> = HashMap::default();
+        let mut label_state: HashMap<&str, HashMap<(&str, Option<u32>), u32>> = HashMap::default();
         let mut state_freq: HashMap<(&str, Option<u32>), u32> = HashMap::default();
         let mut motion_state: BTreeMap<String, BTreeMap<String, u32>> = BTreeMap::new();
         let mut motion_cat: BTreeMap<Category, BTreeMap<String, u32>> = BTreeMap::new();
@@ -136,7 +130,11 @@ impl PlannerIndex {
                 }
                 for s in node.physical_states() {
                     for c in classes.iter().copied().chain([None]) {
-                        *label_state.entry((&node.label, s, c)).or_insert(0) += 1;
+                        *label_state
+                            .entry(&node.label)
+                            .or_default()
+                            .entry((s, c))
+                            .or_insert(0) += 1;
                         *state_freq.entry((s, c)).or_insert(0) += 1;
                     }
                 }
@@ -237,14 +235,11 @@ impl PlannerIndex {
             label_set: NEXT_ID.fetch_add(1, Ordering::Relaxed),
             by_label,
             ingredient_labels,
-            label_state: nest_counts(label_state),
-            state_freq: state_freq.into_iter().fold(
-                HashMap::default(),
-                |mut out: HashMap<String, ClassCounts>, ((s, c), n)| {
-                    out.entry(s.to_string()).or_default().insert(c, n);
-                    out
-                },
-            ),
+            label_state: label_state
+                .into_iter()
+                .map(|(label, states)| (label.to_string(), by_word(states)))
+                .collect(),
+            state_freq: by_word(state_freq),
             motion_for_state: motion_state
                 .iter()
                 .filter_map(|(s, m)| Some((s.clone(), best(m)?)))
