@@ -4,7 +4,6 @@
 import initWasmModule, { initSync, KnowledgeBaseLoader, type Planner as WasmPlanner } from "../../wasm/pkg/foon_wasm.js";
 import type { ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanRequest, SimilarResult, Stats, Vocabulary } from "./types";
 import { PlannerError, toPlannerError } from "./errors";
-import { scanVocabulary } from "./vocabulary";
 
 // The error class lives in errors.ts so that the page can use it without the WASM glue (the worker owns it).
 export { describeError, PlannerError, toPlannerError } from "./errors";
@@ -74,10 +73,7 @@ function requestJson(value: unknown, what: string): string {
 
 /** A knowledge base loaded into the planner. Free it with `free()` when replaced. */
 export class FoonPlanner {
-  private constructor(
-    private readonly handle: WasmPlanner,
-    private readonly vocab: Vocabulary,
-  ) {}
+  private constructor(private readonly handle: WasmPlanner) {}
 
   /**
    * Parses and merges knowledge-base files; a malformed file throws a PlannerError naming file and line.
@@ -95,7 +91,7 @@ export class FoonPlanner {
     }
     try {
       const handle = loader.finish(embeddings); // finish() consumes the loader, even when it fails
-      return new FoonPlanner(handle, scanVocabulary(files));
+      return new FoonPlanner(handle);
     } catch (thrown) {
       throw toPlannerError(thrown);
     }
@@ -103,7 +99,7 @@ export class FoonPlanner {
 
   /** Dish classes with their recipes, labels and states of the loaded files (for the query editor). */
   vocabulary(): Vocabulary {
-    return this.vocab;
+    return parseJson<Vocabulary>(() => this.handle.vocabulary());
   }
 
   stats(): Stats {

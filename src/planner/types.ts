@@ -147,7 +147,8 @@ export interface SimilarResult {
   candidates: Alternative[];
 }
 
-/** What the query editor offers: the knowledge base's dish classes with their recipes, labels and states. */
+/** What the query editor offers (`foon_core::Vocabulary`): the knowledge base's dish classes with their
+ * recipes, its labels and plain states in the planner's normal forms. */
 export interface Vocabulary {
   /** Dish classes that have at least one recipe, with the recipe titles. */
   dishes: { name: string; recipes: string[] }[];
@@ -155,6 +156,6 @@ export interface Vocabulary {
   labels: string[];
   /** Plain state names (no container arguments), sorted. */
   states: string[];
-  /** Recipe title of each subgraph file ("s01-greek_salad.txt" -> "Greek salad"). */
+  /** Recipe title of every subgraph file: its `# title:` line, else its name ("s01-greek_salad.txt" -> "greek salad"). */
   titles: Record<string, string>;
 }

@@ -1,11 +1,7 @@
-// Store, preferences, widget options and the knowledge-base vocabulary.
-import { readFileSync } from "node:fs";
-import { join } from "node:path";
+// Store, preferences and widget options.
 import { describe, expect, it, vi } from "vitest";
 import { DEFAULT_PREFS, loadPrefs, parsePrefs, resolveTheme, savePrefs } from "../../src/app/prefs";
 import { Store } from "../../src/app/store";
-import { ROOT } from "../../src/planner/node";
-import { scanVocabulary, titleFromFileName } from "../../src/planner/vocabulary";
 import { parseTheme, parseView, widgetIngredients } from "../../src/widget/options";
 
 describe("store", () => {
@@ -57,28 +53,5 @@ describe("widget options", () => {
     ]);
     expect(widgetIngredients("Sweet Pepper~Roasted", [])).toEqual([{ object: "sweet pepper", state: "roasted" }]);
     expect(widgetIngredients(undefined, [])).toEqual([]);
-  });
-});
-
-describe("vocabulary of a knowledge base", () => {
-  it("lists dish classes with recipe titles, labels and plain states of the bundle", () => {
-    const bytes = readFileSync(join(ROOT, "public/kb/default.foon"));
-    const vocab = scanVocabulary([{ name: "default.foon", bytes: new Uint8Array(bytes) }]);
-    const salad = vocab.dishes.find((d) => d.name === "salad");
-    expect(salad?.recipes).toContain("Greek salad");
-    expect(vocab.titles["s01-greek_salad.txt"]).toBe("Greek salad");
-    expect(vocab.labels).toContain("tomato");
-    expect(vocab.states).toEqual(expect.arrayContaining(["whole", "diced", "chopped"]));
-    expect(vocab.states.some((s) => s.includes("[") || s.includes("{"))).toBe(false);
-  });
-  it("titles a file without a title line by its name", () => {
-    expect(titleFromFileName("0001-whipped_cream.txt")).toBe("whipped cream");
-    expect(titleFromFileName("s01-greek_salad.txt")).toBe("greek salad");
-    expect(titleFromFileName("0097-miso_soup-DONE.txt")).toBe("miso soup");
-  });
-  it("reads a plain file without a bundle marker", () => {
-    const text = "# title: Toast\n//\nO\tbread\t1\nS\tsliced\nM\ttoast\t<Assumed>\nO\ttoast\t1\t0\nS\ttoasted\nS\ton\t[plate]\n";
-    const vocab = scanVocabulary([{ name: "toast.txt", bytes: new TextEncoder().encode(text) }]);
-    expect(vocab).toEqual({ dishes: [{ name: "bread", recipes: ["Toast"] }], labels: ["bread", "toast"], states: ["sliced", "toasted"], titles: { "toast.txt": "Toast" } });
   });
 });

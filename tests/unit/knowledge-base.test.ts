@@ -1,7 +1,9 @@
 // Loading knowledge bases through the real WASM build, as the app and the CLI do.
+import { readFileSync } from "node:fs";
+import { join } from "node:path";
 import { beforeAll, describe, expect, it } from "vitest";
 import { FoonPlanner, PlannerError } from "../../src/planner/index";
-import { initPlannerFromDisk, readKnowledgeBase } from "../../src/planner/node";
+import { initPlannerFromDisk, readKnowledgeBase, ROOT } from "../../src/planner/node";
 import { encode, sharedPath } from "./helpers";
 
 beforeAll(() => initPlannerFromDisk());
@@ -63,5 +65,35 @@ describe("knowledge base loading in WASM", () => {
     loadError([{ name: "bad.txt", text: "X\n" }]);
     const planner = FoonPlanner.load([{ name: "ok.txt", bytes: encode("O\ta\t1\nM\tcut\nO\ta\t1\nS\tcut\n") }]);
     expect(planner.stats().units).toBe(1);
+  });
+});
+
+describe("vocabulary of a knowledge base (what the query editor offers)", () => {
+  it("lists dish classes with recipe titles, labels and plain states of the bundle", () => {
+    const bytes = readFileSync(join(ROOT, "public/kb/default.foon"));
+    const planner = FoonPlanner.load([{ name: "default.foon", bytes: new Uint8Array(bytes) }]);
+    const vocab = planner.vocabulary();
+    planner.free();
+    const salad = vocab.dishes.find((d) => d.name === "salad");
+    expect(salad?.recipes).toContain("Greek salad");
+    expect(vocab.titles["s01-greek_salad.txt"]).toBe("Greek salad");
+    expect(vocab.labels).toContain("tomato");
+    expect(vocab.states).toEqual(expect.arrayContaining(["whole", "diced", "chopped"]));
+    expect(vocab.states.some((s) => s.includes("[") || s.includes("{"))).toBe(false);
+  });
+  it("titles a recipe by its title line, else by its file name, and lists labels in the planner's normal form", () => {
+    const toast = "# title: Toast\n//\nO\tbread\t1\nS\tsliced\nM\ttoast\t<Assumed>\nO\ttoast\t1\t0\nS\ttoasted\nS\ton\t[plate]\n";
+    const rolls = "//\nO\tbread rolls\t1\nS\twhole\nM\tslice\t<Assumed>\nO\tbread rolls\t1\t0\nS\tsliced\n";
+    const planner = FoonPlanner.load([
+      { name: "toast.txt", bytes: encode(toast) },
+      { name: "0097-bread_rolls-DONE.txt", bytes: encode(rolls) },
+    ]);
+    expect(planner.vocabulary()).toEqual({
+      dishes: [{ name: "bread", recipes: ["bread rolls", "Toast"] }],
+      labels: ["bread", "bread roll", "toast"],
+      states: ["sliced", "toasted", "whole"],
+      titles: { "0097-bread_rolls-DONE.txt": "bread rolls", "toast.txt": "Toast" },
+    });
+    planner.free();
   });
 });

@@ -3,7 +3,6 @@
 
 import type { Plan } from "../../planner/types";
 import { el, plural } from "../dom";
-import { titleFromFileName } from "../../planner/vocabulary";
 import type { AppState, Store } from "../store";
 
 export function mountReferenceView(host: HTMLElement, store: Store): () => void {
@@ -26,7 +25,7 @@ export function mountReferenceView(host: HTMLElement, store: Store): () => void 
         "p",
         { class: "goal" },
         "Started from ",
-        el("strong", { class: "goal-label", text: titles[g.subgraph] ?? titleFromFileName(g.subgraph) }),
+        el("strong", { class: "goal-label", text: titles[g.subgraph] ?? g.subgraph }),
         ` (goal node “${g.label}”, ${g.states.join(", ")}; file ${g.subgraph}), ingredient similarity ${g.score.toFixed(2)}` +
           `${plan.dish_class === null ? "" : `, dish class ${plan.dish_class.name}`}.`,
       ),

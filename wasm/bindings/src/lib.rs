@@ -122,6 +122,12 @@ impl Planner {
         to_json(&foon_core::stats(&self.kb))
     }
 
+    /// Dish classes with their recipe titles, labels and plain states, as JSON
+    /// (`foon_core::Vocabulary`).
+    pub fn vocabulary(&self) -> Result<String, JsValue> {
+        to_json(&foon_core::vocabulary(&self.kb))
+    }
+
     fn run(&self, request_json: &str) -> Result<Plan, JsValue> {
         let request: PlanRequest =
             foon_core::decode::plan_request(request_json).map_err(|e| js_error(&e))?;

@@ -28,7 +28,38 @@ pub struct Goal {
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct SubgraphInfo {
     pub name: String,
+    /// The recipe's title: its `# title:` line, else the file name read as words (`title_from_name`).
+    pub title: String,
     pub units: usize,
+}
+
+/// "s01-greek_salad.txt" -> "greek salad", "0097-miso_soup-DONE.txt" -> "miso soup" (FOON-111 marks
+/// finished annotations so); the name as given when nothing is left.
+pub fn title_from_name(name: &str) -> String {
+    let base = name.rsplit(['/', '\\']).next().unwrap_or(name);
+    let lower = base.to_ascii_lowercase();
+    let mut t = base;
+    for ext in [".txt", ".foon"] {
+        if lower.ends_with(ext) {
+            t = &t[..t.len() - ext.len()];
+        }
+    }
+    // a leading number, optionally after one letter ("0001-", "s01_")
+    let letter = t.chars().next().is_some_and(|c| c.is_ascii_alphabetic()) as usize;
+    let digits = t[letter..].bytes().take_while(u8::is_ascii_digit).count();
+    if digits > 0 && matches!(t.as_bytes().get(letter + digits), Some(b'-' | b'_')) {
+        t = &t[letter + digits + 1..];
+    }
+    let lower = t.to_ascii_lowercase();
+    if lower.ends_with("-done") || lower.ends_with("_done") {
+        t = &t[..t.len() - 5];
+    }
+    let title = t.replace('_', " ").trim().to_string();
+    if title.is_empty() {
+        base.to_string()
+    } else {
+        title
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -156,6 +187,7 @@ impl KnowledgeBase {
             .iter()
             .map(|g| SubgraphInfo {
                 name: g.name.clone(),
+                title: g.title.clone().unwrap_or_else(|| title_from_name(&g.name)),
                 units: g.units.len(),
             })
             .collect();

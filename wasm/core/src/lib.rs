@@ -18,6 +18,7 @@ pub mod similarity;
 pub mod stats;
 pub mod substitute;
 pub mod taxonomy;
+pub mod vocabulary;
 pub mod write;
 
 pub use bundle::load;
@@ -29,3 +30,4 @@ pub use plan::{Plan, PlanRequest, Query, QueryIngredient};
 pub use planner::{plan, PlannerIndex};
 pub use stats::{stats, Stats};
 pub use substitute::{similar, EmbeddingSimilarity, SimilarResult};
+pub use vocabulary::{vocabulary, Vocabulary};

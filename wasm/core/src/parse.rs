@@ -38,6 +38,8 @@ pub struct ParsedUnit {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Subgraph {
     pub name: String,
+    /// The recipe's title, from its first `# title: …` comment line.
+    pub title: Option<String>,
     pub units: Vec<ParsedUnit>,
     /// Problems that did not stop the read, each with its place (e.g. a unit skipped because its
     /// motion has no outputs, as happens in FOON-111). Never empty when something was skipped.
@@ -371,6 +373,7 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
     let mut warnings = Vec::new();
     let mut unit = UnitBuilder::new();
     let mut last_line = 0;
+    let mut title = None;
     for (index, raw) in lines(text).enumerate() {
         let line_no = index + 1;
         last_line = line_no;
@@ -392,7 +395,13 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
         }
         let line = raw.trim_end_matches(['\r', ' ', '\t']);
         let trimmed = line.trim_start();
-        if trimmed.is_empty() || trimmed.starts_with('#') {
+        if trimmed.is_empty() {
+            continue;
+        }
+        if let Some(comment) = trimmed.strip_prefix('#') {
+            if title.is_none() {
+                title = title_of(comment);
+            }
             continue;
         }
         if trimmed.starts_with("//") {
@@ -622,9 +631,18 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
     check_goal_classes(name, &units)?;
     Ok(Subgraph {
         name: name.to_string(),
+        title,
         units,
         warnings,
     })
+}
+
+/// The title of a `# title: Greek salad` comment (the text after `#`), if it is one.
+fn title_of(comment: &str) -> Option<String> {
+    let rest = comment.trim_start();
+    let (key, title) = rest.split_at_checked(6)?;
+    let title = title.trim();
+    (key.eq_ignore_ascii_case("title:") && !title.is_empty()).then(|| title.to_string())
 }
 
 #[cfg(test)]
