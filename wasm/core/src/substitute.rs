@@ -313,7 +313,12 @@ fn is_form_word(word: &str) -> bool {
 }
 
 fn is_form_stem(stem: &str) -> bool {
-    FORM_WORDS.iter().any(|w| stemmer().stem(w) == stem)
+    // stemmed once: every profile asks this of several words
+    static FORM_STEMS: OnceLock<Vec<String>> = OnceLock::new();
+    FORM_STEMS
+        .get_or_init(|| FORM_WORDS.iter().map(|w| stemmer().stem(w).into_owned()).collect())
+        .iter()
+        .any(|f| f == stem)
 }
 
 /// The built-in alias list, keyed by normal form.
