@@ -316,7 +316,12 @@ fn is_form_stem(stem: &str) -> bool {
     // stemmed once: every profile asks this of several words
     static FORM_STEMS: OnceLock<Vec<String>> = OnceLock::new();
     FORM_STEMS
-        .get_or_init(|| FORM_WORDS.iter().map(|w| stemmer().stem(w).into_owned()).collect())
+        .get_or_init(|| {
+            FORM_WORDS
+                .iter()
+                .map(|w| stemmer().stem(w).into_owned())
+                .collect()
+        })
         .iter()
         .any(|f| f == stem)
 }
@@ -377,8 +382,8 @@ struct Profile {
     key: Hashed,
     /// Word stems of the ingredient part of `canonical`, as the table resolves them.
     canonical_key: Hashed,
-    /// The words of `canonical_key`; the last is the head noun.
-    stems: Vec<Hashed>,
+    /// Hashes of the words of `canonical_key`; the last is the head noun.
+    stems: Vec<u64>,
     vector: Option<Vec<f32>>,
     category: Option<usize>,
     /// The category's group, by index into the taxonomy's groups.
@@ -392,8 +397,12 @@ struct Profile {
 }
 
 impl Profile {
-    fn head(&self) -> Option<&Hashed> {
-        self.stems.last()
+    fn traits(&self) -> Traits<'_> {
+        Traits {
+            category: self.category,
+            group: self.group,
+            stems: &self.stems,
+        }
     }
 
     fn is_known(&self) -> bool {
@@ -402,6 +411,16 @@ impl Profile {
 }
 
 /// Substitution by food-domain word vectors and the project's food knowledge.
+/// What `graded` reads of a name besides its vector: from a profile, or from a candidate set's arrays.
+#[derive(Clone, Copy)]
+struct Traits<'a> {
+    category: Option<usize>,
+    group: Option<usize>,
+    /// Word hashes (equal words, equal hashes; a bonus, unlike an exact match, is decided on them
+    /// alone), the head noun last.
+    stems: &'a [u64],
+}
+
 pub struct EmbeddingSimilarity {
     table: EmbeddingTable,
     taxonomy: Arc<Taxonomy>,
@@ -435,12 +454,17 @@ struct CandidateSet {
     /// `dims` values per candidate: its unit vector, or zeros when `has_vector` is false.
     vectors: Vec<f32>,
     has_vector: Vec<bool>,
-    /// Hashes of each candidate's name and word-stem key: only one sharing a hash with the query can be
-    /// an exact match.
-    name_hash: Vec<u64>,
-    key_hash: Vec<u64>,
+    /// Hashes of each candidate's name, canonical name, word-stem key and canonical key: only one
+    /// sharing a hash with the query can be an exact match, either way.
+    hashes: Vec<[u64; 4]>,
     composite: Vec<bool>,
     utensil: Vec<bool>,
+    known: Vec<bool>,
+    category: Vec<Option<usize>>,
+    group: Vec<Option<usize>>,
+    /// Every candidate's `stems`, one after another; candidate i's are `stems[stem_at[i]..stem_at[i + 1]]`.
+    stems: Vec<u64>,
+    stem_at: Vec<u32>,
 }
 
 impl CandidateSet {
@@ -455,16 +479,56 @@ impl CandidateSet {
             dims,
             vectors,
             has_vector: profiles.iter().map(|p| p.vector.is_some()).collect(),
-            name_hash: profiles.iter().map(|p| p.name.hash).collect(),
-            key_hash: profiles.iter().map(|p| p.key.hash).collect(),
+            hashes: profiles
+                .iter()
+                .map(|p| {
+                    [
+                        p.name.hash,
+                        p.canonical.hash,
+                        p.key.hash,
+                        p.canonical_key.hash,
+                    ]
+                })
+                .collect(),
             composite: profiles.iter().map(|p| p.composite).collect(),
             utensil: profiles.iter().map(|p| p.utensil).collect(),
+            known: profiles.iter().map(|p| p.is_known()).collect(),
+            category: profiles.iter().map(|p| p.category).collect(),
+            group: profiles.iter().map(|p| p.group).collect(),
+            stems: profiles
+                .iter()
+                .flat_map(|p| p.stems.iter().copied())
+                .collect(),
+            stem_at: std::iter::once(0)
+                .chain(profiles.iter().scan(0u32, |at, p| {
+                    *at += p.stems.len() as u32;
+                    Some(*at)
+                }))
+                .collect(),
             profiles,
         }
     }
 
     fn len(&self) -> usize {
         self.profiles.len()
+    }
+
+    fn traits(&self, i: usize) -> Traits<'_> {
+        Traits {
+            category: self.category[i],
+            group: self.group[i],
+            stems: &self.stems[self.stem_at[i] as usize..self.stem_at[i + 1] as usize],
+        }
+    }
+
+    /// Whether candidate i can be an exact match for `q` (first) and `q` for it (second), from hashes
+    /// alone: false is certain, true must be confirmed with `is_exact`.
+    fn exact_hints(&self, sim: &EmbeddingSimilarity, q: &Profile, i: usize) -> (bool, bool) {
+        let h = &self.hashes[i];
+        (
+            sim.exact_rule(q, |x| x.hash == h[0], |x| x.hash == h[2]),
+            h.iter().any(|&x| x == q.name.hash || x == q.key.hash),
+        )
     }
 
     /// `cosine_of(q, candidate i)`, from the laid-out vectors.
@@ -677,7 +741,10 @@ impl EmbeddingSimilarity {
             canonical: Hashed::new(canonical),
             key: Hashed::words(&key),
             canonical_key: Hashed::words(&canonical_key),
-            stems: canonical_key.into_iter().map(Hashed::new).collect(),
+            stems: canonical_key
+                .into_iter()
+                .map(|w| Hashed::new(w).hash)
+                .collect(),
             vector,
             category,
             group,
@@ -768,11 +835,11 @@ impl EmbeddingSimilarity {
         if self.is_exact(q, c) {
             return f32::INFINITY;
         }
-        self.graded(q, c, cosine_of(q, c))
+        self.graded(q.traits(), c.traits(), cosine_of(q, c))
     }
 
     /// The score of a pair that is not exact, from the cosine of their vectors.
-    fn graded(&self, q: &Profile, c: &Profile, cosine: f32) -> f32 {
+    fn graded(&self, q: Traits, c: Traits, cosine: f32) -> f32 {
         let o = &self.options;
         let mut s = cosine;
         if let (Some(a), Some(b)) = (q.category, c.category) {
@@ -784,12 +851,11 @@ impl EmbeddingSimilarity {
                 s -= o.other_group;
             }
         }
-        if let (Some(hq), Some(hc)) = (q.head(), c.head()) {
-            if hq == hc {
-                s += o.same_head;
-            }
+        let (hq, hc) = (q.stems.last(), c.stems.last());
+        if hq.is_some() && hq == hc {
+            s += o.same_head;
         }
-        let both_heads = |w: &Hashed| q.head() == Some(w) && c.head() == Some(w);
+        let both_heads = |w: &u64| hq == Some(w) && hc == Some(w);
         if q.stems
             .iter()
             .any(|w| c.stems.contains(w) && !both_heads(w))
@@ -843,10 +909,8 @@ impl EmbeddingSimilarity {
         let mut best: Vec<(&str, f32)> = Vec::with_capacity(top + 1);
         for (i, cand) in candidates.iter().enumerate().take(set.len()) {
             let cand = cand.as_ref();
-            let (name, key) = (set.name_hash[i], set.key_hash[i]);
             // the hashes rule most candidates out without reading their profiles
-            let exact = self.exact_rule(&q, |x| x.hash == name, |x| x.hash == key)
-                && self.is_exact(&q, &set.profiles[i]);
+            let exact = set.exact_hints(self, &q, i).0 && self.is_exact(&q, &set.profiles[i]);
             if !exact
                 && (!q.is_known()
                     || (!keep_composites && set.composite[i])
@@ -861,7 +925,7 @@ impl EmbeddingSimilarity {
                 if best.len() == top && best.last().is_some_and(|w| cosine + max_bonus < w.1) {
                     continue; // cannot reach the last place
                 }
-                self.graded(&q, &set.profiles[i], cosine)
+                self.graded(q.traits(), set.traits(i), cosine)
             };
             let item = (cand, score);
             if best.len() == top && best.last().is_none_or(|w| !better(&item, w)) {
@@ -935,19 +999,23 @@ impl Prepared for PreparedName<'_> {
     }
 
     fn both(&self, i: usize) -> (f32, f32) {
-        let Some(c) = self.set.profiles.get(i) else {
+        let (set, q) = (&self.set, &self.query);
+        if i >= set.len() {
             return (0.0, 0.0);
-        };
-        let q = &self.query;
-        let (to_exact, from_exact) = (self.sim.is_exact(q, c), self.sim.is_exact(c, q));
-        if to_exact || from_exact {
+        }
+        // the candidate's profile is read only when its hashes allow an exact match: a scan of many
+        // labels then reads the set's arrays in order
+        let (to_maybe, from_maybe) = set.exact_hints(self.sim, q, i);
+        if (to_maybe && self.sim.is_exact(q, &set.profiles[i]))
+            || (from_maybe && self.sim.is_exact(&set.profiles[i], q))
+        {
             return (self.to(i), self.from(i));
         }
         // neither is exact: the graded score is symmetric, so one comparison serves both
-        let s = squash(self.sim.graded(q, c, self.set.cosine(q, i)));
+        let s = squash(self.sim.graded(q.traits(), set.traits(i), set.cosine(q, i)));
         (
             if q.is_known() { s } else { 0.0 },
-            if c.is_known() { s } else { 0.0 },
+            if set.known[i] { s } else { 0.0 },
         )
     }
 }
@@ -960,9 +1028,25 @@ fn cosine_of(q: &Profile, c: &Profile) -> f32 {
     }
 }
 
-/// Dot product, summed in order (every score adds it up the same way, so equal pairs score equal).
+/// Dot product in eight fixed lanes (every score adds it up the same way, so equal pairs score equal):
+/// lanes the compiler can keep in vector registers, where one running sum would be a chain of
+/// dependent additions.
 fn dot(a: &[f32], b: &[f32]) -> f32 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum::<f32>()
+    const LANES: usize = 8;
+    let mut acc = [0f32; LANES];
+    let (ca, cb) = (a.chunks_exact(LANES), b.chunks_exact(LANES));
+    let tail: f32 = ca
+        .remainder()
+        .iter()
+        .zip(cb.remainder())
+        .map(|(x, y)| x * y)
+        .sum();
+    for (x, y) in ca.zip(cb) {
+        for i in 0..LANES {
+            acc[i] += x[i] * y[i];
+        }
+    }
+    acc.iter().sum::<f32>() + tail
 }
 
 fn unit(mut v: Vec<f32>) -> Vec<f32> {
