@@ -180,8 +180,10 @@ impl UnitBuilder {
 
 /// Splits a line into tab-separated fields with their 1-based character columns; trims each field and
 /// drops empty trailing fields (FOON files often end lines with a stray tab).
-fn fields(line: &str) -> Vec<(usize, &str)> {
-    let mut out = Vec::new();
+/// The tab-separated fields of a line, trimmed, with their 1-based columns, into `out` (reused from line
+/// to line: a file has tens of thousands of lines).
+fn fields<'a>(line: &'a str, out: &mut Vec<(usize, &'a str)>) {
+    out.clear();
     // columns are counted as we go: a line of many short fields must not cost quadratic time
     let mut col = 1usize;
     for part in line.split('\t') {
@@ -191,7 +193,6 @@ fn fields(line: &str) -> Vec<(usize, &str)> {
     while out.last().is_some_and(|(_, f)| f.is_empty()) {
         out.pop();
     }
-    out
 }
 
 /// The line type: `O`, `S` or `M`, optionally followed by an index (indexed dialect) and optionally
@@ -298,7 +299,8 @@ fn lines(text: &str) -> impl Iterator<Item = &str> {
     let mut rest = Some(text);
     std::iter::from_fn(move || {
         let t = rest?;
-        match t.find(['\n', '\r']) {
+        // a byte scan: both ends of line are ASCII, and a pattern of two chars decodes every char
+        match t.bytes().position(|b| b == b'\n' || b == b'\r') {
             None => {
                 rest = None;
                 Some(t)
@@ -374,6 +376,7 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
     let mut unit = UnitBuilder::new();
     let mut last_line = 0;
     let mut title = None;
+    let mut f = Vec::new();
     for (index, raw) in lines(text).enumerate() {
         let line_no = index + 1;
         last_line = line_no;
@@ -414,7 +417,8 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
             }
             continue;
         }
-        let f = fields(line);
+        fields(line, &mut f);
+        let f = &f;
         let (head_col, head) = f[0];
         let Some((kind, bang)) = line_kind(head) else {
             return Err(FoonError::at(
