@@ -8,6 +8,7 @@ use crate::label::{normalize_label, normalize_word};
 use crate::limits;
 use crate::model::{ObjectNode, State, StateArg};
 use crate::taxonomy::{dish_class_name, dish_classes};
+use rustc_hash::FxHashMap;
 
 /// A goal mark on an object line: the finished dish of the subgraph, with its dish class if given.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -235,9 +236,31 @@ fn check_text(file: &str, line: usize, col: usize, what: &str, text: &str) -> Re
     Ok(())
 }
 
+/// Normal forms of a file's labels by their text as written: a file names the same few objects and
+/// containers line after line, and a normal form costs more than a lookup.
+#[derive(Default)]
+struct LabelForms<'a>(FxHashMap<&'a str, String>);
+
+impl<'a> LabelForms<'a> {
+    fn of(&mut self, raw: &'a str) -> String {
+        if let Some(form) = self.0.get(raw) {
+            return form.clone();
+        }
+        let form = normalize_label(raw);
+        self.0.insert(raw, form.clone());
+        form
+    }
+}
+
 /// Parses a state's argument: `[container]` or `{a,b,c}`; `None` when it names nothing (`[]`, `{ , }`),
 /// which the caller reports as a warning.
-fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<Option<StateArg>> {
+fn state_arg<'a>(
+    file: &str,
+    line: usize,
+    col: usize,
+    text: &'a str,
+    forms: &mut LabelForms<'a>,
+) -> Result<Option<StateArg>> {
     let bad = |why: &str| {
         FoonError::at(
             ErrorCode::BadBrackets,
@@ -261,7 +284,7 @@ fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<Option<S
         return Err(bad("nested brackets"));
     }
     if open == '[' {
-        let container = normalize_label(inner);
+        let container = forms.of(inner);
         if container.is_empty() {
             return Ok(None);
         }
@@ -270,7 +293,7 @@ fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<Option<S
     }
     let mut list: Vec<String> = inner
         .split(',')
-        .map(normalize_label)
+        .map(|item| forms.of(item))
         .filter(|s| !s.is_empty())
         .collect();
     for item in &list {
@@ -377,6 +400,7 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
     let mut last_line = 0;
     let mut title = None;
     let mut f = Vec::new();
+    let mut forms = LabelForms::default();
     for (index, raw) in lines(text).enumerate() {
         let line_no = index + 1;
         last_line = line_no;
@@ -451,7 +475,7 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
                     unit.block = Block::Outputs;
                 }
                 let (lcol, raw_label) = field(1, "object label after 'O'")?;
-                let label = normalize_label(raw_label);
+                let label = forms.of(raw_label);
                 check_text(name, line_no, lcol, "object label", &label)?;
                 // FOON's motion flag; some files write it as "00"
                 let moves = match f.get(2).map(|(c, t)| (c, t.parse::<u8>())) {
@@ -544,7 +568,7 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
                 };
                 let arg = match arg_text {
                     None => None,
-                    Some(text) => match state_arg(name, line_no, acol, text)? {
+                    Some(text) => match state_arg(name, line_no, acol, text, &mut forms)? {
                         Some(arg) => Some(arg),
                         // `on []` occurs in FOON-111: keep the state, drop the empty argument, report
                         // it (the same for `[ ]`, `{ , }` and an argument written in the state field)
