@@ -14,8 +14,32 @@ let ready: Promise<void> | null = null;
 let initialised = false;
 let memory: WebAssembly.Memory | null = null;
 
+// The smallest module with a SIMD instruction (a function returning `v128.const 0`): the planner is built
+// with WebAssembly SIMD, and an engine without it would fail to compile the planner with a cryptic error.
+const SIMD_PROBE = new Uint8Array([
+  0x00, 0x61, 0x73, 0x6d, 0x01, 0x00, 0x00, 0x00, // magic, version
+  0x01, 0x05, 0x01, 0x60, 0x00, 0x01, 0x7b, // type section: () -> v128
+  0x03, 0x02, 0x01, 0x00, // function section
+  0x0a, 0x16, 0x01, 0x14, 0x00, 0xfd, 0x0c, ...new Array<number>(16).fill(0), 0x0b, // code: v128.const 0
+]);
+
+/** Fails with a clear `unsupported` error where WebAssembly SIMD is missing (browsers before 2021–2023). */
+function assertSimd(): void {
+  if (!WebAssembly.validate(SIMD_PROBE)) {
+    throw new PlannerError({
+      code: "unsupported",
+      message: "this browser's WebAssembly has no SIMD, which the planner needs: use Chrome or Edge 91, Firefox 89, Safari 16.4 or later",
+    });
+  }
+}
+
 /** Initialises the WASM module once (browser: fetches it next to the glue code, or from `source`). */
 export function initPlanner(source?: URL | string | Response | BufferSource): Promise<void> {
+  try {
+    assertSimd();
+  } catch (e) {
+    return Promise.reject(e);
+  }
   ready ??= initWasmModule(source === undefined ? undefined : { module_or_path: source }).then((exports) => {
     memory = exports.memory;
     initialised = true;
@@ -26,6 +50,7 @@ export function initPlanner(source?: URL | string | Response | BufferSource): Pr
 /** Initialises the WASM module synchronously from its bytes (Node, Vitest, workers that hold the bytes). */
 export function initPlannerSync(bytes: BufferSource): void {
   if (initialised) return;
+  assertSimd();
   memory = initSync({ module: bytes }).memory;
   initialised = true;
   ready = Promise.resolve();

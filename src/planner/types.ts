@@ -41,6 +41,7 @@ export type ErrorCode =
   | "bad_embeddings"
   | "no_goal"
   | "not_initialised"
+  | "unsupported"
   | "internal";
 
 /** A core error as data (warnings come back in this shape too). */
