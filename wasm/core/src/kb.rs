@@ -38,12 +38,10 @@ pub struct SubgraphInfo {
 pub fn title_from_name(name: &str) -> String {
     let base = name.rsplit(['/', '\\']).next().unwrap_or(name);
     let lower = base.to_ascii_lowercase();
-    let mut t = base;
-    for ext in [".txt", ".foon"] {
-        if lower.ends_with(ext) {
-            t = &t[..t.len() - ext.len()];
-        }
-    }
+    let mut t = [".txt", ".foon"]
+        .iter()
+        .find(|ext| lower.ends_with(*ext))
+        .map_or(base, |ext| &base[..base.len() - ext.len()]);
     // a leading number, optionally after one letter ("0001-", "s01_")
     let letter = t.chars().next().is_some_and(|c| c.is_ascii_alphabetic()) as usize;
     let digits = t[letter..].bytes().take_while(u8::is_ascii_digit).count();

@@ -179,10 +179,9 @@ impl UnitBuilder {
     }
 }
 
-/// Splits a line into tab-separated fields with their 1-based character columns; trims each field and
-/// drops empty trailing fields (FOON files often end lines with a stray tab).
-/// The tab-separated fields of a line, trimmed, with their 1-based columns, into `out` (reused from line
-/// to line: a file has tens of thousands of lines).
+/// Splits a line into tab-separated fields with their 1-based character columns, into `out` (reused
+/// from line to line: a file has tens of thousands); trims each field and drops empty trailing fields
+/// (FOON files often end lines with a stray tab).
 fn fields<'a>(line: &'a str, out: &mut Vec<(usize, &'a str)>) {
     out.clear();
     // columns are counted as we go: a line of many short fields must not cost quadratic time

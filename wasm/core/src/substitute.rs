@@ -410,7 +410,6 @@ impl Profile {
     }
 }
 
-/// Substitution by food-domain word vectors and the project's food knowledge.
 /// What `graded` reads of a name besides its vector: from a profile, or from a candidate set's arrays.
 #[derive(Clone, Copy)]
 struct Traits<'a> {
@@ -421,6 +420,7 @@ struct Traits<'a> {
     stems: &'a [u64],
 }
 
+/// Substitution by food-domain word vectors and the project's food knowledge.
 pub struct EmbeddingSimilarity {
     table: EmbeddingTable,
     taxonomy: Arc<Taxonomy>,
@@ -521,14 +521,18 @@ impl CandidateSet {
         }
     }
 
-    /// Whether candidate i can be an exact match for `q` (first) and `q` for it (second), from hashes
-    /// alone: false is certain, true must be confirmed with `is_exact`.
-    fn exact_hints(&self, sim: &EmbeddingSimilarity, q: &Profile, i: usize) -> (bool, bool) {
+    /// Whether candidate i can be an exact match for `q`, from hashes alone: false is certain, true
+    /// must be confirmed with `is_exact(q, candidate)`.
+    fn may_match(&self, sim: &EmbeddingSimilarity, q: &Profile, i: usize) -> bool {
         let h = &self.hashes[i];
-        (
-            sim.exact_rule(q, |x| x.hash == h[0], |x| x.hash == h[2]),
-            h.iter().any(|&x| x == q.name.hash || x == q.key.hash),
-        )
+        sim.exact_rule(q, |x| x.hash == h[0], |x| x.hash == h[2])
+    }
+
+    /// `may_match` the other way: whether `q` can be an exact match for candidate i.
+    fn may_be_matched(&self, q: &Profile, i: usize) -> bool {
+        self.hashes[i]
+            .iter()
+            .any(|&x| x == q.name.hash || x == q.key.hash)
     }
 
     /// `cosine_of(q, candidate i)`, from the laid-out vectors.
@@ -910,7 +914,7 @@ impl EmbeddingSimilarity {
         for (i, cand) in candidates.iter().enumerate().take(set.len()) {
             let cand = cand.as_ref();
             // the hashes rule most candidates out without reading their profiles
-            let exact = set.exact_hints(self, &q, i).0 && self.is_exact(&q, &set.profiles[i]);
+            let exact = set.may_match(self, &q, i) && self.is_exact(&q, &set.profiles[i]);
             if !exact
                 && (!q.is_known()
                     || (!keep_composites && set.composite[i])
@@ -1005,9 +1009,8 @@ impl Prepared for PreparedName<'_> {
         }
         // the candidate's profile is read only when its hashes allow an exact match: a scan of many
         // labels then reads the set's arrays in order
-        let (to_maybe, from_maybe) = set.exact_hints(self.sim, q, i);
-        if (to_maybe && self.sim.is_exact(q, &set.profiles[i]))
-            || (from_maybe && self.sim.is_exact(&set.profiles[i], q))
+        if (set.may_match(self.sim, q, i) && self.sim.is_exact(q, &set.profiles[i]))
+            || (set.may_be_matched(q, i) && self.sim.is_exact(&set.profiles[i], q))
         {
             return (self.to(i), self.from(i));
         }

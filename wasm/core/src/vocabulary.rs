@@ -26,8 +26,8 @@ pub struct Dish {
 }
 
 /// Sorted as a reader expects: case-insensitively, then as written.
-fn sorted(set: BTreeSet<String>) -> Vec<String> {
-    let mut v: Vec<String> = set.into_iter().collect();
+fn sorted<S: AsRef<str>>(set: BTreeSet<S>) -> Vec<String> {
+    let mut v: Vec<String> = set.into_iter().map(|s| s.as_ref().to_string()).collect();
     v.sort_by_cached_key(|s| (s.to_lowercase(), s.clone()));
     v
 }
@@ -50,12 +50,12 @@ pub fn vocabulary(kb: &KnowledgeBase) -> Vocabulary {
     let mut labels = BTreeSet::new();
     let mut states = BTreeSet::new();
     for node in &kb.nodes {
-        labels.insert(node.label.clone());
+        labels.insert(node.label.as_str());
         states.extend(
             node.states
                 .iter()
                 .filter(|s| s.arg.is_none())
-                .map(|s| s.name.clone()),
+                .map(|s| s.name.as_str()),
         );
     }
     Vocabulary {
