@@ -8,6 +8,7 @@
 use crate::error::{ErrorCode, FoonError, Result};
 use rust_stemmers::{Algorithm, Stemmer};
 use std::collections::HashMap;
+use std::sync::Mutex;
 
 pub const MAGIC: &[u8; 8] = b"FOONEMB\0";
 pub const VERSION: u32 = 1;
@@ -28,6 +29,9 @@ pub struct EmbeddingTable {
     /// Row-major, `words.len() * dims`.
     vectors: Vec<f32>,
     stemmer: Stemmer,
+    /// `word_stems` of each word asked so far: labels and taxonomy names repeat their words, and
+    /// stemming (with the plural and compound tries) costs thousands of instructions a word.
+    resolved: Mutex<HashMap<String, Vec<String>>>,
 }
 
 impl std::fmt::Debug for EmbeddingTable {
@@ -199,6 +203,7 @@ impl EmbeddingTable {
             index,
             vectors,
             stemmer: Stemmer::create(Algorithm::English),
+            resolved: Mutex::new(HashMap::new()),
         })
     }
 
@@ -238,6 +243,18 @@ impl EmbeddingTable {
     /// singularisation); else the word split into two known parts ("gingerroot", "soymilk",
     /// "crabmeat"), longest known first part preferred. Empty when nothing is known.
     pub fn word_stems(&self, word: &str) -> Vec<String> {
+        // a poisoned lock only means another caller panicked mid-insert: the memo is still sound
+        let mut resolved = self.resolved.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(stems) = resolved.get(word) {
+            return stems.clone();
+        }
+        let stems = self.resolve_word(word);
+        resolved.insert(word.to_string(), stems.clone());
+        stems
+    }
+
+    /// `word_stems` without the memo.
+    fn resolve_word(&self, word: &str) -> Vec<String> {
         let stem = self.stem(word);
         // A word and its plural share a stem; when they do not, the word may be a plural cut short
         // ("watercres", "lemongras"): the table's words are in frequency order, the commoner wins.

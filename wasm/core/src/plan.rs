@@ -1,6 +1,7 @@
 //! The planner's request and response, exactly the JSON contract of `docs/plan-format.md` (serde).
 
 use serde::{Deserialize, Serialize};
+use std::sync::Arc;
 use std::collections::BTreeMap;
 
 /// Version of the plan JSON; bump on any incompatible change (and in `docs/plan-format.md`).
@@ -99,9 +100,10 @@ pub enum Origin {
 
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct PlanUnit {
-    pub inputs: Vec<PlanNode>,
+    /// Nodes are shared: the node a unit makes is the same value where a later unit uses it.
+    pub inputs: Vec<Arc<PlanNode>>,
     pub motion: String,
-    pub outputs: Vec<PlanNode>,
+    pub outputs: Vec<Arc<PlanNode>>,
     pub origin: Origin,
     /// Subgraphs the unit comes from (empty for units the planner made).
     pub sources: Vec<String>,

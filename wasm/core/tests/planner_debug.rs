@@ -53,7 +53,7 @@ fn print_one_plan() {
     request.modify = std::env::var("PLAN_MODIFY").map_or(true, |v| v != "0");
     let p = plan(&kb, &index, sim.as_ref(), &request).unwrap();
     for (i, (u, s)) in p.units.iter().zip(&p.steps).enumerate() {
-        let show = |ns: &[foon_core::plan::PlanNode]| {
+        let show = |ns: &[std::sync::Arc<foon_core::plan::PlanNode>]| {
             ns.iter()
                 .map(|n| format!("{}({})", n.label, n.states.join("; ")))
                 .collect::<Vec<_>>()

@@ -177,8 +177,8 @@ pub fn pddl(plan: &Plan) -> Pddl {
     }
     let _ = writeln!(domain, "  )");
     for (i, u) in plan.units.iter().enumerate() {
-        let ins: BTreeSet<String> = u.inputs.iter().map(predicate).collect();
-        let outs: BTreeSet<String> = u.outputs.iter().map(predicate).collect();
+        let ins: BTreeSet<String> = u.inputs.iter().map(|n| predicate(n)).collect();
+        let outs: BTreeSet<String> = u.outputs.iter().map(|n| predicate(n)).collect();
         let _ = writeln!(domain, "  (:action {}-{}", ident(&u.motion), i + 1);
         let _ = writeln!(domain, "    :parameters ()");
         let pre: Vec<String> = ins.iter().map(|p| format!("({p})")).collect();

@@ -19,18 +19,15 @@ pub const START_STATES: &[&str] = &[
     "dry",
 ];
 
-/// Identity of a node: label, states and contents as sets, container.
-pub(crate) type NodeKey = (String, Vec<String>, Vec<String>, Option<String>);
+/// Identity of a node: label, states and contents as sets, container (borrowed from the node).
+pub(crate) type NodeKey<'a> = (&'a str, Vec<&'a str>, Vec<&'a str>, Option<&'a str>);
 
-pub(crate) fn node_key(n: &PlanNode) -> NodeKey {
-    into_node_key(n.clone())
-}
-
-/// `node_key` of a node that is no longer needed (no copies).
-pub(crate) fn into_node_key(mut n: PlanNode) -> NodeKey {
-    n.states.sort();
-    n.ingredients.sort();
-    (n.label, n.states, n.ingredients, n.container)
+pub(crate) fn node_key(n: &PlanNode) -> NodeKey<'_> {
+    let mut states: Vec<&str> = n.states.iter().map(String::as_str).collect();
+    states.sort_unstable();
+    let mut ingredients: Vec<&str> = n.ingredients.iter().map(String::as_str).collect();
+    ingredients.sort_unstable();
+    (&n.label, states, ingredients, n.container.as_deref())
 }
 
 /// A node the kitchen has at the start even when some unit makes it again (an empty bowl, a lid put
@@ -42,21 +39,21 @@ pub fn available_at_start(n: &PlanNode) -> bool {
 }
 
 /// Outputs a unit makes: those that are not also among its inputs (utensils pass through).
-fn produced_keys(u: &PlanUnit) -> HashSet<NodeKey> {
-    let inputs: HashSet<NodeKey> = u.inputs.iter().map(node_key).collect();
+fn produced_keys(u: &PlanUnit) -> HashSet<NodeKey<'_>> {
+    let inputs: HashSet<NodeKey> = u.inputs.iter().map(|n| node_key(n)).collect();
     u.outputs
         .iter()
-        .map(node_key)
+        .map(|n| node_key(n))
         .filter(|k| !inputs.contains(k))
         .collect()
 }
 
-fn unit_key(u: &PlanUnit) -> (String, Vec<NodeKey>, Vec<NodeKey>) {
-    let mut ins: Vec<NodeKey> = u.inputs.iter().map(node_key).collect();
+fn unit_key(u: &PlanUnit) -> (&str, Vec<NodeKey<'_>>, Vec<NodeKey<'_>>) {
+    let mut ins: Vec<NodeKey> = u.inputs.iter().map(|n| node_key(n)).collect();
     ins.sort();
-    let mut outs: Vec<NodeKey> = u.outputs.iter().map(node_key).collect();
+    let mut outs: Vec<NodeKey> = u.outputs.iter().map(|n| node_key(n)).collect();
     outs.sort();
-    (u.motion.clone(), ins, outs)
+    (&u.motion, ins, outs)
 }
 
 fn is_goal(n: &PlanNode, plan: &Plan) -> bool {
@@ -124,6 +121,7 @@ pub fn violations(plan: &Plan) -> Vec<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::sync::Arc;
 
     fn node(label: &str, states: &[&str]) -> PlanNode {
         PlanNode {
@@ -136,9 +134,9 @@ mod tests {
 
     fn unit(inputs: Vec<PlanNode>, motion: &str, outputs: Vec<PlanNode>) -> PlanUnit {
         PlanUnit {
-            inputs,
+            inputs: inputs.into_iter().map(Arc::new).collect(),
             motion: motion.into(),
-            outputs,
+            outputs: outputs.into_iter().map(Arc::new).collect(),
             origin: crate::plan::Origin::Reference,
             sources: Vec::new(),
         }

@@ -85,9 +85,9 @@ pub fn plan(
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
     tree.normalize();
     tree.drop_unneeded();
-    let order = schedule::schedule(&mut tree);
+    let scheduled = schedule::schedule(&mut tree);
     if request.modify {
-        schedule::confirm_planned(&tree, &order, &mut outcomes);
+        schedule::confirm_planned(&tree, &scheduled.order, &mut outcomes);
     }
     let dish_class = class.and_then(|c| {
         dish_class_name(c).map(|name| DishClassRef {
@@ -98,7 +98,8 @@ pub fn plan(
     Ok(output::build(output::Parts {
         kb,
         tree: &tree,
-        order: &order,
+        order: &scheduled.order,
+        nodes: &scheduled.nodes,
         query,
         dish_class,
         notes,

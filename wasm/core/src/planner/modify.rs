@@ -11,6 +11,7 @@ use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
 use crate::similarity::Similarity;
 use crate::taxonomy::{dish_class_name, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use std::borrow::Cow;
 use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -101,9 +102,9 @@ struct Work {
     label: String,
 }
 
-pub(crate) fn modify(
-    ctx: &Context,
-    tree: &mut Tree,
+pub(crate) fn modify<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
     query: &Query,
     enabled: bool,
     notes: &mut Vec<String>,
@@ -307,9 +308,9 @@ pub(crate) fn modify(
 /// Cases 1–4 for an ingredient whose object is in the tree as `o` (`eq` in FOON): its state is there
 /// (exactly or by category), or the tree is changed to reach it (`restate`), once per object.
 #[allow(clippy::too_many_arguments)]
-fn settle_state(
-    ctx: &Context,
-    tree: &mut Tree,
+fn settle_state<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
     eq: &str,
     o: &str,
     s: &str,
@@ -533,7 +534,13 @@ fn replace_states(node: &ObjectNode, old: &[String], new: &str) -> ObjectNode {
 }
 
 /// Cases 3 and 4: brings the ingredient `o` (already in the tree; `eq` in FOON) to the state `s`.
-fn restate(ctx: &Context, tree: &mut Tree, eq: &str, o: &str, s: &str) -> Result<String, String> {
+fn restate<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    eq: &str,
+    o: &str,
+    s: &str,
+) -> Result<String, String> {
     let order = tree.order();
     let slots = tree.slots_with_label(o);
     let first_use = |x: SlotId| {
@@ -630,7 +637,7 @@ fn restate(ctx: &Context, tree: &mut Tree, eq: &str, o: &str, s: &str) -> Result
                 let targets = downstream(tree, vec![u], o, &order);
                 for x in targets {
                     let node = replace_states(&tree.slots[x].node, &old, s);
-                    tree.slots[x].node = node;
+                    tree.slots[x].node = Cow::Owned(node);
                 }
                 let unit = &mut tree.units[u];
                 let before = std::mem::replace(&mut unit.motion, motion.clone());
@@ -666,7 +673,7 @@ fn restate(ctx: &Context, tree: &mut Tree, eq: &str, o: &str, s: &str) -> Result
     }
     for x in downstream(tree, consumers, o, &order) {
         let node = replace_states(&tree.slots[x].node, &old, s);
-        tree.slots[x].node = node;
+        tree.slots[x].node = Cow::Owned(node);
     }
     Ok(format!("added '{motion}' to make it '{s}'"))
 }
@@ -677,7 +684,7 @@ fn utensil_slot(kb: &KnowledgeBase, tree: &mut Tree, n: NodeId) -> SlotId {
     if let Some(x) = tree
         .live_slots()
         .into_iter()
-        .find(|&x| tree.slots[x].node == *node && !tree.produced(x))
+        .find(|&x| *tree.slots[x].node == *node && !tree.produced(x))
     {
         return x;
     }
@@ -761,7 +768,7 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
     }
     let new_x = copy(tree, x, &mut copy_of);
     tree.units[entry].inputs.push((new_x, true));
-    tree.add_contents_downstream(entry, o);
+    tree.add_contents_downstream(entry, o, &order);
     tree.units[entry].origin = Origin::Attached;
     Some(new_x)
 }
@@ -842,8 +849,13 @@ fn private_branch(kb: &KnowledgeBase, r: &super::retrieve::Retrieved, eq: &str) 
 
 /// The unit a new ingredient joins: one that can take more ingredients, where ingredients of the same
 /// kind go in (salt where the pepper is sprinkled), else with the dish's usual motion, closest to the goal.
-fn attach_point(ctx: &Context, tree: &Tree, o: &str, c: Category) -> Option<TUnitId> {
-    let order = tree.order();
+fn attach_point(
+    ctx: &Context,
+    tree: &Tree,
+    order: &[TUnitId],
+    o: &str,
+    c: Category,
+) -> Option<TUnitId> {
     let pattern = dish_pattern(ctx.class);
     let goal_label = tree.slots[tree.goal].node.label.clone();
     let mut best: Option<(TUnitId, (bool, bool, usize, usize))> = None;
@@ -897,9 +909,9 @@ fn attach_point(ctx: &Context, tree: &Tree, o: &str, c: Category) -> Option<TUni
 
 /// Case 4 from the universal FOON: the equivalent's branch for the state, renamed and attached.
 /// Returns the chosen state text and a reason.
-fn add_branch(
-    ctx: &Context,
-    tree: &mut Tree,
+fn add_branch<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
     eq: &str,
     o: &str,
     s: &str,
@@ -974,9 +986,9 @@ fn add_branch(
 /// not in it (the motion FOON uses most for that state), the renaming to the query's name, and the
 /// attachment where the dish takes such ingredients.
 #[allow(clippy::too_many_arguments)]
-fn finish_branch(
-    ctx: &Context,
-    tree: &mut Tree,
+fn finish_branch<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
     eq: &str,
     o: &str,
     s: &str,
@@ -990,7 +1002,7 @@ fn finish_branch(
     if !in_state && c.is_starting() && chosen_state.is_empty() && !s.is_empty() {
         // an ingredient as bought is in the starting state asked for
         let node = map_states(&tree.slots[last].node, s);
-        tree.slots[last].node = node;
+        tree.slots[last].node = Cow::Owned(node);
         chosen_state = s.to_string();
     }
     if !in_state && !c.is_starting() && c != Category::Other {
@@ -1014,11 +1026,12 @@ fn finish_branch(
         tree.rename_in(&new, eq, o);
         how = format!("'{eq}' substituted with '{o}': {how}");
     }
-    let Some(m) = attach_point(ctx, tree, o, c) else {
+    let order = tree.order();
+    let Some(m) = attach_point(ctx, tree, &order, o, c) else {
         return Err(format!("no unit of the tree can take '{o}'"));
     };
     tree.units[m].inputs.push((last, true));
-    tree.add_contents_downstream(m, o);
+    tree.add_contents_downstream(m, o, &order);
     tree.units[m].origin = Origin::Attached;
     let motion = tree.units[m].motion.clone();
     Ok((
@@ -1041,7 +1054,7 @@ fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
         if !slot.node.listed().any(|x| labels.contains(x)) {
             continue;
         }
-        edit_contents(&mut slot.node, &mut |list| {
+        edit_contents(slot.node.to_mut(), &mut |list| {
             list.retain(|x| !labels.contains(x))
         });
         touched.insert(i);

@@ -11,12 +11,14 @@ use crate::plan::{
 };
 use crate::taxonomy::is_utensil;
 use rustc_hash::FxHashSet as HashSet;
+use std::sync::Arc;
 
 pub(crate) struct Parts<'a> {
     pub kb: &'a KnowledgeBase,
-    pub tree: &'a Tree,
-    /// The units in execution order (`schedule::schedule`).
+    pub tree: &'a Tree<'a>,
+    /// The units in execution order, and each slot's plan node (`schedule::schedule`).
     pub order: &'a [TUnitId],
+    pub nodes: &'a [Option<Arc<PlanNode>>],
     pub query: Query,
     pub dish_class: Option<DishClassRef>,
     pub notes: Vec<String>,
@@ -40,22 +42,19 @@ pub(crate) fn plan_node(n: &ObjectNode) -> PlanNode {
 pub(crate) fn build(p: Parts) -> Plan {
     let tree = p.tree;
     let order = p.order;
+    // the schedule made a node for every slot a live unit uses
+    let node = |x: SlotId| match p.nodes.get(x) {
+        Some(Some(n)) => Arc::clone(n),
+        _ => Arc::new(plan_node(&tree.slots[x].node)),
+    };
     let units: Vec<PlanUnit> = order
         .iter()
         .map(|&u| {
             let unit = &tree.units[u];
             PlanUnit {
-                inputs: unit
-                    .inputs
-                    .iter()
-                    .map(|i| plan_node(&tree.slots[i.0].node))
-                    .collect(),
+                inputs: unit.inputs.iter().map(|i| node(i.0)).collect(),
                 motion: unit.motion.clone(),
-                outputs: unit
-                    .outputs
-                    .iter()
-                    .map(|o| plan_node(&tree.slots[o.0].node))
-                    .collect(),
+                outputs: unit.outputs.iter().map(|o| node(o.0)).collect(),
                 origin: unit.origin,
                 sources: unit.sources.clone(),
             }

@@ -32,6 +32,13 @@ fn depends_on(
     target: NodeId,
     scratch: &mut (Vec<NodeId>, HashSet<NodeId>),
 ) -> bool {
+    // most inputs are kitchen items nothing chosen makes: answered without the walk
+    if from == target {
+        return true;
+    }
+    if !chosen.contains_key(&from) {
+        return false;
+    }
     let (stack, seen) = scratch;
     stack.clear();
     seen.clear();

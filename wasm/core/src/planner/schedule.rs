@@ -7,13 +7,14 @@
 //! it as a product. The goal is never in the kitchen at the start: a unit that needs it before it is made
 //! is dropped. Duplicated units and units whose products nobody uses are dropped.
 
-use super::check::{available_at_start, into_node_key, NodeKey};
+use super::check::{available_at_start, node_key, NodeKey};
 use super::output::plan_node;
 use super::tree::{SlotId, TUnitId, Tree};
 use crate::model::{ObjectNode, StateArg};
-use crate::plan::{IngredientOutcome, Status};
+use crate::plan::{IngredientOutcome, PlanNode, Status};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::collections::{BTreeSet, BinaryHeap};
+use std::sync::Arc;
 
 type Value = usize;
 
@@ -23,37 +24,45 @@ struct Values {
     start: Vec<bool>,
 }
 
-fn values(tree: &Tree) -> Values {
-    let mut live = vec![false; tree.slots.len()];
+/// The order of the units, and each live slot's node as the plan shows it (the schedule changes no
+/// node, so these are the plan's nodes; equal nodes share one).
+pub(crate) struct Schedule {
+    pub order: Vec<TUnitId>,
+    pub nodes: Vec<Option<Arc<PlanNode>>>,
+}
+
+/// Each live slot's plan node, made once per distinct node (plan nodes are costly).
+fn plan_nodes(tree: &Tree) -> Vec<Option<Arc<PlanNode>>> {
+    let mut nodes = vec![None; tree.slots.len()];
+    let mut by_node: HashMap<&ObjectNode, Arc<PlanNode>> =
+        HashMap::with_capacity_and_hasher(tree.slots.len(), Default::default());
     for x in tree.live_slots() {
-        live[x] = true;
+        let node: &ObjectNode = &tree.slots[x].node;
+        let p = by_node
+            .entry(node)
+            .or_insert_with(|| Arc::new(plan_node(node)));
+        nodes[x] = Some(Arc::clone(p));
     }
-    // Equal nodes have equal plan keys, so each distinct node is keyed once (plan nodes are costly).
-    let mut by_node: HashMap<&ObjectNode, Value> =
-        HashMap::with_capacity_and_hasher(tree.slots.len(), Default::default());
+    nodes
+}
+
+fn values(nodes: &[Option<Arc<PlanNode>>]) -> Values {
     let mut ids: HashMap<NodeKey, Value> =
-        HashMap::with_capacity_and_hasher(tree.slots.len(), Default::default());
+        HashMap::with_capacity_and_hasher(nodes.len(), Default::default());
     // one value for every slot no live unit uses (never looked at)
     let unused = 0;
     let mut start = vec![false];
-    let of_slot = (0..tree.slots.len())
-        .map(|x| {
-            if !live[x] {
+    let of_slot = nodes
+        .iter()
+        .map(|p| {
+            let Some(p) = p else {
                 return unused;
-            }
-            let node = &tree.slots[x].node;
-            if let Some(&v) = by_node.get(node) {
-                return v;
-            }
-            let p = plan_node(node);
-            let at_start = available_at_start(&p);
+            };
             let next = ids.len() + 1;
-            let v = *ids.entry(into_node_key(p)).or_insert_with(|| {
-                start.push(at_start);
+            *ids.entry(node_key(p)).or_insert_with(|| {
+                start.push(available_at_start(p));
                 next
-            });
-            by_node.insert(node, v);
-            v
+            })
         })
         .collect();
     Values { of_slot, start }
@@ -86,8 +95,9 @@ fn shape(tree: &Tree, v: &Values, u: TUnitId) -> Shape {
 
 /// Orders the live units the goal needs so that the evaluator's invariants hold, editing the tree where
 /// the order alone cannot (see the module comment). Returns the order; dropped units are marked dead.
-pub(crate) fn schedule(tree: &mut Tree) -> Vec<TUnitId> {
-    let mut vals = values(tree);
+pub(crate) fn schedule(tree: &mut Tree) -> Schedule {
+    let nodes = plan_nodes(tree);
+    let mut vals = values(&nodes);
     let goal = vals.of_slot[tree.goal];
     // the finished dish is never in the kitchen at the start, whatever its states say
     vals.start[goal] = false;
@@ -107,7 +117,7 @@ pub(crate) fn schedule(tree: &mut Tree) -> Vec<TUnitId> {
             Ok(order) => {
                 let kept = drop_dead(tree, &order, &shapes, goal);
                 if kept.len() == order.len() {
-                    return kept;
+                    return Schedule { order: kept, nodes };
                 }
                 units = kept;
             }
@@ -123,7 +133,10 @@ pub(crate) fn schedule(tree: &mut Tree) -> Vec<TUnitId> {
             }
         }
     }
-    units
+    Schedule {
+        order: units,
+        nodes,
+    }
 }
 
 /// Drops every unit equal in value to an earlier one (its products are the earlier one's).

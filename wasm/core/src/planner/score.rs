@@ -50,8 +50,11 @@ impl<'a> Scorer<'a> {
     }
 
     fn remembered(&self, q: usize, label: u32) -> (f32, f32) {
-        let mut rows = self.rows.borrow_mut();
-        let row = &mut rows[q];
+        self.in_row(&mut self.rows.borrow_mut()[q], q, label)
+    }
+
+    /// The remembered pair of query name `q` (whose row is `row`) and `label`, computed on first ask.
+    fn in_row(&self, row: &mut Vec<(f32, f32)>, q: usize, label: u32) -> (f32, f32) {
         if row.is_empty() {
             row.resize(self.index.label_count(), (f32::NAN, f32::NAN));
         }
@@ -129,17 +132,22 @@ impl<'a> Scorer<'a> {
             return g;
         }
         let have = self.index.unit_ingredients(u);
-        let g = (0..self.query.len())
-            .map(|q| {
+        // one borrow for the whole unit: retrieval asks this of every unit making a node
+        let mut rows = self.rows.borrow_mut();
+        let g = rows
+            .iter_mut()
+            .enumerate()
+            .map(|(q, row)| {
                 if self.query_ids[q].is_some_and(|id| have.contains(&id)) {
                     1.0
                 } else {
                     have.iter()
-                        .map(|&a| self.similarity(q, a))
+                        .map(|&a| self.in_row(row, q, a).0)
                         .fold(0.0f32, f32::max)
                 }
             })
             .sum();
+        drop(rows);
         self.units.borrow_mut().insert(u, g);
         g
     }

@@ -8,14 +8,16 @@ use crate::model::{NodeId, ObjectNode, State, StateArg};
 use crate::plan::Origin;
 use crate::taxonomy::is_utensil;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use std::borrow::Cow;
 use std::collections::BTreeSet;
 
 pub(crate) type SlotId = usize;
 pub(crate) type TUnitId = usize;
 
 #[derive(Clone, Debug)]
-pub(crate) struct Slot {
-    pub node: ObjectNode,
+pub(crate) struct Slot<'kb> {
+    /// Borrowed from the knowledge base until the tree changes it (most nodes never change).
+    pub node: Cow<'kb, ObjectNode>,
     /// The knowledge-base node it was made from, if any.
     pub kb: Option<NodeId>,
 }
@@ -31,8 +33,8 @@ pub(crate) struct TUnit {
 }
 
 #[derive(Clone, Debug, Default)]
-pub(crate) struct Tree {
-    pub slots: Vec<Slot>,
+pub(crate) struct Tree<'kb> {
+    pub slots: Vec<Slot<'kb>>,
     pub units: Vec<TUnit>,
     pub producer: Vec<Option<TUnitId>>,
     pub goal: SlotId,
@@ -68,9 +70,9 @@ pub(crate) fn map_contents(node: &ObjectNode, f: &mut dyn FnMut(&mut Vec<String>
     copy
 }
 
-impl Tree {
+impl<'kb> Tree<'kb> {
     /// A tree from a retrieval result whose root is the goal.
-    pub fn from_retrieved(kb: &KnowledgeBase, r: &Retrieved, root: NodeId) -> Tree {
+    pub fn from_retrieved(kb: &'kb KnowledgeBase, r: &Retrieved, root: NodeId) -> Tree<'kb> {
         let mut t = Tree::default();
         let mut slot_of: HashMap<NodeId, SlotId> = HashMap::default();
         t.goal = t.kb_slot(kb, root, &mut slot_of);
@@ -78,7 +80,7 @@ impl Tree {
         t
     }
 
-    fn new_slot(&mut self, node: ObjectNode, kb: Option<NodeId>) -> SlotId {
+    fn new_slot(&mut self, node: Cow<'kb, ObjectNode>, kb: Option<NodeId>) -> SlotId {
         self.slots.push(Slot { node, kb });
         self.producer.push(None);
         self.slots.len() - 1
@@ -86,14 +88,14 @@ impl Tree {
 
     fn kb_slot(
         &mut self,
-        kb: &KnowledgeBase,
+        kb: &'kb KnowledgeBase,
         n: NodeId,
         slot_of: &mut HashMap<NodeId, SlotId>,
     ) -> SlotId {
         if let Some(&s) = slot_of.get(&n) {
             return s;
         }
-        let s = self.new_slot(kb.nodes[n].clone(), Some(n));
+        let s = self.new_slot(Cow::Borrowed(&kb.nodes[n]), Some(n));
         slot_of.insert(n, s);
         s
     }
@@ -101,7 +103,7 @@ impl Tree {
     /// Adds retrieved units; `slot_of` maps knowledge-base nodes to slots that already stand for them.
     pub fn add_retrieved(
         &mut self,
-        kb: &KnowledgeBase,
+        kb: &'kb KnowledgeBase,
         r: &Retrieved,
         slot_of: &mut HashMap<NodeId, SlotId>,
         origin: Origin,
@@ -168,7 +170,7 @@ impl Tree {
     }
 
     pub fn add_slot(&mut self, node: ObjectNode) -> SlotId {
-        self.new_slot(node, None)
+        self.new_slot(Cow::Owned(node), None)
     }
 
     pub fn produced(&self, s: SlotId) -> bool {
@@ -183,12 +185,14 @@ impl Tree {
     /// visited in the order of their contents (so the result never depends on slot numbering).
     /// Units the goal does not need are not listed.
     pub fn order(&self) -> Vec<TUnitId> {
-        let mut order = Vec::new();
+        // sized once (the tree's units and slots bound them): order runs many times per plan
+        let mut order = Vec::with_capacity(self.units.len());
         // dense ids: flags by index are cheaper than hashing on this hot path
         let mut done = vec![false; self.units.len()];
         let mut seen = vec![false; self.slots.len()];
-        let mut stack: Vec<(SlotId, bool)> = vec![(self.goal, false)];
-        let mut inputs: Vec<SlotId> = Vec::new();
+        let mut stack: Vec<(SlotId, bool)> = Vec::with_capacity(2 * self.slots.len() + 1);
+        stack.push((self.goal, false));
+        let mut inputs: Vec<SlotId> = Vec::with_capacity(16);
         while let Some((slot, expanded)) = stack.pop() {
             let Some(u) = self.producer.get(slot).copied().flatten() else {
                 continue;
@@ -294,13 +298,13 @@ impl Tree {
             if slot.node.label != from && !slot.node.listed().any(|i| i == from) {
                 continue;
             }
-            edit_contents(&mut slot.node, &mut |list| {
+            edit_contents(slot.node.to_mut(), &mut |list| {
                 for item in list.iter_mut().filter(|item| *item == from) {
                     *item = to.to_string();
                 }
             });
             if slot.node.label == from {
-                slot.node.label = to.to_string();
+                slot.node.to_mut().label = to.to_string();
             }
             touched.insert(s);
         }
@@ -322,8 +326,9 @@ impl Tree {
     }
 
     /// Adds `label` to the contents of the unit's receiving outputs (those with the longest `contains`
-    /// list) and, downstream, to every node that took over those contents.
-    pub fn add_contents_downstream(&mut self, unit: TUnitId, label: &str) {
+    /// list) and, downstream, to every node that took over those contents. `order` is the tree's
+    /// order before the new ingredient's branch joined `unit` (the branch consumes none of those nodes).
+    pub fn add_contents_downstream(&mut self, unit: TUnitId, label: &str, order: &[TUnitId]) {
         let Some(u) = self.units.get(unit) else {
             return;
         };
@@ -339,7 +344,6 @@ impl Tree {
             .filter(|x| x.1 == longest)
             .map(|x| x.0)
             .collect();
-        let order = self.order();
         let mut seen: HashSet<SlotId> = HashSet::default();
         while let Some(s) = work.pop() {
             if !seen.insert(s) {
@@ -349,10 +353,10 @@ impl Tree {
                 continue;
             }
             let old = self.slots[s].node.ingredients();
-            edit_contents(&mut self.slots[s].node, &mut |list| {
+            edit_contents(self.slots[s].node.to_mut(), &mut |list| {
                 list.push(label.to_string())
             });
-            for v in self.consumers(s, &order) {
+            for v in self.consumers(s, order) {
                 for &(o, _) in &self.units[v].outputs {
                     let theirs = &self.slots[o].node;
                     let took_over = old.iter().all(|x| theirs.contents().any(|c| c == x));

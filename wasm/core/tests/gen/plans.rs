@@ -32,20 +32,20 @@ pub fn order_problems(plan: &Plan) -> Vec<String> {
     let mut seen: HashSet<Key> = HashSet::new();
     // what each unit makes: its outputs that are not also its inputs
     let makes = |i: usize| -> HashSet<String> {
-        let ins: HashSet<String> = plan.units[i].inputs.iter().map(node_text).collect();
+        let ins: HashSet<String> = plan.units[i].inputs.iter().map(|n| node_text(n)).collect();
         plan.units[i]
             .outputs
             .iter()
-            .map(node_text)
+            .map(|n| node_text(n))
             .filter(|n| !ins.contains(n))
             .collect()
     };
     let made: Vec<HashSet<String>> = (0..plan.units.len()).map(makes).collect();
     for (i, u) in plan.units.iter().enumerate() {
         let key = (
-            sorted(u.inputs.iter().map(node_text).collect()),
+            sorted(u.inputs.iter().map(|n| node_text(n)).collect()),
             u.motion.clone(),
-            sorted(u.outputs.iter().map(node_text).collect()),
+            sorted(u.outputs.iter().map(|n| node_text(n)).collect()),
         );
         if !seen.insert(key) {
             out.push(format!("unit {} ({}) appears twice", i + 1, u.motion));
@@ -110,9 +110,9 @@ pub fn foon_round_trip_problems(plan: &Plan) -> Vec<String> {
         .iter()
         .map(|u| {
             (
-                sorted(u.inputs.iter().map(node_text).collect()),
+                sorted(u.inputs.iter().map(|n| node_text(n)).collect()),
                 u.motion.clone(),
-                sorted(u.outputs.iter().map(node_text).collect()),
+                sorted(u.outputs.iter().map(|n| node_text(n)).collect()),
             )
         })
         .collect();
