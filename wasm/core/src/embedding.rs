@@ -7,7 +7,7 @@
 
 use crate::error::{ErrorCode, FoonError, Result};
 use rust_stemmers::{Algorithm, Stemmer};
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 use std::sync::Mutex;
 
 pub const MAGIC: &[u8; 8] = b"FOONEMB\0";
@@ -189,7 +189,7 @@ impl EmbeddingTable {
             }
             vectors.extend(row.iter().map(|&q| q as i8 as f32 * scale));
         }
-        let mut index = HashMap::with_capacity(count);
+        let mut index = HashMap::with_capacity_and_hasher(count, Default::default());
         for (i, w) in words.iter().enumerate() {
             if w.is_empty() || index.insert(w.clone(), i as u32).is_some() {
                 return Err(bad(format!(
@@ -203,7 +203,7 @@ impl EmbeddingTable {
             index,
             vectors,
             stemmer: Stemmer::create(Algorithm::English),
-            resolved: Mutex::new(HashMap::new()),
+            resolved: Mutex::new(HashMap::default()),
         })
     }
 

@@ -309,7 +309,7 @@ fn state_arg<'a>(
 /// Index of the first object whose label already occurred earlier in the list.
 fn repeated_label_at(objects: &[ParsedObject]) -> Option<usize> {
     // a set, not a scan of the objects before each one: units with very many objects stay linear
-    let mut seen = std::collections::HashSet::new();
+    let mut seen = rustc_hash::FxHashSet::default();
     objects
         .iter()
         .position(|o| !seen.insert(o.node.label.as_str()))
@@ -367,7 +367,7 @@ fn check_goal_classes(file: &str, units: &[ParsedUnit]) -> Result<()> {
         })
         .collect();
     marks.sort();
-    let mut first: std::collections::HashMap<&ObjectNode, (usize, u32)> = Default::default();
+    let mut first: rustc_hash::FxHashMap<&ObjectNode, (usize, u32)> = Default::default();
     for (line, node, class) in marks {
         let (first_line, first_class) = *first.entry(node).or_insert((line, class));
         if first_class != class {

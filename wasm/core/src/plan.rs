@@ -1,8 +1,8 @@
 //! The planner's request and response, exactly the JSON contract of `docs/plan-format.md` (serde).
 
 use serde::{Deserialize, Serialize};
-use std::sync::Arc;
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 /// Version of the plan JSON; bump on any incompatible change (and in `docs/plan-format.md`).
 pub const FORMAT_VERSION: u32 = 1;

@@ -10,6 +10,7 @@ use super::index::PlannerIndex;
 use super::score::Scorer;
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, UnitId};
+use fixedbitset::FixedBitSet;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::collections::VecDeque;
 
@@ -72,9 +73,10 @@ pub(crate) fn retrieve(
     // sized for a typical recipe's tree, so that the tables do not grow step by step
     let mut chosen: HashMap<NodeId, UnitId> =
         HashMap::with_capacity_and_hasher(64, Default::default());
-    let mut in_tree: HashSet<UnitId> = HashSet::with_capacity_and_hasher(64, Default::default());
+    // bit sets over the knowledge base: a few hundred bytes even at 100x FOON-111, cheaper than hashing
+    let mut in_tree = FixedBitSet::with_capacity(kb.units.len());
     let mut blocked = Vec::new();
-    let mut visited: HashSet<NodeId> = HashSet::with_capacity_and_hasher(128, Default::default());
+    let mut visited = FixedBitSet::with_capacity(kb.nodes.len());
     let mut scratch = (
         Vec::new(),
         HashSet::with_capacity_and_hasher(64, Default::default()),
@@ -117,7 +119,7 @@ pub(crate) fn retrieve(
                 continue; // would close a cycle
             }
             let g = scorer.unit(u);
-            let reused = in_tree.contains(&u) || taken.contains(&u);
+            let reused = in_tree.contains(u) || taken.contains(&u);
             let made_inputs = unit.input_nodes().filter(|&n| !kb.kitchen[n]).count();
             // larger is better: a unit already in the tree, then one of the reference recipe (so that
             // the tree stays one coherent recipe), then g(u); ties go to fewer inputs to make, then
@@ -156,7 +158,7 @@ pub(crate) fn retrieve(
         let mut inputs: Vec<NodeId> = kb.units[u].input_nodes().collect();
         inputs.sort_unstable();
         for n in inputs {
-            if visited.insert(n) {
+            if !visited.put(n) {
                 queue.push_back((n, Some(u)));
             }
         }
@@ -175,9 +177,9 @@ fn execution_order(
     chosen: &HashMap<NodeId, UnitId>,
     root: NodeId,
 ) -> Vec<UnitId> {
-    let mut order = Vec::new();
-    let mut done: HashSet<UnitId> = HashSet::default();
-    let mut seen_nodes: HashSet<NodeId> = HashSet::default();
+    let mut order = Vec::with_capacity(chosen.len());
+    let mut done = FixedBitSet::with_capacity(kb.units.len());
+    let mut seen_nodes = FixedBitSet::with_capacity(kb.nodes.len());
     // iterative DFS: (node, expanded?)
     let mut stack: Vec<(NodeId, bool)> = vec![(root, false)];
     while let Some((node, expanded)) = stack.pop() {
@@ -185,19 +187,19 @@ fn execution_order(
             continue;
         };
         if expanded {
-            if done.insert(u) {
+            if !done.put(u) {
                 order.push(u);
             }
             continue;
         }
-        if !seen_nodes.insert(node) || done.contains(&u) {
+        if seen_nodes.put(node) || done.contains(u) {
             continue;
         }
         stack.push((node, true));
         let mut inputs: Vec<NodeId> = kb.units[u].input_nodes().collect();
         inputs.sort_unstable();
         for n in inputs.into_iter().rev() {
-            if !seen_nodes.contains(&n) {
+            if !seen_nodes.contains(n) {
                 stack.push((n, false));
             }
         }

@@ -241,16 +241,25 @@ impl<'kb> Tree<'kb> {
 
     /// Slots used by live units, and the goal, ascending.
     pub fn live_slots(&self) -> Vec<SlotId> {
-        self.live_where(|_| true)
+        let live = self.live_marks();
+        (0..self.slots.len()).filter(|&s| live[s]).collect()
     }
 
-    /// Live slots with the label, in slot order.
+    /// Live slots with the label, in slot order (asked many times per plan, often of a label the tree
+    /// lacks: the labels are compared before the units are walked).
     pub fn slots_with_label(&self, label: &str) -> Vec<SlotId> {
-        self.live_where(|s| s.node.label == label)
+        let mut with: Vec<SlotId> = (0..self.slots.len())
+            .filter(|&s| self.slots[s].node.label == label)
+            .collect();
+        if !with.is_empty() {
+            let live = self.live_marks();
+            with.retain(|&s| live[s]);
+        }
+        with
     }
 
-    /// Live slots that pass `keep`, ascending (marks by index: no sort, asked many times per plan).
-    fn live_where(&self, keep: impl Fn(&Slot) -> bool) -> Vec<SlotId> {
+    /// Per slot: used by a live unit, or the goal (marks by index: no sort).
+    fn live_marks(&self) -> Vec<bool> {
         let mut live = vec![false; self.slots.len()];
         if let Some(goal) = live.get_mut(self.goal) {
             *goal = true;
@@ -260,11 +269,7 @@ impl<'kb> Tree<'kb> {
                 live[x.0] = true;
             }
         }
-        live.iter()
-            .enumerate()
-            .filter(|&(s, &l)| l && keep(&self.slots[s]))
-            .map(|(s, _)| s)
-            .collect()
+        live
     }
 
     /// Ingredient labels in the tree (not utensils, not the goal's own label).
@@ -352,20 +357,24 @@ impl<'kb> Tree<'kb> {
             if self.slots[s].node.contents().any(|x| x == label) {
                 continue;
             }
-            let old = self.slots[s].node.ingredients();
-            edit_contents(self.slots[s].node.to_mut(), &mut |list| {
-                list.push(label.to_string())
-            });
+            // the nodes taking over its contents, judged before the edit (it changes only `s`)
+            let mut next = Vec::new();
+            let node = &self.slots[s].node;
+            let old = node.ingredient_refs();
             for v in self.consumers(s, order) {
                 for &(o, _) in &self.units[v].outputs {
                     let theirs = &self.slots[o].node;
-                    let took_over = old.iter().all(|x| theirs.contents().any(|c| c == x));
-                    let same_vessel = theirs.label == self.slots[s].node.label;
+                    let took_over = old.iter().all(|x| theirs.contents().any(|c| c == *x));
+                    let same_vessel = theirs.label == node.label;
                     if theirs.holds_something() && (took_over || same_vessel) && o != s {
-                        work.push(o);
+                        next.push(o);
                     }
                 }
             }
+            edit_contents(self.slots[s].node.to_mut(), &mut |list| {
+                list.push(label.to_string())
+            });
+            work.extend(next);
         }
     }
 
