@@ -79,7 +79,6 @@ pub fn plan(
         overrides: &overrides,
         goal_subgraph: index.subgraph_id(&chosen.goal.subgraph),
         scorer: &scorer,
-        motion_fit: Default::default(),
     };
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);

@@ -4,7 +4,7 @@
 use super::index::PlannerIndex;
 use super::retrieve::retrieve;
 use super::states::{category, is_food_state, Category};
-use super::tree::{edit_contents, map_contents, SlotId, TUnitId, Tree};
+use super::tree::{dedup_slots, edit_contents, map_contents, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
@@ -24,9 +24,6 @@ pub(crate) struct Context<'a> {
     /// The reference recipe's subgraph id.
     pub goal_subgraph: Option<u32>,
     pub scorer: &'a super::score::Scorer<'a>,
-    /// Per motion: whether it takes more ingredients, and its rank in the dish's pattern (see
-    /// `attach_point`; remembered because every attachment asks it of every unit).
-    pub motion_fit: RefCell<HashMap<String, (bool, usize)>>,
 }
 
 /// Food states of a node (not its place, contents or an appliance's condition).
@@ -47,9 +44,9 @@ fn state_text(node: &ObjectNode) -> String {
 
 /// The category a node's food states put it in (the furthest along; whole when it has none).
 fn node_category(node: &ObjectNode) -> Category {
-    food_states(node)
-        .into_iter()
+    node.physical_states()
         .map(category)
+        .filter(|&c| c != Category::Other)
         .max_by_key(|c| if c.is_starting() { 0 } else { 1 + *c as u8 })
         .unwrap_or(Category::Whole)
 }
@@ -89,6 +86,35 @@ fn dish_pattern(class: Option<u32>) -> &'static [&'static str] {
     }
 }
 
+/// Whether a motion takes more ingredients, and its rank in the dish class's `pattern` (see
+/// `attach_point`). Remembered across plans, per class: every attachment asks it of every unit.
+fn motion_fit(class: Option<u32>, pattern: &[&str], motion: &str) -> (bool, usize) {
+    type Fits = HashMap<String, (bool, usize)>;
+    thread_local! {
+        static FIT: RefCell<HashMap<Option<u32>, Fits>> = RefCell::new(HashMap::default());
+    }
+    if let Some(fit) = FIT.with(|m| m.borrow().get(&class)?.get(motion).copied()) {
+        return fit;
+    }
+    let pref = pattern
+        .iter()
+        .position(|m| motion.contains(m))
+        .unwrap_or(pattern.len());
+    let fit = (accepts_more(motion), pref);
+    FIT.with(|m| {
+        let mut m = m.borrow_mut();
+        let of_class = m.entry(class).or_default();
+        // a hostile knowledge base may have any number of motions
+        if of_class.len() >= MAX_REMEMBERED_MOTIONS {
+            of_class.clear();
+        }
+        of_class.insert(motion.to_string(), fit);
+    });
+    fit
+}
+
+const MAX_REMEMBERED_MOTIONS: usize = 4096;
+
 /// What happened to one ingredient while it was being planned.
 struct Work {
     case: Option<u8>,
@@ -109,7 +135,11 @@ pub(crate) fn modify<'kb>(
     enabled: bool,
     notes: &mut Vec<String>,
 ) -> (Vec<IngredientOutcome>, Vec<String>) {
-    let reference_labels: Vec<String> = tree.ingredient_labels().into_iter().collect();
+    let reference_labels: Vec<String> = tree
+        .ingredient_labels()
+        .into_iter()
+        .map(str::to_string)
+        .collect();
     let requested: HashSet<&str> = query
         .ingredients
         .iter()
@@ -221,7 +251,7 @@ pub(crate) fn modify<'kb>(
         // an asked-for ingredient whose units served only pruned ones (butter spread on the bread that
         // was not asked for) comes back as a branch of its own, like a case-4 ingredient
         for (i, w) in works.iter().enumerate() {
-            if w.planned && !present.contains(&w.label) {
+            if w.planned && !present.contains(w.label.as_str()) {
                 let eq = w
                     .matched
                     .as_ref()
@@ -859,7 +889,6 @@ fn attach_point(
     let pattern = dish_pattern(ctx.class);
     let goal_label = tree.slots[tree.goal].node.label.clone();
     let mut best: Option<(TUnitId, (bool, bool, usize, usize))> = None;
-    let mut motions = ctx.motion_fit.borrow_mut();
     for (pos, &u) in order.iter().enumerate() {
         let unit = &tree.units[u];
         let takes = unit
@@ -869,18 +898,7 @@ fn attach_point(
         if !takes {
             continue;
         }
-        let (more, pref) = match motions.get(unit.motion.as_str()) {
-            Some(&fit) => fit,
-            None => {
-                let pref = pattern
-                    .iter()
-                    .position(|m| unit.motion.contains(m))
-                    .unwrap_or(pattern.len());
-                let fit = (accepts_more(&unit.motion), pref);
-                motions.insert(unit.motion.clone(), fit);
-                fit
-            }
-        };
+        let (more, pref) = motion_fit(ctx.class, pattern, &unit.motion);
         if !more {
             continue;
         }
@@ -1171,8 +1189,8 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
             continue;
         }
         let unit = &mut tree.units[u];
-        let mut seen: HashSet<SlotId> = HashSet::default();
-        unit.inputs = inputs.into_iter().filter(|i| seen.insert(i.0)).collect();
+        unit.inputs = inputs;
+        dedup_slots(&mut unit.inputs);
         unit.outputs = outputs;
     }
     // the goal may have been passed through a removed unit

@@ -56,7 +56,7 @@ pub(crate) fn build(p: Parts) -> Plan {
                 motion: unit.motion.clone(),
                 outputs: unit.outputs.iter().map(|o| node(o.0)).collect(),
                 origin: unit.origin,
-                sources: unit.sources.clone(),
+                sources: unit.sources.to_vec(),
             }
         })
         .collect();
@@ -74,11 +74,12 @@ pub(crate) fn build(p: Parts) -> Plan {
         .collect();
     let mut progress_lines = Vec::new();
     let mut done: HashSet<String> = HashSet::default();
+    let live = tree.live_slots();
     for o in &p.outcomes {
         if o.status != Status::Planned || !done.insert(o.object.clone()) {
             continue;
         }
-        if let Some(line) = progress_line(tree, order, &made, &o.object) {
+        if let Some(line) = progress_line(tree, order, &made, &live, &o.object) {
             progress_lines.push(line);
         }
     }
@@ -133,9 +134,14 @@ fn progress_line(
     tree: &Tree,
     order: &[TUnitId],
     made: &HashSet<SlotId>,
+    live: &[SlotId],
     label: &str,
 ) -> Option<ProgressLine> {
-    let slots = tree.slots_with_label(label);
+    let slots: Vec<SlotId> = live
+        .iter()
+        .copied()
+        .filter(|&x| tree.slots[x].node.label == label)
+        .collect();
     let first_use = |x: SlotId| {
         order
             .iter()
@@ -174,7 +180,7 @@ fn progress_line(
         let Some((pos, u, out)) = next else {
             // its last node sits in a vessel: what the vessel's contents become
             if let Some((pos, u)) = last_step {
-                let unit: &super::tree::TUnit = &tree.units[u];
+                let unit: &super::tree::TUnit<'_> = &tree.units[u];
                 end_product = unit
                     .outputs
                     .iter()
@@ -280,12 +286,14 @@ fn verb(motion: &str) -> String {
     }
 }
 
-fn list(items: &[String]) -> String {
-    let items: Vec<String> = items.iter().map(|i| format!("the {i}")).collect();
-    match items.len() {
-        0 => String::new(),
-        1 => items[0].clone(),
-        n => format!("{} and {}", items[..n - 1].join(", "), items[n - 1]),
+/// "the a, the b and the c", written onto `out`.
+fn push_list(out: &mut String, items: &[&str]) {
+    for (k, item) in items.iter().enumerate() {
+        if k > 0 {
+            out.push_str(if k + 1 == items.len() { " and " } else { ", " });
+        }
+        out.push_str("the ");
+        out.push_str(item);
     }
 }
 
@@ -293,10 +301,10 @@ fn list(items: &[String]) -> String {
 pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
     let unit = &tree.units[u];
     let node = |x: SlotId| &tree.slots[x].node;
-    let mut objects: Vec<String> = Vec::new();
-    fn push(objects: &mut Vec<String>, l: &str) {
-        if !objects.iter().any(|o| o == l) {
-            objects.push(l.to_string());
+    let mut objects: Vec<&str> = Vec::new();
+    fn push<'n>(objects: &mut Vec<&'n str>, l: &'n str) {
+        if !objects.contains(&l) {
+            objects.push(l);
         }
     }
     for &(x, m) in &unit.inputs {
@@ -326,29 +334,31 @@ pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
     // where the moved objects end up
     let place = unit.outputs.iter().find_map(|&(x, _)| {
         let n = node(x);
-        if !objects.contains(&n.label) {
+        if !objects.contains(&n.label.as_str()) {
             return None;
         }
         n.states.iter().find_map(|s| match &s.arg {
-            Some(StateArg::Container(c)) if !objects.contains(c) => {
-                Some((s.name.clone(), c.clone()))
+            Some(StateArg::Container(c)) if !objects.contains(&c.as_str()) => {
+                Some((s.name.as_str(), c.as_str()))
             }
             _ => None,
         })
     });
-    let tools: Vec<String> = unit
+    let tools: Vec<&str> = unit
         .inputs
         .iter()
         .filter(|&&(x, m)| {
             let n = node(x);
             !m && is_utensil(&n.label)
                 && n.states.is_empty()
-                && !objects.contains(&n.label)
-                && place.as_ref().is_none_or(|p| p.1 != n.label)
+                && !objects.contains(&n.label.as_str())
+                && place.is_none_or(|p| p.1 != n.label)
         })
-        .map(|&(x, _)| node(x).label.clone())
+        .map(|&(x, _)| node(x).label.as_str())
         .collect();
-    let mut text = format!("{} {}", verb(&unit.motion), list(&objects));
+    let mut text = verb(&unit.motion);
+    text.push(' ');
+    push_list(&mut text, &objects);
     if let Some((rel, c)) = place {
         let into = matches!(
             unit.motion.trim_end_matches('*'),
@@ -360,15 +370,18 @@ pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
                 | "scoop and pour"
                 | "place"
         );
-        let rel = match (rel.as_str(), into) {
-            ("in", true) => "into".to_string(),
-            ("on", true) => "onto".to_string(),
-            (r, _) => r.to_string(),
+        let rel = match (rel, into) {
+            ("in", true) => "into",
+            ("on", true) => "onto",
+            (r, _) => r,
         };
-        text.push_str(&format!(" {rel} the {c}"));
+        for part in [" ", rel, " the ", c] {
+            text.push_str(part);
+        }
     }
     if !tools.is_empty() {
-        text.push_str(&format!(" with {}", list(&tools)));
+        text.push_str(" with ");
+        push_list(&mut text, &tools);
     }
     text.push('.');
     text

@@ -82,7 +82,8 @@ pub(crate) fn retrieve(
         HashSet::with_capacity_and_hasher(64, Default::default()),
     );
     // each node with the unit that needs it (None for the root)
-    let mut queue: VecDeque<(NodeId, Option<UnitId>)> = VecDeque::from([(root, None)]);
+    let mut queue: VecDeque<(NodeId, Option<UnitId>)> = VecDeque::with_capacity(64);
+    queue.push_back((root, None));
     visited.insert(root);
     while let Some((node, parent)) = queue.pop_front() {
         if node != root && kb.kitchen.get(node).copied().unwrap_or(true) {

@@ -141,7 +141,8 @@ pub(crate) fn schedule(tree: &mut Tree) -> Schedule {
 
 /// Drops every unit equal in value to an earlier one (its products are the earlier one's).
 fn drop_duplicates(tree: &mut Tree, units: &mut Vec<TUnitId>, shapes: &HashMap<TUnitId, Shape>) {
-    let mut seen: HashSet<(&str, &[Value], &[Value])> = HashSet::default();
+    let mut seen: HashSet<(&str, &[Value], &[Value])> =
+        HashSet::with_capacity_and_hasher(units.len(), Default::default());
     let mut keep = Vec::with_capacity(units.len());
     for &u in units.iter() {
         let s = &shapes[&u];
@@ -179,9 +180,10 @@ fn topological(
         .enumerate()
         .map(|(i, u)| {
             let mut out = Vec::new();
-            let mut seen = HashSet::default();
+            // inputs are sorted: a repeated value follows its first use
+            let mut last = None;
             for &x in &shapes[u].inputs {
-                if vals.start[x] || !seen.insert(x) {
+                if vals.start[x] || last.replace(x) == Some(x) {
                     continue;
                 }
                 for &p in makers.get(&x).map(Vec::as_slice).unwrap_or(&[]) {
@@ -202,6 +204,10 @@ fn topological(
         let mut changed = false;
         for v in 0..n {
             let list = &needs[v];
+            // only an edge inside v's component can go
+            if list.iter().all(|(p, _)| comp[*p] != comp[v]) {
+                continue;
+            }
             let outside: HashSet<Value> = list
                 .iter()
                 .filter(|(p, _)| comp[*p] != comp[v])
@@ -277,12 +283,14 @@ fn components(n: usize, needs: &[Vec<(usize, Value)>]) -> Vec<usize> {
     let mut comp = vec![usize::MAX; n];
     let mut next = 0usize;
     let mut comps = 0usize;
+    // (node, next edge to look at)
+    let mut work: Vec<(usize, usize)> = Vec::with_capacity(n);
     for root in 0..n {
         if index[root] != usize::MAX {
             continue;
         }
-        // (node, next edge to look at)
-        let mut work: Vec<(usize, usize)> = vec![(root, 0)];
+        work.clear();
+        work.push((root, 0));
         while let Some(&mut (v, ref mut e)) = work.last_mut() {
             if *e == 0 && index[v] == usize::MAX {
                 index[v] = next;
@@ -335,7 +343,8 @@ fn drop_dead(
     shapes: &HashMap<TUnitId, Shape>,
     goal: Value,
 ) -> Vec<TUnitId> {
-    let mut used: HashSet<Value> = HashSet::default();
+    let mut used: HashSet<Value> =
+        HashSet::with_capacity_and_hasher(4 * order.len(), Default::default());
     let mut kept = Vec::with_capacity(order.len());
     for &u in order.iter().rev() {
         let s = &shapes[&u];

@@ -23,19 +23,20 @@ pub(crate) struct Slot<'kb> {
 }
 
 #[derive(Clone, Debug)]
-pub(crate) struct TUnit {
+pub(crate) struct TUnit<'kb> {
     pub inputs: Vec<(SlotId, bool)>,
     pub motion: String,
     pub outputs: Vec<(SlotId, bool)>,
     pub origin: Origin,
-    pub sources: Vec<String>,
+    /// The knowledge base's subgraphs the unit comes from (none for a unit the planner made).
+    pub sources: &'kb [String],
     pub alive: bool,
 }
 
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Tree<'kb> {
     pub slots: Vec<Slot<'kb>>,
-    pub units: Vec<TUnit>,
+    pub units: Vec<TUnit<'kb>>,
     pub producer: Vec<Option<TUnitId>>,
     pub goal: SlotId,
 }
@@ -63,6 +64,19 @@ pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<St
     node.states.dedup();
 }
 
+/// Keeps the first use of each slot, in order. In place: a unit has a handful of inputs, and this runs
+/// for every unit of every round of `normalize`.
+pub(crate) fn dedup_slots(uses: &mut Vec<(SlotId, bool)>) {
+    let mut kept = 0;
+    for j in 0..uses.len() {
+        if !uses[..kept].iter().any(|x| x.0 == uses[j].0) {
+            uses.swap(kept, j);
+            kept += 1;
+        }
+    }
+    uses.truncate(kept);
+}
+
 /// A copy of a node with its lists of contents rewritten (see `edit_contents`).
 pub(crate) fn map_contents(node: &ObjectNode, f: &mut dyn FnMut(&mut Vec<String>)) -> ObjectNode {
     let mut copy = node.clone();
@@ -74,7 +88,9 @@ impl<'kb> Tree<'kb> {
     /// A tree from a retrieval result whose root is the goal.
     pub fn from_retrieved(kb: &'kb KnowledgeBase, r: &Retrieved, root: NodeId) -> Tree<'kb> {
         let mut t = Tree::default();
-        let mut slot_of: HashMap<NodeId, SlotId> = HashMap::default();
+        // a unit has a few objects: sized so that the tables do not grow step by step
+        let mut slot_of: HashMap<NodeId, SlotId> =
+            HashMap::with_capacity_and_hasher(4 * r.units.len() + 1, Default::default());
         t.goal = t.kb_slot(kb, root, &mut slot_of);
         t.add_retrieved(kb, r, &mut slot_of, Origin::Reference);
         t
@@ -108,8 +124,10 @@ impl<'kb> Tree<'kb> {
         slot_of: &mut HashMap<NodeId, SlotId>,
         origin: Origin,
     ) -> Vec<TUnitId> {
-        let mut unit_of: HashMap<usize, TUnitId> = HashMap::default();
-        let mut added = Vec::new();
+        let mut unit_of: HashMap<usize, TUnitId> =
+            HashMap::with_capacity_and_hasher(r.units.len(), Default::default());
+        let mut added = Vec::with_capacity(r.units.len());
+        self.units.reserve(r.units.len());
         for &u in &r.units {
             let unit = &kb.units[u];
             let inputs = unit
@@ -127,7 +145,7 @@ impl<'kb> Tree<'kb> {
                 motion: unit.motion.clone(),
                 outputs,
                 origin,
-                sources: kb.provenance[u].clone(),
+                sources: &kb.provenance[u],
                 alive: true,
             });
             unit_of.insert(u, self.units.len() - 1);
@@ -157,7 +175,7 @@ impl<'kb> Tree<'kb> {
             motion: motion.to_string(),
             outputs: outputs.clone(),
             origin,
-            sources: Vec::new(),
+            sources: &[],
             alive: true,
         });
         let id = self.units.len() - 1;
@@ -235,14 +253,16 @@ impl<'kb> Tree<'kb> {
         }
     }
 
-    pub fn alive_units(&self) -> impl Iterator<Item = (TUnitId, &TUnit)> {
+    pub fn alive_units(&self) -> impl Iterator<Item = (TUnitId, &TUnit<'kb>)> {
         self.units.iter().enumerate().filter(|(_, u)| u.alive)
     }
 
     /// Slots used by live units, and the goal, ascending.
     pub fn live_slots(&self) -> Vec<SlotId> {
         let live = self.live_marks();
-        (0..self.slots.len()).filter(|&s| live[s]).collect()
+        let mut out = Vec::with_capacity(self.slots.len());
+        out.extend((0..self.slots.len()).filter(|&s| live[s]));
+        out
     }
 
     /// Live slots with the label, in slot order (asked many times per plan, often of a label the tree
@@ -273,15 +293,13 @@ impl<'kb> Tree<'kb> {
     }
 
     /// Ingredient labels in the tree (not utensils, not the goal's own label).
-    pub fn ingredient_labels(&self) -> BTreeSet<String> {
-        let goal = &self.slots[self.goal].node.label;
-        let labels: BTreeSet<&String> = self
-            .live_slots()
+    pub fn ingredient_labels(&self) -> BTreeSet<&str> {
+        let goal = self.slots[self.goal].node.label.as_str();
+        self.live_slots()
             .into_iter()
-            .map(|s| &self.slots[s].node.label)
-            .filter(|l| *l != goal && !is_utensil(l))
-            .collect();
-        labels.into_iter().cloned().collect()
+            .map(|s| self.slots[s].node.label.as_str())
+            .filter(|&l| l != goal && !is_utensil(l))
+            .collect()
     }
 
     /// Live units that take the slot as input, in execution order.
@@ -412,8 +430,7 @@ impl<'kb> Tree<'kb> {
                             i.0 = a;
                         }
                     }
-                    let mut seen = HashSet::default();
-                    unit.inputs.retain(|i| seen.insert(i.0));
+                    dedup_slots(&mut unit.inputs);
                 }
                 let unit = &self.units[u];
                 let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
@@ -484,8 +501,7 @@ impl<'kb> Tree<'kb> {
                         guard += 1;
                     }
                 }
-                let mut seen = HashSet::default();
-                unit.inputs.retain(|i| seen.insert(i.0));
+                dedup_slots(&mut unit.inputs);
             }
             self.drop_unneeded();
         }
@@ -493,7 +509,8 @@ impl<'kb> Tree<'kb> {
 
     /// An id per slot, equal for slots with equal nodes.
     fn values(&self) -> Vec<usize> {
-        let mut ids: HashMap<&ObjectNode, usize> = HashMap::default();
+        let mut ids: HashMap<&ObjectNode, usize> =
+            HashMap::with_capacity_and_hasher(self.slots.len(), Default::default());
         self.slots
             .iter()
             .map(|s| {
@@ -507,7 +524,8 @@ impl<'kb> Tree<'kb> {
     /// joined to the made one, so its users come after its maker, when that makes no cycle.
     fn join_equal_leaves(&mut self, value: &[usize]) -> bool {
         let order = self.order();
-        let mut made: HashMap<usize, SlotId> = HashMap::default();
+        let mut made: HashMap<usize, SlotId> =
+            HashMap::with_capacity_and_hasher(2 * order.len(), Default::default());
         for &u in &order {
             let ins: Vec<SlotId> = self.units[u].inputs.iter().map(|i| i.0).collect();
             for &(o, _) in &self.units[u].outputs {
