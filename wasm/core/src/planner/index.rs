@@ -327,22 +327,26 @@ impl PlannerIndex {
         self.by_label.contains_key(label)
     }
 
-    /// How often `label` is in `state` in recipes of the class (or in all recipes for `None`).
-    pub(crate) fn label_state_count(&self, class: Option<u32>, label: &str, state: &str) -> u32 {
-        self.label_state
-            .get(label)
-            .and_then(|states| states.get(state))
-            .and_then(|counts| counts.get(&class))
-            .copied()
-            .unwrap_or(0)
-    }
-
-    pub(crate) fn state_count(&self, class: Option<u32>, state: &str) -> u32 {
-        self.state_freq
-            .get(state)
-            .and_then(|counts| counts.get(&class))
-            .copied()
-            .unwrap_or(0)
+    /// How common the states are for `label`: summed over `states`, how often `label` is in the state
+    /// plus how often anything is, in recipes of the class and in all recipes.
+    pub(crate) fn state_frequency(
+        &self,
+        class: Option<u32>,
+        label: &str,
+        states: &[&str],
+    ) -> (u32, u32) {
+        let of_label = self.label_state.get(label);
+        let count = |counts: Option<&ClassCounts>, c: Option<u32>| {
+            counts.and_then(|m| m.get(&c)).copied().unwrap_or(0)
+        };
+        states.iter().fold((0, 0), |(in_class, overall), &s| {
+            let labelled = of_label.and_then(|m| m.get(s));
+            let any = self.state_freq.get(s);
+            (
+                in_class + count(labelled, class) + count(any, class),
+                overall + count(labelled, None) + count(any, None),
+            )
+        })
     }
 
     /// The motion most used to reach `state` (or a state of its category); `None` for starting states.

@@ -829,21 +829,15 @@ fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
         if !(exact || cat || raw) {
             continue;
         }
-        let freq = |class: Option<u32>| -> u32 {
-            food.iter()
-                .map(|f| {
-                    ctx.index.label_state_count(class, eq, f) + ctx.index.state_count(class, f)
-                })
-                .sum()
-        };
+        let (in_class, overall) = ctx.index.state_frequency(ctx.class, eq, &food);
         let bare = node.container().is_none() && !node.holds_something();
         let key = (
             exact,
             cat,
             !node.holds_something(),
             bare,
-            freq(ctx.class),
-            freq(None),
+            in_class,
+            overall,
             usize::MAX - node.states.len(),
             std::cmp::Reverse(n),
         );
@@ -1067,13 +1061,15 @@ fn map_states(node: &ObjectNode, s: &str) -> ObjectNode {
 
 /// Removes `labels` from every list of contents; units touching a changed node are marked renamed.
 fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
+    // asked of every name in every list of every slot: a hash set rather than the ordered one
+    let labels: HashSet<&str> = labels.iter().map(String::as_str).collect();
     let mut touched: HashSet<SlotId> = HashSet::default();
     for (i, slot) in tree.slots.iter_mut().enumerate() {
         if !slot.node.listed().any(|x| labels.contains(x)) {
             continue;
         }
         edit_contents(slot.node.to_mut(), &mut |list| {
-            list.retain(|x| !labels.contains(x))
+            list.retain(|x| !labels.contains(x.as_str()))
         });
         touched.insert(i);
     }
