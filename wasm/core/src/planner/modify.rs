@@ -86,9 +86,9 @@ fn dish_pattern(class: Option<u32>) -> &'static [&'static str] {
     }
 }
 
-/// Whether a motion takes more ingredients, and its rank in the dish class's `pattern` (see
+/// Whether a motion takes more ingredients, and its rank in the dish class's pattern (see
 /// `attach_point`). Remembered across plans, per class: every attachment asks it of every unit.
-fn motion_fit(class: Option<u32>, pattern: &[&str], motion: &str) -> (bool, usize) {
+fn motion_fit(class: Option<u32>, motion: &str) -> (bool, usize) {
     type Fits = HashMap<String, (bool, usize)>;
     thread_local! {
         static FIT: RefCell<HashMap<Option<u32>, Fits>> = RefCell::new(HashMap::default());
@@ -96,6 +96,7 @@ fn motion_fit(class: Option<u32>, pattern: &[&str], motion: &str) -> (bool, usiz
     if let Some(fit) = FIT.with(|m| m.borrow().get(&class)?.get(motion).copied()) {
         return fit;
     }
+    let pattern = dish_pattern(class);
     let pref = pattern
         .iter()
         .position(|m| motion.contains(m))
@@ -880,7 +881,6 @@ fn attach_point(
     o: &str,
     c: Category,
 ) -> Option<TUnitId> {
-    let pattern = dish_pattern(ctx.class);
     let goal_label = tree.slots[tree.goal].node.label.clone();
     let mut best: Option<(TUnitId, (bool, bool, usize, usize))> = None;
     for (pos, &u) in order.iter().enumerate() {
@@ -892,7 +892,7 @@ fn attach_point(
         if !takes {
             continue;
         }
-        let (more, pref) = motion_fit(ctx.class, pattern, &unit.motion);
+        let (more, pref) = motion_fit(ctx.class, &unit.motion);
         if !more {
             continue;
         }

@@ -74,12 +74,11 @@ pub(crate) fn build(p: Parts) -> Plan {
         .collect();
     let mut progress_lines = Vec::new();
     let mut done: HashSet<String> = HashSet::default();
-    let live = tree.live_slots();
     for o in &p.outcomes {
         if o.status != Status::Planned || !done.insert(o.object.clone()) {
             continue;
         }
-        if let Some(line) = progress_line(tree, order, &made, &live, &o.object) {
+        if let Some(line) = progress_line(tree, order, &made, &o.object) {
             progress_lines.push(line);
         }
     }
@@ -134,14 +133,9 @@ fn progress_line(
     tree: &Tree,
     order: &[TUnitId],
     made: &HashSet<SlotId>,
-    live: &[SlotId],
     label: &str,
 ) -> Option<ProgressLine> {
-    let slots: Vec<SlotId> = live
-        .iter()
-        .copied()
-        .filter(|&x| tree.slots[x].node.label == label)
-        .collect();
+    let slots = tree.slots_with_label(label);
     let first_use = |x: SlotId| {
         order
             .iter()
