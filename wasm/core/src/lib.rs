@@ -3,6 +3,7 @@
 //! exposes it to JavaScript.
 
 pub mod bundle;
+mod cones;
 pub mod decode;
 pub mod embedding;
 pub mod error;

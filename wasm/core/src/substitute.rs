@@ -13,6 +13,7 @@
 //!
 //! All of it sits behind the `Similarity` trait, so the planner benefits without changes.
 
+use crate::cones::{dot, Cones};
 use crate::embedding::{is_stop_word, words, EmbeddingTable};
 use crate::error::Result;
 use crate::kb::KnowledgeBase;
@@ -426,8 +427,11 @@ pub struct EmbeddingSimilarity {
     taxonomy: Arc<Taxonomy>,
     aliases: Arc<HashMap<String, String>>,
     options: Options,
-    /// Unit vectors of the taxonomy members, for inferring the category of unlisted names.
-    member_vectors: Vec<(Vec<f32>, usize)>,
+    /// Unit vectors of the taxonomy members, one after another (`table.dims()` each), for inferring the
+    /// category of unlisted names: every label of a knowledge base is compared with every member once.
+    member_vectors: Vec<f32>,
+    /// The category of each member of `member_vectors`, in its order.
+    member_categories: Vec<usize>,
     /// Below this similarity a substitute is flagged as low confidence (calibrated on the dev set).
     confident_from: f32,
     cache: Mutex<HashMap<String, Arc<Profile>>>,
@@ -465,6 +469,18 @@ struct CandidateSet {
     /// Every candidate's `stems`, one after another; candidate i's are `stems[stem_at[i]..stem_at[i + 1]]`.
     stems: Vec<u64>,
     stem_at: Vec<u32>,
+    /// For the rankings of a remembered set (`rank_in_set`), made on the first: the vectors grouped in
+    /// cones, and the candidates by the hashes an exact match is decided on.
+    search: OnceLock<SetSearch>,
+}
+
+/// What lets a ranking skip most of a large candidate set: cones of its vectors (skipped whole when
+/// their bound cannot place), and its candidates by name hash and by stem-key hash (an exact match, which
+/// outranks everything, is then found without a scan).
+struct SetSearch {
+    cones: Cones,
+    by_name: HashMap<u64, Vec<u32>>,
+    by_key: HashMap<u64, Vec<u32>>,
 }
 
 impl CandidateSet {
@@ -506,7 +522,41 @@ impl CandidateSet {
                 }))
                 .collect(),
             profiles,
+            search: OnceLock::new(),
         }
+    }
+
+    fn search(&self) -> &SetSearch {
+        self.search.get_or_init(|| {
+            let mut by_name: HashMap<u64, Vec<u32>> = HashMap::default();
+            let mut by_key: HashMap<u64, Vec<u32>> = HashMap::default();
+            for (i, h) in self.hashes.iter().enumerate() {
+                by_name.entry(h[0]).or_default().push(i as u32);
+                by_key.entry(h[2]).or_default().push(i as u32);
+            }
+            SetSearch {
+                cones: Cones::new(&self.vectors, self.dims, &self.has_vector),
+                by_name,
+                by_key,
+            }
+        })
+    }
+
+    /// Every candidate that `may_match` `q` (and maybe a few more), ascending.
+    fn exact_candidates(&self, q: &Profile) -> Vec<usize> {
+        let search = self.search();
+        let names = [q.name.hash, q.canonical.hash].map(|h| search.by_name.get(&h));
+        let keys = [q.key.hash, q.canonical_key.hash].map(|h| search.by_key.get(&h));
+        let mut out: Vec<usize> = names
+            .into_iter()
+            .chain(keys)
+            .flatten()
+            .flatten()
+            .map(|&i| i as usize)
+            .collect();
+        out.sort_unstable();
+        out.dedup();
+        out
     }
 
     fn len(&self) -> usize {
@@ -606,20 +656,21 @@ impl EmbeddingSimilarity {
         taxonomy: Arc<Taxonomy>,
         aliases: Arc<HashMap<String, String>>,
     ) -> EmbeddingSimilarity {
-        let member_vectors = taxonomy
-            .members
-            .iter()
-            .filter_map(|(name, c)| {
-                let v = table.embed_weighted(name, options.head_weight).vector?;
-                Some((unit(v), *c))
-            })
-            .collect();
+        let mut member_vectors = Vec::new();
+        let mut member_categories = Vec::new();
+        for (name, c) in &taxonomy.members {
+            if let Some(v) = table.embed_weighted(name, options.head_weight).vector {
+                member_vectors.extend(unit(v));
+                member_categories.push(*c);
+            }
+        }
         EmbeddingSimilarity {
             table,
             taxonomy,
             aliases,
             options,
             member_vectors,
+            member_categories,
             confident_from: CONFIDENT_FROM,
             cache: Mutex::new(HashMap::default()),
             ranked: Mutex::new(HashMap::default()),
@@ -771,18 +822,22 @@ impl EmbeddingSimilarity {
     /// The category most of the nearest taxonomy members share (similarity-weighted vote of the
     /// `INFER_NEIGHBOURS` nearest), when the nearest is near enough.
     fn infer_category(&self, v: &[f32]) -> Option<usize> {
-        let mut near: Vec<(f32, usize)> = self
-            .member_vectors
-            .iter()
-            .map(|(m, c)| (dot(m, v), *c))
-            .collect();
         let nearer = |a: &(f32, usize), b: &(f32, usize)| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1));
-        if near.len() > INFER_NEIGHBOURS {
-            // only the nearest few vote: select them rather than sort every member
-            near.select_nth_unstable_by(INFER_NEIGHBOURS - 1, nearer);
+        // the nearest few, nearest first, kept while scanning: most members are not among them, and one
+        // comparison with the last kept rules them out
+        let mut near: Vec<(f32, usize)> = Vec::with_capacity(INFER_NEIGHBOURS + 1);
+        let members = self.member_vectors.chunks_exact(self.table.dims().max(1));
+        for (m, &c) in members.zip(&self.member_categories) {
+            let item = (dot(m, v), c);
+            if near.len() == INFER_NEIGHBOURS
+                && near.last().is_some_and(|w| nearer(&item, w).is_ge())
+            {
+                continue;
+            }
+            let at = near.partition_point(|b| nearer(b, &item).is_le());
+            near.insert(at, item);
             near.truncate(INFER_NEIGHBOURS);
         }
-        near.sort_by(nearer);
         if near.first()?.0 < self.options.infer_category_above {
             return None;
         }
@@ -891,18 +946,21 @@ impl EmbeddingSimilarity {
             .map(|c| self.profile(c.as_ref()))
             .collect();
         let set = CandidateSet::new(profiles, self.table.dims());
-        self.rank_among(query, candidates, &set, top)
+        self.rank_among(query, candidates, &set, top, false)
     }
 
     /// The `top` best of `candidates` (with their profiles in `set`, same order), best first, ties by
     /// label, each label once. Keeps only the best few while scanning: a knowledge base has thousands of
-    /// labels, and a candidate that cannot place is not scored.
-    fn rank_among<S: AsRef<str>>(
+    /// labels, and a candidate that cannot place is not scored. With `by_cones` (a remembered set, ranked
+    /// again and again), exact matches are looked up by hash and the cones of vectors are visited nearest
+    /// first, until the next cone cannot place; the answer is the full scan's.
+    fn rank_among<'c, S: AsRef<str>>(
         &self,
         query: &str,
-        candidates: &[S],
+        candidates: &'c [S],
         set: &CandidateSet,
         top: usize,
+        by_cones: bool,
     ) -> Vec<(String, f32)> {
         let q = self.profile(query);
         let keep_composites = !self.options.filter_composites || q.composite;
@@ -910,9 +968,14 @@ impl EmbeddingSimilarity {
         let better = |a: &(&str, f32), b: &(&str, f32)| {
             b.1.total_cmp(&a.1).then_with(|| a.0.cmp(b.0)) == std::cmp::Ordering::Less
         };
-        let mut best: Vec<(&str, f32)> = Vec::with_capacity(top + 1);
-        for (i, cand) in candidates.iter().enumerate().take(set.len()) {
-            let cand = cand.as_ref();
+        let mut best: Vec<(&'c str, f32)> = Vec::with_capacity(top + 1);
+        let cannot_place = |best: &[(&str, f32)], most: f32| {
+            best.len() == top && best.last().is_some_and(|w| most + max_bonus < w.1)
+        };
+        let consider = |i: usize, best: &mut Vec<(&'c str, f32)>| {
+            let Some(cand) = candidates.get(i).map(AsRef::as_ref) else {
+                return;
+            };
             // the hashes rule most candidates out without reading their profiles
             let exact = set.may_match(self, &q, i) && self.is_exact(&q, &set.profiles[i]);
             if !exact
@@ -920,27 +983,47 @@ impl EmbeddingSimilarity {
                     || (!keep_composites && set.composite[i])
                     || (self.options.filter_composites && set.utensil[i]))
             {
-                continue;
+                return;
             }
             let score = if exact {
                 f32::INFINITY
             } else {
                 let cosine = set.cosine(&q, i);
-                if best.len() == top && best.last().is_some_and(|w| cosine + max_bonus < w.1) {
-                    continue; // cannot reach the last place
+                if cannot_place(best, cosine) {
+                    return;
                 }
                 self.graded(q.traits(), set.traits(i), cosine)
             };
             let item = (cand, score);
             if best.len() == top && best.last().is_none_or(|w| !better(&item, w)) {
-                continue;
+                return;
             }
             if best.iter().any(|b| b.0 == cand) {
-                continue; // the same label listed twice scores the same
+                return; // the same label listed twice scores the same
             }
             let at = best.partition_point(|b| better(b, &item));
             best.insert(at, item);
             best.truncate(top);
+        };
+        if by_cones {
+            for i in set.exact_candidates(&q) {
+                consider(i, &mut best);
+            }
+            if q.is_known() {
+                let cones = &set.search().cones;
+                for (most, k) in cones.bounds(q.vector.as_deref()) {
+                    if cannot_place(&best, most) {
+                        break; // the cones come nearest first: no later one can place either
+                    }
+                    for &i in cones.members(k) {
+                        consider(i as usize, &mut best);
+                    }
+                }
+            }
+        } else {
+            for i in 0..set.len() {
+                consider(i, &mut best);
+            }
         }
         best.into_iter()
             .map(|(l, s)| (l.to_string(), squash(s)))
@@ -1031,27 +1114,6 @@ fn cosine_of(q: &Profile, c: &Profile) -> f32 {
     }
 }
 
-/// Dot product in eight fixed lanes (every score adds it up the same way, so equal pairs score equal):
-/// lanes the compiler can keep in vector registers, where one running sum would be a chain of
-/// dependent additions.
-fn dot(a: &[f32], b: &[f32]) -> f32 {
-    const LANES: usize = 8;
-    let mut acc = [0f32; LANES];
-    let (ca, cb) = (a.chunks_exact(LANES), b.chunks_exact(LANES));
-    let tail: f32 = ca
-        .remainder()
-        .iter()
-        .zip(cb.remainder())
-        .map(|(x, y)| x * y)
-        .sum();
-    for (x, y) in ca.zip(cb) {
-        for i in 0..LANES {
-            acc[i] += x[i] * y[i];
-        }
-    }
-    acc.iter().sum::<f32>() + tail
-}
-
 fn unit(mut v: Vec<f32>) -> Vec<f32> {
     let n = crate::embedding::norm(&v);
     if n > 0.0 {
@@ -1095,7 +1157,7 @@ impl Similarity for EmbeddingSimilarity {
             }
         }
         let profiles = self.set_profiles(set, candidates);
-        let r = self.rank_among(query, candidates, &profiles, top);
+        let r = self.rank_among(query, candidates, &profiles, top, true);
         if let Ok(mut cache) = self.ranked.lock() {
             if cache.len() >= RANK_CACHE_LIMIT {
                 cache.clear();

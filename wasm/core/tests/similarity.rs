@@ -319,4 +319,11 @@ fn ranking_in_a_remembered_set_is_the_plain_ranking() {
             assert_eq!(all, plain, "{name}, top {top}");
         }
     }
+    // the remembered set visits its vectors cone by cone, nearest first: every label as a query (an
+    // exact match, then its neighbours) ranks as a scan of every label does
+    for (i, name) in set.iter().enumerate().step_by(3) {
+        let top = 1 + i % 7;
+        let plain = sim().rank(name, &labels(), top);
+        assert_eq!(sim().rank_in_set(name, 11, &set, top), plain, "{name}");
+    }
 }

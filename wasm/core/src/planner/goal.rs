@@ -1,7 +1,7 @@
 //! Algorithm 1: the reference goal node, by a graded similarity of ingredient sets.
 
 use super::index::PlannerIndex;
-use super::score::Scorer;
+use super::score::{GoalFit, Scorer};
 use crate::kb::{Goal, KnowledgeBase};
 use crate::taxonomy::{dish_class_name, is_utensil};
 use std::cmp::Ordering;
@@ -14,9 +14,8 @@ pub(crate) struct Chosen<'a> {
 
 /// The score of a goal for a query: how much of the query the goal covers (weight 2) and how much of the
 /// goal the query uses (weight 1, fewer ingredients to prune), as a weighted harmonic mean.
-fn score(scorer: &Scorer, goal: &[u32]) -> f32 {
-    let recall = scorer.query_coverage(goal);
-    let precision = scorer.labels_coverage(goal);
+fn score(fit: &GoalFit) -> f32 {
+    let (recall, precision) = (fit.recall, fit.precision);
     if recall + precision <= 0.0 {
         return 0.0;
     }
@@ -63,10 +62,8 @@ pub(crate) fn select<'a>(
     let mut best: Option<(Chosen<'a>, usize, usize)> = None;
     for (i, g) in candidates {
         let ings = index.goal_ingredients(i);
-        let s = score(scorer, ings);
-        let exact = (0..scorer.query_len())
-            .filter(|&q| scorer.query_id(q).is_some_and(|id| ings.contains(&id)))
-            .count();
+        let fit = scorer.goal_fit(ings);
+        let (s, exact) = (score(&fit), fit.exact);
         let better = match &best {
             None => true,
             Some((b, bexact, bn)) => {

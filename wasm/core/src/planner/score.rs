@@ -8,6 +8,16 @@ use crate::similarity::{Prepared, Similarity};
 use rustc_hash::FxHashMap as HashMap;
 use std::cell::RefCell;
 
+/// The fit of a goal's ingredient set with the query's.
+pub(crate) struct GoalFit {
+    /// Mean over the query of the best similarity to any goal ingredient (exact matches count 1).
+    pub recall: f32,
+    /// Mean over the goal's ingredients of the best similarity to any query name (exact matches count 1).
+    pub precision: f32,
+    /// Query names the goal has exactly.
+    pub exact: usize,
+}
+
 pub(crate) struct Scorer<'a> {
     sim: &'a dyn Similarity,
     index: &'a PlannerIndex,
@@ -16,9 +26,9 @@ pub(crate) struct Scorer<'a> {
     prepared: Vec<Box<dyn Prepared + 'a>>,
     /// Label id of each query name, when the knowledge base has it.
     query_ids: Vec<Option<u32>>,
-    /// Per query name and label id: (sim(name, label), sim(label, name)), NaN until asked. Both
+    /// (sim(name, label), sim(label, name)) per query name and label, computed on first ask. Both
     /// directions come from one comparison, and goal selection asks both of every pair.
-    rows: RefCell<Vec<Vec<(f32, f32)>>>,
+    pairs: RefCell<PairTable>,
     units: RefCell<HashMap<UnitId, f32>>,
 }
 
@@ -33,7 +43,7 @@ impl<'a> Scorer<'a> {
                 .iter()
                 .map(|q| sim.prepare(q, index.label_set, index.label_names()))
                 .collect(),
-            rows: RefCell::new(vec![Vec::new(); query.len()]),
+            pairs: RefCell::new(PairTable::default()),
             // a plan scores a few hundred units: sized so that the table does not grow step by step
             units: RefCell::new(HashMap::with_capacity_and_hasher(512, Default::default())),
         }
@@ -41,24 +51,23 @@ impl<'a> Scorer<'a> {
 
     /// sim(query name `q`, label).
     fn similarity(&self, q: usize, label: u32) -> f32 {
-        self.remembered(q, label).0
+        self.remembered(&mut self.pairs.borrow_mut(), q, label).0
     }
 
-    /// sim(label, query name `q`).
-    fn similarity_to(&self, label: u32, q: usize) -> f32 {
-        self.remembered(q, label).1
+    /// The pair of query name `q` and `label` in `pairs`, computed on first ask.
+    fn remembered(&self, pairs: &mut PairTable, q: usize, label: u32) -> (f32, f32) {
+        let slot = self.slot(pairs, label);
+        self.in_slot(&mut pairs.cells[slot..], q, label)
     }
 
-    fn remembered(&self, q: usize, label: u32) -> (f32, f32) {
-        self.in_row(&mut self.rows.borrow_mut()[q], q, label)
+    /// The first cell of `label`'s slot in `pairs`.
+    fn slot(&self, pairs: &mut PairTable, label: u32) -> usize {
+        pairs.slot(label, self.index.label_count(), self.query.len())
     }
 
-    /// The remembered pair of query name `q` (whose row is `row`) and `label`, computed on first ask.
-    fn in_row(&self, row: &mut Vec<(f32, f32)>, q: usize, label: u32) -> (f32, f32) {
-        if row.is_empty() {
-            row.resize(self.index.label_count(), (f32::NAN, f32::NAN));
-        }
-        let cell = &mut row[label as usize];
+    /// The pair of query name `q` and `label`, whose slot starts `cells`, computed on first ask.
+    fn in_slot(&self, cells: &mut [(f32, f32)], q: usize, label: u32) -> (f32, f32) {
+        let cell = &mut cells[q];
         if cell.0.is_nan() {
             *cell = self.prepared[q].both(label as usize);
         }
@@ -77,53 +86,53 @@ impl<'a> Scorer<'a> {
         }
     }
 
-    /// Label id of query name `q`, when the knowledge base has the name.
-    pub fn query_id(&self, q: usize) -> Option<u32> {
-        self.query_ids[q]
-    }
-
-    pub fn query_len(&self) -> usize {
-        self.query.len()
-    }
-
-    /// Mean over the query of the best similarity to any of `labels` (exact matches count 1).
-    pub fn query_coverage(&self, labels: &[u32]) -> f32 {
-        if self.query.is_empty() {
-            return 0.0;
+    /// How well a goal's ingredient set (`labels`) and the query's fit each other, in one pass over their
+    /// pairs (goal selection asks it of every goal of a dish class).
+    pub fn goal_fit(&self, labels: &[u32]) -> GoalFit {
+        let mut pairs = self.pairs.borrow_mut();
+        let q_len = self.query.len();
+        // per query name, the best similarity to any goal ingredient so far
+        let mut best_to = vec![0.0f32; q_len];
+        let mut precision = 0.0f32;
+        for &l in labels {
+            let mut best_from = 0.0f32;
+            let slot = self.slot(&mut pairs, l);
+            let cells = &mut pairs.cells[slot..slot + q_len];
+            for (q, to) in best_to.iter_mut().enumerate() {
+                let (there, back) = self.in_slot(cells, q, l);
+                *to = to.max(there);
+                best_from = best_from.max(back);
+            }
+            // an exact match counts 1
+            precision += if self.query_ids.contains(&Some(l)) {
+                1.0
+            } else {
+                best_from
+            };
         }
-        let total: f32 = (0..self.query.len())
-            .map(|q| {
-                if self.query_ids[q].is_some_and(|id| labels.contains(&id)) {
-                    1.0
-                } else {
-                    labels
-                        .iter()
-                        .map(|&l| self.similarity(q, l))
-                        .fold(0.0f32, f32::max)
-                }
-            })
-            .sum();
-        total / self.query.len() as f32
-    }
-
-    /// Mean over `labels` of the best similarity to any query name (exact matches count 1).
-    pub fn labels_coverage(&self, labels: &[u32]) -> f32 {
-        if labels.is_empty() {
-            return 0.0;
+        let mut recall = 0.0f32;
+        let mut exact = 0;
+        for (id, to) in self.query_ids.iter().zip(&best_to) {
+            if id.is_some_and(|id| labels.contains(&id)) {
+                exact += 1;
+                recall += 1.0;
+            } else {
+                recall += to;
+            }
         }
-        let total: f32 = labels
-            .iter()
-            .map(|&l| {
-                if self.query_ids.contains(&Some(l)) {
-                    1.0
-                } else {
-                    (0..self.query.len())
-                        .map(|q| self.similarity_to(l, q))
-                        .fold(0.0f32, f32::max)
-                }
-            })
-            .sum();
-        total / labels.len() as f32
+        GoalFit {
+            recall: if q_len == 0 {
+                0.0
+            } else {
+                recall / q_len as f32
+            },
+            precision: if labels.is_empty() {
+                0.0
+            } else {
+                precision / labels.len() as f32
+            },
+            exact,
+        }
     }
 
     /// g(u) = Σ_q max_a sim(q, a) over the ingredients a the unit handles (exact matches count 1).
@@ -133,22 +142,50 @@ impl<'a> Scorer<'a> {
         }
         let have = self.index.unit_ingredients(u);
         // one borrow for the whole unit: retrieval asks this of every unit making a node
-        let mut rows = self.rows.borrow_mut();
-        let g = rows
-            .iter_mut()
-            .enumerate()
-            .map(|(q, row)| {
+        let mut pairs = self.pairs.borrow_mut();
+        let g = (0..self.query.len())
+            .map(|q| {
                 if self.query_ids[q].is_some_and(|id| have.contains(&id)) {
                     1.0
                 } else {
                     have.iter()
-                        .map(|&a| self.in_row(row, q, a).0)
+                        .map(|&a| self.remembered(&mut pairs, q, a).0)
                         .fold(0.0f32, f32::max)
                 }
             })
             .sum();
-        drop(rows);
+        drop(pairs);
         self.units.borrow_mut().insert(u, g);
         g
+    }
+}
+
+/// The remembered pairs of a plan: each label asked about gets a slot of one cell per query name, side
+/// by side (goal selection reads all of a label's cells at once). A row per query name over every label
+/// would be written in full on every plan and read at random, which at 100 times FOON-111 is most of
+/// goal selection's time.
+#[derive(Default)]
+struct PairTable {
+    /// Per label id, the index in `cells` of its slot's first cell; `NO_SLOT` until asked.
+    slot_of: Vec<u32>,
+    /// (sim(name, label), sim(label, name)), NaN until computed.
+    cells: Vec<(f32, f32)>,
+}
+
+const NO_SLOT: u32 = u32::MAX;
+
+impl PairTable {
+    /// The first cell of `label`'s slot, made on first ask (`labels` labels, `width` query names).
+    fn slot(&mut self, label: u32, labels: usize, width: usize) -> usize {
+        if self.slot_of.is_empty() {
+            self.slot_of = vec![NO_SLOT; labels];
+        }
+        let slot = &mut self.slot_of[label as usize];
+        if *slot == NO_SLOT {
+            *slot = self.cells.len() as u32;
+            self.cells
+                .resize(self.cells.len() + width, (f32::NAN, f32::NAN));
+        }
+        *slot as usize
     }
 }
