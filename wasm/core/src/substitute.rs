@@ -829,8 +829,12 @@ impl EmbeddingSimilarity {
         let members = self.member_vectors.chunks_exact(self.table.dims().max(1));
         for (m, &c) in members.zip(&self.member_categories) {
             let item = (dot(m, v), c);
-            if near.len() == INFER_NEIGHBOURS
-                && near.last().is_some_and(|w| nearer(&item, w).is_ge())
+            let full = near.len() == INFER_NEIGHBOURS;
+            // strictly below the last kept cannot enter: one float comparison for most members
+            if full
+                && near
+                    .last()
+                    .is_some_and(|w| item.0 < w.0 || nearer(&item, w).is_ge())
             {
                 continue;
             }

@@ -29,6 +29,8 @@ pub(crate) struct Scorer<'a> {
     /// (sim(name, label), sim(label, name)) per query name and label, computed on first ask. Both
     /// directions come from one comparison, and goal selection asks both of every pair.
     pairs: RefCell<PairTable>,
+    /// `goal_fit`'s per-query-name bests, kept between goals (it is asked of every goal of a class).
+    best_to: RefCell<Vec<f32>>,
     units: RefCell<HashMap<UnitId, f32>>,
 }
 
@@ -44,6 +46,7 @@ impl<'a> Scorer<'a> {
                 .map(|q| sim.prepare(q, index.label_set, index.label_names()))
                 .collect(),
             pairs: RefCell::new(PairTable::default()),
+            best_to: RefCell::new(Vec::with_capacity(query.len())),
             // a plan scores a few hundred units: sized so that the table does not grow step by step
             units: RefCell::new(HashMap::with_capacity_and_hasher(512, Default::default())),
         }
@@ -92,7 +95,9 @@ impl<'a> Scorer<'a> {
         let mut pairs = self.pairs.borrow_mut();
         let q_len = self.query.len();
         // per query name, the best similarity to any goal ingredient so far
-        let mut best_to = vec![0.0f32; q_len];
+        let mut best_to = self.best_to.borrow_mut();
+        best_to.clear();
+        best_to.resize(q_len, 0.0);
         let mut precision = 0.0f32;
         for &l in labels {
             let mut best_from = 0.0f32;
@@ -112,7 +117,7 @@ impl<'a> Scorer<'a> {
         }
         let mut recall = 0.0f32;
         let mut exact = 0;
-        for (id, to) in self.query_ids.iter().zip(&best_to) {
+        for (id, to) in self.query_ids.iter().zip(best_to.iter()) {
             if id.is_some_and(|id| labels.contains(&id)) {
                 exact += 1;
                 recall += 1.0;
