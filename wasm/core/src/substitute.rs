@@ -823,8 +823,7 @@ impl EmbeddingSimilarity {
     /// `INFER_NEIGHBOURS` nearest), when the nearest is near enough.
     fn infer_category(&self, v: &[f32]) -> Option<usize> {
         let nearer = |a: &(f32, usize), b: &(f32, usize)| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1));
-        // the nearest few, nearest first, kept while scanning: most members are not among them, and one
-        // comparison with the last kept rules them out
+        // the nearest few, nearest first, kept while scanning: most members are not among them
         let mut near: Vec<(f32, usize)> = Vec::with_capacity(INFER_NEIGHBOURS + 1);
         let members = self.member_vectors.chunks_exact(self.table.dims().max(1));
         for (m, &c) in members.zip(&self.member_categories) {
