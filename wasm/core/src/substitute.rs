@@ -1131,7 +1131,18 @@ fn squash(score: f32) -> f32 {
         return 1.0;
     }
     let v = 0.99 / (1.0 + (-(score - 0.6) * 5.0).exp());
-    (v * 1000.0).round() / 1000.0
+    round_half_up(v * 1000.0) / 1000.0
+}
+
+/// `x.round()` for `x >= 0` (halves away from zero), from `trunc`: `round` is a libm call in WASM,
+/// `trunc` one instruction, and a goal selection squashes tens of thousands of scores.
+fn round_half_up(x: f32) -> f32 {
+    let whole = x.trunc();
+    if x - whole >= 0.5 {
+        whole + 1.0
+    } else {
+        whole
+    }
 }
 
 impl Similarity for EmbeddingSimilarity {
@@ -1266,6 +1277,25 @@ mod tests {
             aliases().get("cool whip").map(String::as_str),
             Some("whipped topping")
         );
+    }
+
+    #[test]
+    fn rounding_half_up_is_rounding_for_every_squashed_value() {
+        // every f32 from 0 to 1000 at the spacing of the values near 1000, and every f32 around each
+        // half-way point, where the two could differ
+        let mut x = 0.0f32;
+        while x <= 1000.0 {
+            assert_eq!(round_half_up(x).to_bits(), x.round().to_bits(), "{x}");
+            x += 1.0 / 4096.0;
+        }
+        for k in 0..1000 {
+            let half = k as f32 + 0.5;
+            let mut y = f32::from_bits(half.to_bits() - 64);
+            while y <= f32::from_bits(half.to_bits() + 64) {
+                assert_eq!(round_half_up(y).to_bits(), y.round().to_bits(), "{y}");
+                y = f32::from_bits(y.to_bits() + 1);
+            }
+        }
     }
 
     #[test]

@@ -105,8 +105,8 @@ impl<'a> Scorer<'a> {
             let cells = &mut pairs.cells[slot..slot + q_len];
             for (q, to) in best_to.iter_mut().enumerate() {
                 let (there, back) = self.in_slot(cells, q, l);
-                *to = to.max(there);
-                best_from = best_from.max(back);
+                *to = larger(*to, there);
+                best_from = larger(best_from, back);
             }
             // an exact match counts 1
             precision += if self.query_ids.contains(&Some(l)) {
@@ -155,7 +155,7 @@ impl<'a> Scorer<'a> {
                 } else {
                     have.iter()
                         .map(|&a| self.remembered(&mut pairs, q, a).0)
-                        .fold(0.0f32, f32::max)
+                        .fold(0.0f32, larger)
                 }
             })
             .sum();
@@ -192,5 +192,14 @@ impl PairTable {
                 .resize(self.cells.len() + width, (f32::NAN, f32::NAN));
         }
         *slot as usize
+    }
+}
+
+/// The larger of two similarities (never NaN): `f32::max` is a libm call in WASM, for its NaN rule.
+fn larger(a: f32, b: f32) -> f32 {
+    if b > a {
+        b
+    } else {
+        a
     }
 }
