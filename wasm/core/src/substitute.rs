@@ -483,6 +483,24 @@ struct SetSearch {
     by_key: HashMap<u64, Vec<u32>>,
 }
 
+impl SetSearch {
+    /// Every candidate that `may_match` `q` (and maybe a few more), ascending.
+    fn exact_candidates(&self, q: &Profile) -> Vec<usize> {
+        let names = [q.name.hash, q.canonical.hash].map(|h| self.by_name.get(&h));
+        let keys = [q.key.hash, q.canonical_key.hash].map(|h| self.by_key.get(&h));
+        let mut out: Vec<usize> = names
+            .into_iter()
+            .chain(keys)
+            .flatten()
+            .flatten()
+            .map(|&i| i as usize)
+            .collect();
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+}
+
 impl CandidateSet {
     fn new(profiles: Vec<Arc<Profile>>, dims: usize) -> CandidateSet {
         let mut vectors = vec![0.0; profiles.len() * dims];
@@ -540,23 +558,6 @@ impl CandidateSet {
                 by_key,
             }
         })
-    }
-
-    /// Every candidate that `may_match` `q` (and maybe a few more), ascending.
-    fn exact_candidates(&self, q: &Profile) -> Vec<usize> {
-        let search = self.search();
-        let names = [q.name.hash, q.canonical.hash].map(|h| search.by_name.get(&h));
-        let keys = [q.key.hash, q.canonical_key.hash].map(|h| search.by_key.get(&h));
-        let mut out: Vec<usize> = names
-            .into_iter()
-            .chain(keys)
-            .flatten()
-            .flatten()
-            .map(|&i| i as usize)
-            .collect();
-        out.sort_unstable();
-        out.dedup();
-        out
     }
 
     fn len(&self) -> usize {
@@ -949,21 +950,21 @@ impl EmbeddingSimilarity {
             .map(|c| self.profile(c.as_ref()))
             .collect();
         let set = CandidateSet::new(profiles, self.table.dims());
-        self.rank_among(query, candidates, &set, top, false)
+        self.rank_among(query, candidates, &set, top, None)
     }
 
     /// The `top` best of `candidates` (with their profiles in `set`, same order), best first, ties by
     /// label, each label once. Keeps only the best few while scanning: a knowledge base has thousands of
-    /// labels, and a candidate that cannot place is not scored. With `by_cones` (a remembered set, ranked
-    /// again and again), exact matches are looked up by hash and the cones of vectors are visited nearest
-    /// first, until the next cone cannot place; the answer is the full scan's.
+    /// labels, and a candidate that cannot place is not scored. With `search` (of a remembered set,
+    /// ranked again and again), exact matches are looked up by hash and the cones of vectors are visited
+    /// nearest first, until the next cone cannot place; the answer is the full scan's.
     fn rank_among<'c, S: AsRef<str>>(
         &self,
         query: &str,
         candidates: &'c [S],
         set: &CandidateSet,
         top: usize,
-        by_cones: bool,
+        search: Option<&SetSearch>,
     ) -> Vec<(String, f32)> {
         let q = self.profile(query);
         let keep_composites = !self.options.filter_composites || q.composite;
@@ -1008,12 +1009,12 @@ impl EmbeddingSimilarity {
             best.insert(at, item);
             best.truncate(top);
         };
-        if by_cones {
-            for i in set.exact_candidates(&q) {
+        if let Some(search) = search {
+            for i in search.exact_candidates(&q) {
                 consider(i, &mut best);
             }
             if q.is_known() {
-                let cones = &set.search().cones;
+                let cones = &search.cones;
                 for (most, k) in cones.bounds(q.vector.as_deref()) {
                     if cannot_place(&best, most) {
                         break; // the cones come nearest first: no later one can place either
@@ -1171,7 +1172,7 @@ impl Similarity for EmbeddingSimilarity {
             }
         }
         let profiles = self.set_profiles(set, candidates);
-        let r = self.rank_among(query, candidates, &profiles, top, true);
+        let r = self.rank_among(query, candidates, &profiles, top, Some(profiles.search()));
         if let Ok(mut cache) = self.ranked.lock() {
             if cache.len() >= RANK_CACHE_LIMIT {
                 cache.clear();
@@ -1281,8 +1282,8 @@ mod tests {
 
     #[test]
     fn rounding_half_up_is_rounding_for_every_squashed_value() {
-        // every f32 from 0 to 1000 at the spacing of the values near 1000, and every f32 around each
-        // half-way point, where the two could differ
+        // 0 to 1000 in steps of 1/4096, and every f32 around each half-way point, where the two could
+        // differ
         let mut x = 0.0f32;
         while x <= 1000.0 {
             assert_eq!(round_half_up(x).to_bits(), x.round().to_bits(), "{x}");

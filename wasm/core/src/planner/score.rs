@@ -45,7 +45,7 @@ impl<'a> Scorer<'a> {
                 .iter()
                 .map(|q| sim.prepare(q, index.label_set, index.label_names()))
                 .collect(),
-            pairs: RefCell::new(PairTable::default()),
+            pairs: RefCell::new(PairTable::new(index.label_count(), query.len())),
             best_to: RefCell::new(Vec::with_capacity(query.len())),
             // a plan scores a few hundred units: sized so that the table does not grow step by step
             units: RefCell::new(HashMap::with_capacity_and_hasher(512, Default::default())),
@@ -59,16 +59,10 @@ impl<'a> Scorer<'a> {
 
     /// The pair of query name `q` and `label` in `pairs`, computed on first ask.
     fn remembered(&self, pairs: &mut PairTable, q: usize, label: u32) -> (f32, f32) {
-        let slot = self.slot(pairs, label);
-        self.in_slot(&mut pairs.cells[slot..], q, label)
+        self.in_slot(pairs.slot(label), q, label)
     }
 
-    /// The first cell of `label`'s slot in `pairs`.
-    fn slot(&self, pairs: &mut PairTable, label: u32) -> usize {
-        pairs.slot(label, self.index.label_count(), self.query.len())
-    }
-
-    /// The pair of query name `q` and `label`, whose slot starts `cells`, computed on first ask.
+    /// The pair of query name `q` and `label`, whose slot is `cells`, computed on first ask.
     fn in_slot(&self, cells: &mut [(f32, f32)], q: usize, label: u32) -> (f32, f32) {
         let cell = &mut cells[q];
         if cell.0.is_nan() {
@@ -89,26 +83,43 @@ impl<'a> Scorer<'a> {
         }
     }
 
-    /// How well a goal's ingredient set (`labels`) and the query's fit each other, in one pass over their
-    /// pairs (goal selection asks it of every goal of a dish class).
+    /// How well a goal's ingredient set (`labels`) and the query's fit each other (goal selection asks
+    /// it of every goal of a dish class).
     pub fn goal_fit(&self, labels: &[u32]) -> GoalFit {
+        let (recall, precision, exact) = self.coverage(labels);
+        GoalFit {
+            recall: if self.query.is_empty() {
+                0.0
+            } else {
+                recall / self.query.len() as f32
+            },
+            precision: if labels.is_empty() {
+                0.0
+            } else {
+                precision / labels.len() as f32
+            },
+            exact,
+        }
+    }
+
+    /// In one pass over the pairs of the query and `labels`: Σ over query names of the best similarity
+    /// to any of `labels`, Σ over `labels` of the best similarity to any query name (exact matches count
+    /// 1 in both), and how many query names `labels` has exactly.
+    fn coverage(&self, labels: &[u32]) -> (f32, f32, usize) {
         let mut pairs = self.pairs.borrow_mut();
-        let q_len = self.query.len();
-        // per query name, the best similarity to any goal ingredient so far
+        // per query name, the best similarity to any of `labels` so far
         let mut best_to = self.best_to.borrow_mut();
         best_to.clear();
-        best_to.resize(q_len, 0.0);
+        best_to.resize(self.query.len(), 0.0);
         let mut precision = 0.0f32;
         for &l in labels {
             let mut best_from = 0.0f32;
-            let slot = self.slot(&mut pairs, l);
-            let cells = &mut pairs.cells[slot..slot + q_len];
+            let cells = pairs.slot(l);
             for (q, to) in best_to.iter_mut().enumerate() {
                 let (there, back) = self.in_slot(cells, q, l);
                 *to = larger(*to, there);
                 best_from = larger(best_from, back);
             }
-            // an exact match counts 1
             precision += if self.query_ids.contains(&Some(l)) {
                 1.0
             } else {
@@ -125,19 +136,7 @@ impl<'a> Scorer<'a> {
                 recall += to;
             }
         }
-        GoalFit {
-            recall: if q_len == 0 {
-                0.0
-            } else {
-                recall / q_len as f32
-            },
-            precision: if labels.is_empty() {
-                0.0
-            } else {
-                precision / labels.len() as f32
-            },
-            exact,
-        }
+        (recall, precision, exact)
     }
 
     /// g(u) = Σ_q max_a sim(q, a) over the ingredients a the unit handles (exact matches count 1).
@@ -145,21 +144,7 @@ impl<'a> Scorer<'a> {
         if let Some(&g) = self.units.borrow().get(&u) {
             return g;
         }
-        let have = self.index.unit_ingredients(u);
-        // one borrow for the whole unit: retrieval asks this of every unit making a node
-        let mut pairs = self.pairs.borrow_mut();
-        let g = (0..self.query.len())
-            .map(|q| {
-                if self.query_ids[q].is_some_and(|id| have.contains(&id)) {
-                    1.0
-                } else {
-                    have.iter()
-                        .map(|&a| self.remembered(&mut pairs, q, a).0)
-                        .fold(0.0f32, larger)
-                }
-            })
-            .sum();
-        drop(pairs);
+        let g = self.coverage(self.index.unit_ingredients(u)).0;
         self.units.borrow_mut().insert(u, g);
         g
     }
@@ -169,8 +154,9 @@ impl<'a> Scorer<'a> {
 /// by side (goal selection reads all of a label's cells at once). A row per query name over every label
 /// would be written in full on every plan and read at random, which at 100 times FOON-111 is most of
 /// goal selection's time.
-#[derive(Default)]
 struct PairTable {
+    /// Query names: the cells of a slot.
+    width: usize,
     /// Per label id, the index in `cells` of its slot's first cell; `NO_SLOT` until asked.
     slot_of: Vec<u32>,
     /// (sim(name, label), sim(label, name)), NaN until computed.
@@ -180,18 +166,24 @@ struct PairTable {
 const NO_SLOT: u32 = u32::MAX;
 
 impl PairTable {
-    /// The first cell of `label`'s slot, made on first ask (`labels` labels, `width` query names).
-    fn slot(&mut self, label: u32, labels: usize, width: usize) -> usize {
-        if self.slot_of.is_empty() {
-            self.slot_of = vec![NO_SLOT; labels];
+    fn new(labels: usize, width: usize) -> PairTable {
+        PairTable {
+            width,
+            slot_of: vec![NO_SLOT; labels],
+            cells: Vec::new(),
         }
+    }
+
+    /// `label`'s slot, made on first ask.
+    fn slot(&mut self, label: u32) -> &mut [(f32, f32)] {
         let slot = &mut self.slot_of[label as usize];
         if *slot == NO_SLOT {
             *slot = self.cells.len() as u32;
             self.cells
-                .resize(self.cells.len() + width, (f32::NAN, f32::NAN));
+                .resize(self.cells.len() + self.width, (f32::NAN, f32::NAN));
         }
-        *slot as usize
+        let at = *slot as usize;
+        &mut self.cells[at..at + self.width]
     }
 }
 
