@@ -2,11 +2,11 @@
 //! branches for ingredients from elsewhere in FOON, and pruning of what was not asked for.
 
 use super::index::PlannerIndex;
-use super::retrieve::retrieve;
+use super::retrieve::{retrieve, retrieve_within};
 use super::states::{category, is_food_state, Category};
 use super::tree::{dedup_slots, edit_contents, map_contents, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
-use crate::model::{NodeId, ObjectNode, State};
+use crate::model::{NodeId, ObjectNode, State, UnitId};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
 use crate::similarity::Similarity;
 use crate::taxonomy::{dish_class_name, is_utensil};
@@ -861,14 +861,12 @@ fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
     out
 }
 
-/// Whether every unit of a retrieved branch handles `eq` alone (with utensils): a branch that mixes other
-/// ingredients would bring another recipe's dish along.
-fn private_branch(kb: &KnowledgeBase, r: &super::retrieve::Retrieved, eq: &str) -> bool {
-    r.units.iter().all(|&u| {
-        kb.units[u].input_nodes().all(|n| {
-            let node = &kb.nodes[n];
-            (is_utensil(&node.label) || node.label == eq) && node.contents().all(|i| i == eq)
-        })
+/// Whether a unit handles `eq` alone (with utensils): a branch with a unit that mixes other ingredients
+/// would bring another recipe's dish along.
+fn private_unit(kb: &KnowledgeBase, u: UnitId, eq: &str) -> bool {
+    kb.units[u].input_nodes().all(|n| {
+        let node = &kb.nodes[n];
+        (is_utensil(&node.label) || node.label == eq) && node.contents().all(|i| i == eq)
     })
 }
 
@@ -943,8 +941,8 @@ fn add_branch<'kb>(
             picked = Some((n, in_state, Default::default()));
             break;
         }
-        let r = retrieve(ctx.kb, ctx.index, ctx.scorer, n, None, &taken);
-        if private_branch(ctx.kb, &r, eq) {
+        let private = |u| private_unit(ctx.kb, u, eq);
+        if let Some(r) = retrieve_within(ctx.kb, ctx.index, ctx.scorer, n, None, &taken, private) {
             picked = Some((n, in_state, r));
             break;
         }

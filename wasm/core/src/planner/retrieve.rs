@@ -61,7 +61,6 @@ fn depends_on(
 /// Retrieves the tree making `root`. `root` is expanded even when it is a kitchen item (a goal, or a
 /// leaf whose making is asked for); every other kitchen node stops the search. `prefer` is a subgraph id
 /// whose units win ties (the reference recipe), and `taken` lists units already in the caller's tree.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn retrieve(
     kb: &KnowledgeBase,
     index: &PlannerIndex,
@@ -70,6 +69,22 @@ pub(crate) fn retrieve(
     prefer: Option<u32>,
     taken: &HashSet<UnitId>,
 ) -> Retrieved {
+    retrieve_within(kb, index, scorer, root, prefer, taken, |_| true).unwrap_or_default()
+}
+
+/// `retrieve`, abandoned (`None`) as soon as it chooses a unit that `allowed` rejects. Every chosen unit
+/// is in the result, and a choice never depends on earlier ones being allowed, so `None` means exactly
+/// that the whole retrieval would hold a rejected unit; a caller looking for a tree of allowed units
+/// learns it without finishing the search.
+pub(crate) fn retrieve_within(
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    scorer: &Scorer,
+    root: NodeId,
+    prefer: Option<u32>,
+    taken: &HashSet<UnitId>,
+    allowed: impl Fn(UnitId) -> bool,
+) -> Option<Retrieved> {
     // sized for a typical recipe's tree, so that the tables do not grow step by step
     let mut chosen: HashMap<NodeId, UnitId> =
         HashMap::with_capacity_and_hasher(64, Default::default());
@@ -85,6 +100,8 @@ pub(crate) fn retrieve(
     let mut queue: VecDeque<(NodeId, Option<UnitId>)> = VecDeque::with_capacity(64);
     queue.push_back((root, None));
     visited.insert(root);
+    // a chosen unit's inputs, sorted (one buffer for the whole search)
+    let mut inputs: Vec<NodeId> = Vec::with_capacity(8);
     while let Some((node, parent)) = queue.pop_front() {
         if node != root && kb.kitchen.get(node).copied().unwrap_or(true) {
             continue;
@@ -154,22 +171,26 @@ pub(crate) fn retrieve(
             // another recipe's way of making it would bring that recipe along
             continue;
         }
+        if !allowed(u) {
+            return None;
+        }
         chosen.insert(node, u);
         in_tree.insert(u);
-        let mut inputs: Vec<NodeId> = kb.units[u].input_nodes().collect();
+        inputs.clear();
+        inputs.extend(kb.units[u].input_nodes());
         inputs.sort_unstable();
-        for n in inputs {
+        for &n in &inputs {
             if !visited.put(n) {
                 queue.push_back((n, Some(u)));
             }
         }
     }
-    let units = execution_order(kb, &chosen, root);
-    Retrieved {
+    let units = execution_order(kb, &chosen, root, &mut inputs);
+    Some(Retrieved {
         units,
         chosen,
         blocked,
-    }
+    })
 }
 
 /// Post-order of the chosen units from `root`: each unit after the units making its inputs.
@@ -177,6 +198,7 @@ fn execution_order(
     kb: &KnowledgeBase,
     chosen: &HashMap<NodeId, UnitId>,
     root: NodeId,
+    inputs: &mut Vec<NodeId>,
 ) -> Vec<UnitId> {
     let mut order = Vec::with_capacity(chosen.len());
     let mut done = FixedBitSet::with_capacity(kb.units.len());
@@ -197,9 +219,10 @@ fn execution_order(
             continue;
         }
         stack.push((node, true));
-        let mut inputs: Vec<NodeId> = kb.units[u].input_nodes().collect();
+        inputs.clear();
+        inputs.extend(kb.units[u].input_nodes());
         inputs.sort_unstable();
-        for n in inputs.into_iter().rev() {
+        for &n in inputs.iter().rev() {
             if !seen_nodes.contains(n) {
                 stack.push((n, false));
             }
