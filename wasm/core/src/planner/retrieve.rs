@@ -58,6 +58,42 @@ fn depends_on(
     false
 }
 
+/// A unit making the node being expanded, as the search weighs it.
+struct Candidate {
+    unit: UnitId,
+    /// Already in the tree (or the caller's).
+    reused: bool,
+    /// Of the recipe of the unit that needs the node (of the preferred subgraph at the root).
+    same_recipe: bool,
+    /// g(u), asked only when the preferences before it tie: most nodes have a single producer, and g
+    /// needs the query's similarities to every ingredient of the unit.
+    g: Option<f32>,
+}
+
+impl Candidate {
+    fn g(&mut self, scorer: &Scorer) -> f32 {
+        *self.g.get_or_insert_with(|| scorer.unit(self.unit))
+    }
+
+    /// Whether this candidate is preferred to `best`: a unit already in the tree, then one of the
+    /// reference recipe (so that the tree stays one coherent recipe), then g(u); ties go to fewer
+    /// inputs to make, then to the smaller id (ids follow contents, not file order).
+    fn beats(&mut self, best: &mut Candidate, kb: &KnowledgeBase, scorer: &Scorer) -> bool {
+        let made = |u: UnitId| {
+            kb.units[u]
+                .input_nodes()
+                .filter(|&n| !kb.kitchen[n])
+                .count()
+        };
+        let ord = (self.reused, self.same_recipe)
+            .cmp(&(best.reused, best.same_recipe))
+            .then_with(|| self.g(scorer).total_cmp(&best.g(scorer)))
+            .then_with(|| made(best.unit).cmp(&made(self.unit)))
+            .then(best.unit.cmp(&self.unit));
+        ord == std::cmp::Ordering::Greater
+    }
+}
+
 /// Retrieves the tree making `root`. `root` is expanded even when it is a kitchen item (a goal, or a
 /// leaf whose making is asked for); every other kitchen node stops the search. `prefer` is a subgraph id
 /// whose units win ties (the reference recipe), and `taken` lists units already in the caller's tree.
@@ -116,7 +152,7 @@ pub(crate) fn retrieve_within(
         if producers.is_empty() {
             continue;
         }
-        let mut best: Option<(UnitId, (bool, bool, f32, usize))> = None;
+        let mut best: Option<Candidate> = None;
         let mut cyclic = false;
         let mut cyclic_in_recipe = false;
         for &u in producers {
@@ -136,37 +172,32 @@ pub(crate) fn retrieve_within(
                 cyclic_in_recipe |= same_recipe;
                 continue; // would close a cycle
             }
-            let g = scorer.unit(u);
-            let reused = in_tree.contains(u) || taken.contains(&u);
-            let made_inputs = unit.input_nodes().filter(|&n| !kb.kitchen[n]).count();
-            // larger is better: a unit already in the tree, then one of the reference recipe (so that
-            // the tree stays one coherent recipe), then g(u); ties go to fewer inputs to make, then
-            // to the smaller id (ids follow contents, not file order)
-            let key = (reused, same_recipe, g, usize::MAX - made_inputs);
-            let better = match &best {
+            let mut candidate = Candidate {
+                unit: u,
+                reused: in_tree.contains(u) || taken.contains(&u),
+                same_recipe,
+                g: None,
+            };
+            let better = match best.as_mut() {
                 None => true,
-                Some((bu, bk)) => {
-                    let ord = key
-                        .0
-                        .cmp(&bk.0)
-                        .then(key.1.cmp(&bk.1))
-                        .then(key.2.total_cmp(&bk.2))
-                        .then(key.3.cmp(&bk.3))
-                        .then(bu.cmp(&u));
-                    ord == std::cmp::Ordering::Greater
-                }
+                Some(b) => candidate.beats(b, kb, scorer),
             };
             if better {
-                best = Some((u, key));
+                best = Some(candidate);
             }
         }
-        let Some((u, key)) = best else {
+        let Some(Candidate {
+            unit: u,
+            same_recipe,
+            ..
+        }) = best
+        else {
             if cyclic && !cyclic_in_recipe {
                 blocked.push(node);
             }
             continue;
         };
-        if cyclic_in_recipe && !key.1 {
+        if cyclic_in_recipe && !same_recipe {
             // the recipe only makes it again later (a lid put back): it had it from the start, and
             // another recipe's way of making it would bring that recipe along
             continue;
