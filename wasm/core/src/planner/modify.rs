@@ -731,15 +731,16 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
         let ing_in: Vec<&str> = unit
             .inputs
             .iter()
-            .map(|i| tree.slots[i.0].node.label.as_str())
-            .filter(|l| !is_utensil(l))
+            .map(|i| &tree.slots[i.0])
+            .filter(|x| !x.utensil)
+            .map(|x| x.node.label.as_str())
             .collect();
         let ing_out_ok = unit
             .outputs
             .iter()
-            .map(|x| tree.slots[x.0].node.label.as_str())
-            .filter(|l| !is_utensil(l))
-            .all(|l| l == eq);
+            .map(|o| &tree.slots[o.0])
+            .filter(|x| !x.utensil)
+            .all(|x| x.node.label == eq);
         !ing_in.is_empty() && ing_in.iter().all(|&l| l == eq) && ing_out_ok
     };
     let branch: Vec<TUnitId> = order.iter().copied().filter(|&u| is_private(u)).collect();
@@ -896,12 +897,13 @@ fn attach_point(
         }
         // a unit that adds an ingredient, not one that only moves the dish itself
         let adds = unit.inputs.iter().any(|i| {
-            let n = &tree.slots[i.0].node;
-            i.1 && !is_utensil(&n.label) && n.label != goal_label
+            let x = &tree.slots[i.0];
+            i.1 && !x.utensil && x.node.label != goal_label
         });
         let kin = unit.inputs.iter().any(|i| {
-            let n = &tree.slots[i.0].node;
-            !is_utensil(&n.label)
+            let x = &tree.slots[i.0];
+            let n = &x.node;
+            !x.utensil
                 && n.label != o
                 && ((!matches!(c, Category::Whole | Category::Other) && node_category(n) == c) || {
                     let sim = ctx.scorer.pair(o, &n.label);
@@ -960,7 +962,7 @@ fn add_branch<'kb>(
     // utensils the tree already starts with are shared rather than duplicated
     for x in tree.live_slots() {
         if let Some(k) = tree.slots[x].kb {
-            if is_utensil(&tree.slots[x].node.label) && !tree.produced(x) {
+            if tree.slots[x].utensil && !tree.produced(x) {
                 slot_of.entry(k).or_insert(x);
             }
         }
@@ -1087,8 +1089,8 @@ fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
 /// Whether a unit with these inputs handles any ingredient: a non-utensil input or a listed content.
 fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &HashSet<SlotId>) -> bool {
     inputs.iter().any(|&(x, _)| {
-        let n = &tree.slots[x].node;
-        !gone.contains(&x) && (!is_utensil(&n.label) || n.holds_something())
+        let slot = &tree.slots[x];
+        !gone.contains(&x) && (!slot.utensil || slot.node.holds_something())
     })
 }
 
@@ -1099,9 +1101,8 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     let live = tree.live_slots();
     let starting: BTreeSet<String> = live
         .iter()
-        .filter(|&&x| !tree.produced(x))
+        .filter(|&&x| !tree.produced(x) && !tree.slots[x].utensil)
         .map(|&x| tree.slots[x].node.label.clone())
-        .filter(|l| !is_utensil(l))
         .collect();
     let mut pruned: BTreeSet<String> = starting.difference(keep).cloned().collect();
     if pruned.is_empty() {
@@ -1157,6 +1158,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
         if (lost_all || no_op || outputs.is_empty()) && !makes_goal {
             tree.units[u].alive = false;
             for &(x, _) in &outputs {
+                let utensil = tree.slots[x].utensil;
                 let node = &tree.slots[x].node;
                 let same = inputs
                     .iter()
@@ -1174,7 +1176,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
                     None => {
                         let label = node.label.clone();
                         gone.insert(x);
-                        if !is_utensil(&label) && !keep.contains(&label) {
+                        if !utensil && !keep.contains(&label) {
                             pruned.insert(label);
                         }
                     }

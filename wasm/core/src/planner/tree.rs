@@ -20,6 +20,17 @@ pub(crate) struct Slot<'kb> {
     pub node: Cow<'kb, ObjectNode>,
     /// The knowledge-base node it was made from, if any.
     pub kb: Option<NodeId>,
+    /// Whether the label is a utensil's, set with the label (asked of nearly every slot the planner
+    /// touches: a flag instead of hashing the label each time).
+    pub utensil: bool,
+}
+
+impl Slot<'_> {
+    /// Gives the slot another label, keeping `utensil` true to it.
+    fn relabel(&mut self, to: &str) {
+        self.node.to_mut().label = to.to_string();
+        self.utensil = is_utensil(to);
+    }
 }
 
 #[derive(Clone, Debug)]
@@ -97,7 +108,8 @@ impl<'kb> Tree<'kb> {
     }
 
     fn new_slot(&mut self, node: Cow<'kb, ObjectNode>, kb: Option<NodeId>) -> SlotId {
-        self.slots.push(Slot { node, kb });
+        let utensil = is_utensil(&node.label);
+        self.slots.push(Slot { node, kb, utensil });
         self.producer.push(None);
         self.slots.len() - 1
     }
@@ -297,8 +309,9 @@ impl<'kb> Tree<'kb> {
         let goal = self.slots[self.goal].node.label.as_str();
         self.live_slots()
             .into_iter()
+            .filter(|&s| !self.slots[s].utensil)
             .map(|s| self.slots[s].node.label.as_str())
-            .filter(|&l| l != goal && !is_utensil(l))
+            .filter(|&l| l != goal)
             .collect()
     }
 
@@ -327,7 +340,7 @@ impl<'kb> Tree<'kb> {
                 }
             });
             if slot.node.label == from {
-                slot.node.to_mut().label = to.to_string();
+                slot.relabel(to);
             }
             touched.insert(s);
         }
