@@ -175,13 +175,13 @@ pub(crate) fn modify<'kb>(
             continue;
         };
         w.low_confidence = eq != o && ctx.sim.low_confidence(o, &eq, sim);
-        let in_tree = !tree.slots_with_label(&eq).is_empty();
+        let slots = tree.slots_with_label(&eq);
         if !enabled {
-            judge_unmodified(tree, o, s, &eq, sim, in_tree, &mut w);
+            judge_unmodified(tree, o, s, &eq, sim, &slots, &mut w);
             works.push(w);
             continue;
         }
-        if !in_tree {
+        if slots.is_empty() {
             // case 4 from elsewhere in FOON (or an exact FOON label the reference tree lacks): attached
             // after pruning, so that it joins a unit that stays
             pending.push((works.len(), eq.clone(), s.to_string()));
@@ -195,13 +195,9 @@ pub(crate) fn modify<'kb>(
             continue;
         }
         // the equivalent is in the tree: substitute (cases 2, 4) or keep (cases 1, 3)
-        let tree_state = best_state_slot(tree, &eq, s)
-            .or_else(|| tree.slots_with_label(&eq).first().copied())
-            .map(|slot| state_text(&tree.slots[slot].node))
-            .unwrap_or_default();
         w.matched = Some(Match {
             label: eq.clone(),
-            state: tree_state,
+            state: tree_state(tree, &slots, s),
             similarity: sim,
         });
         if eq != o {
@@ -265,14 +261,11 @@ pub(crate) fn modify<'kb>(
             let w = &mut works[i];
             let o = query.ingredients[i].object.as_str();
             let lost = w.planned;
-            if !lost && !tree.slots_with_label(o).is_empty() {
+            let slots = tree.slots_with_label(o);
+            if !lost && !slots.is_empty() {
                 // an earlier ingredient of the same name brought it: one branch serves both
-                let tree_state = best_state_slot(tree, o, &s)
-                    .or_else(|| tree.slots_with_label(o).first().copied())
-                    .map(|x| state_text(&tree.slots[x].node))
-                    .unwrap_or_default();
                 if let Some(m) = w.matched.as_mut() {
-                    m.state = tree_state;
+                    m.state = tree_state(tree, &slots, &s);
                 }
                 settle_state(ctx, tree, &eq, o, &s, &mut restated, w);
                 continue;
@@ -348,7 +341,8 @@ fn settle_state<'kb>(
     restated: &mut HashMap<String, String>,
     w: &mut Work,
 ) {
-    let state_ok = best_state_slot(tree, o, s).is_some();
+    let slots = tree.slots_with_label(o);
+    let state_ok = best_state_slot(tree, &slots, s).is_some();
     w.case = Some(match (eq == o, state_ok) {
         (true, true) => 1,
         (false, true) => 2,
@@ -359,7 +353,7 @@ fn settle_state<'kb>(
         w.reasons.push(format!(
             "state '{s}' is not in the state taxonomy: kept the tree's state"
         ));
-    } else if state_ok && best_exact(tree, o, s).is_none() {
+    } else if state_ok && best_exact(tree, &slots, s).is_none() {
         w.reasons.push(format!(
             "state '{s}' matched by category ({})",
             category(s).name()
@@ -468,20 +462,17 @@ fn judge_unmodified(
     s: &str,
     eq: &str,
     sim: f32,
-    in_tree: bool,
+    slots: &[SlotId],
     w: &mut Work,
 ) {
-    if !in_tree {
+    if slots.is_empty() {
         w.case = Some(4);
         w.reasons
             .push("not in the reference task tree (modification off)".to_string());
         return;
     }
-    let slot = best_state_slot(tree, eq, s);
-    let state = slot
-        .or_else(|| tree.slots_with_label(eq).first().copied())
-        .map(|x| state_text(&tree.slots[x].node))
-        .unwrap_or_default();
+    let slot = best_state_slot(tree, slots, s);
+    let state = state_text(&tree.slots[slot.unwrap_or(slots[0])].node);
     w.case = Some(match (eq == o, slot.is_some()) {
         (true, true) => 1,
         (false, true) => 2,
@@ -500,32 +491,41 @@ fn judge_unmodified(
     }
 }
 
-fn best_exact(tree: &Tree, label: &str, s: &str) -> Option<SlotId> {
-    tree.slots_with_label(label)
-        .into_iter()
+/// The state an ingredient has in the tree, given its label's live slots (`Tree::slots_with_label`,
+/// not empty): that of its slot in the state `s` (see `best_state_slot`), else of the first.
+fn tree_state(tree: &Tree, slots: &[SlotId], s: &str) -> String {
+    let slot = best_state_slot(tree, slots, s).unwrap_or(slots[0]);
+    state_text(&tree.slots[slot].node)
+}
+
+/// Of a label's live slots, the first in the state `s`.
+fn best_exact(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
+    slots
+        .iter()
+        .copied()
         .find(|&x| tree.slots[x].node.physical_states().any(|p| p == s))
 }
 
-/// A slot of `label` in the given state: exactly, else by category; a starting state matches a leaf in
-/// a starting state; a state outside the taxonomy matches any.
-fn best_state_slot(tree: &Tree, label: &str, s: &str) -> Option<SlotId> {
-    if let Some(x) = best_exact(tree, label, s) {
+/// Of a label's live slots, one in the state `s`: exactly, else by category; a starting state matches a
+/// leaf in a starting state; a state outside the taxonomy matches any.
+fn best_state_slot(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
+    if let Some(x) = best_exact(tree, slots, s) {
         return Some(x);
     }
-    let slots = tree.slots_with_label(label);
     let c = category(s);
     if c == Category::Other {
         return slots.first().copied();
     }
+    let mut slots = slots.iter().copied();
     if c.is_starting() {
-        return slots.into_iter().find(|&x| {
+        return slots.find(|&x| {
             !tree.produced(x)
                 && food_states(&tree.slots[x].node)
                     .iter()
                     .all(|f| category(f).is_starting())
         });
     }
-    slots.into_iter().find(|&x| {
+    slots.find(|&x| {
         food_states(&tree.slots[x].node)
             .iter()
             .any(|f| category(f) == c)

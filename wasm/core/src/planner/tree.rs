@@ -278,16 +278,21 @@ impl<'kb> Tree<'kb> {
     }
 
     /// Live slots with the label, in slot order (asked many times per plan, often of a label the tree
-    /// lacks: the labels are compared before the units are walked).
+    /// lacks: the labels are compared before the units are walked, and only for the few that match).
     pub fn slots_with_label(&self, label: &str) -> Vec<SlotId> {
         let mut with: Vec<SlotId> = (0..self.slots.len())
             .filter(|&s| self.slots[s].node.label == label)
             .collect();
-        if !with.is_empty() {
-            let live = self.live_marks();
-            with.retain(|&s| live[s]);
-        }
+        with.retain(|&s| self.is_live(s));
         with
+    }
+
+    /// Whether the slot is used by a live unit, or is the goal.
+    fn is_live(&self, s: SlotId) -> bool {
+        s == self.goal
+            || self
+                .alive_units()
+                .any(|(_, u)| u.inputs.iter().chain(u.outputs.iter()).any(|x| x.0 == s))
     }
 
     /// Per slot: used by a live unit, or the goal (marks by index: no sort).
