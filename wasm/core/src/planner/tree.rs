@@ -257,11 +257,18 @@ impl<'kb> Tree<'kb> {
 
     /// Marks units the goal does not need as dead.
     pub fn drop_unneeded(&mut self) {
-        let keep: HashSet<TUnitId> = self.order().into_iter().collect();
-        for (i, u) in self.units.iter_mut().enumerate() {
-            if !keep.contains(&i) {
-                u.alive = false;
-            }
+        let order = self.order();
+        self.keep_only(&order);
+    }
+
+    /// Marks units outside `order` (the tree's order) as dead; the order stays the same.
+    fn keep_only(&mut self, order: &[TUnitId]) {
+        let mut keep = vec![false; self.units.len()];
+        for &u in order {
+            keep[u] = true;
+        }
+        for (u, keep) in self.units.iter_mut().zip(keep) {
+            u.alive &= keep;
         }
     }
 
@@ -417,13 +424,17 @@ impl<'kb> Tree<'kb> {
     /// Makes the tree sound at the level of node *values*, which is what a plan shows: a unit identical
     /// to an earlier one is dropped (its products are the earlier one's), and a unit that makes nothing
     /// new that a later unit uses (only passes its inputs on) is dropped, its outputs replaced by the
-    /// equal inputs. Repeats until nothing changes.
+    /// equal inputs. Repeats until nothing changes; units the goal does not need are dropped.
     pub fn normalize(&mut self) {
         // slots keep their nodes here: compare values by interned id rather than by node
         let value = self.values();
+        // the tree's order, computed again only after a change
+        let mut order = self.order();
         for _ in 0..16 {
-            let mut changed = self.join_equal_leaves(&value);
-            let order = self.order();
+            let mut changed = self.join_equal_leaves(&value, &order);
+            if changed {
+                order = self.order();
+            }
             // position of the last unit using each slot (inputs as they are at the start of the round)
             let cap = order.len() * 4;
             let mut last_use: HashMap<SlotId, usize> =
@@ -505,6 +516,8 @@ impl<'kb> Tree<'kb> {
                 }
             }
             if !changed {
+                // as after a round that changed something, the units the goal does not need go
+                self.keep_only(&order);
                 break;
             }
             // apply the last aliases to every live unit, then forget units the goal no longer needs
@@ -521,7 +534,8 @@ impl<'kb> Tree<'kb> {
                 }
                 dedup_slots(&mut unit.inputs);
             }
-            self.drop_unneeded();
+            order = self.order();
+            self.keep_only(&order);
         }
     }
 
@@ -540,11 +554,10 @@ impl<'kb> Tree<'kb> {
 
     /// A starting slot equal in value to a slot some unit makes is the same node in the plan: it is
     /// joined to the made one, so its users come after its maker, when that makes no cycle.
-    fn join_equal_leaves(&mut self, value: &[usize]) -> bool {
-        let order = self.order();
+    fn join_equal_leaves(&mut self, value: &[usize], order: &[TUnitId]) -> bool {
         let mut made: HashMap<usize, SlotId> =
             HashMap::with_capacity_and_hasher(2 * order.len(), Default::default());
-        for &u in &order {
+        for &u in order {
             let ins: Vec<SlotId> = self.units[u].inputs.iter().map(|i| i.0).collect();
             for &(o, _) in &self.units[u].outputs {
                 if self.producer[o] == Some(u) && !ins.iter().any(|&i| value[i] == value[o]) {
@@ -553,7 +566,7 @@ impl<'kb> Tree<'kb> {
             }
         }
         let mut changed = false;
-        for &v in &order {
+        for &v in order {
             for k in 0..self.units[v].inputs.len() {
                 let x = self.units[v].inputs[k].0;
                 if self.produced(x) {
