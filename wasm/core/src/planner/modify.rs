@@ -688,7 +688,7 @@ fn restate<'kb>(
         .map(str::to_string)
         .collect();
     let new_node = ObjectNode::new(o, vec![State::plain(s)]);
-    let consumers = tree.consumers(leaf, &order);
+    let consumers: Vec<TUnitId> = tree.consumers(leaf, &order).collect();
     let new_slot = tree.add_slot(new_node);
     let mut inputs = vec![(leaf, true)];
     if let Some(t) = ctx.index.utensil_for(&motion) {

@@ -328,12 +328,15 @@ impl<'kb> Tree<'kb> {
     }
 
     /// Live units that take the slot as input, in execution order.
-    pub fn consumers(&self, s: SlotId, order: &[TUnitId]) -> Vec<TUnitId> {
+    pub fn consumers<'a>(
+        &'a self,
+        s: SlotId,
+        order: &'a [TUnitId],
+    ) -> impl Iterator<Item = TUnitId> + 'a {
         order
             .iter()
             .copied()
-            .filter(|&u| self.units[u].inputs.iter().any(|i| i.0 == s))
-            .collect()
+            .filter(move |&u| self.units[u].inputs.iter().any(|i| i.0 == s))
     }
 
     /// Renames an object in the given slots, in their labels and their lists of contents.
@@ -392,32 +395,31 @@ impl<'kb> Tree<'kb> {
             .filter(|x| x.1 == longest)
             .map(|x| x.0)
             .collect();
-        let mut seen: HashSet<SlotId> = HashSet::default();
+        // a handful of slots: a list is cheaper than a hash set
+        let mut seen: Vec<SlotId> = Vec::with_capacity(8);
         while let Some(s) = work.pop() {
-            if !seen.insert(s) {
+            if seen.contains(&s) {
                 continue;
             }
-            if self.slots[s].node.contents().any(|x| x == label) {
+            seen.push(s);
+            let node = &self.slots[s].node;
+            if node.contents().any(|x| x == label) {
                 continue;
             }
             // the nodes taking over its contents, judged before the edit (it changes only `s`)
-            let mut next = Vec::new();
-            let node = &self.slots[s].node;
-            let old = node.ingredient_refs();
             for v in self.consumers(s, order) {
                 for &(o, _) in &self.units[v].outputs {
                     let theirs = &self.slots[o].node;
-                    let took_over = old.iter().all(|x| theirs.contents().any(|c| c == *x));
+                    let took_over = node.contents().all(|x| theirs.contents().any(|c| c == x));
                     let same_vessel = theirs.label == node.label;
                     if theirs.holds_something() && (took_over || same_vessel) && o != s {
-                        next.push(o);
+                        work.push(o);
                     }
                 }
             }
             edit_contents(self.slots[s].node.to_mut(), &mut |list| {
                 list.push(label.to_string())
             });
-            work.extend(next);
         }
     }
 
