@@ -294,12 +294,13 @@ impl<'kb> Tree<'kb> {
         with
     }
 
-    /// Whether the slot is used by a live unit, or is the goal.
+    /// Whether the slot is used by a live unit, or is the goal (its live producer's outputs are looked
+    /// at first: a made slot is nearly always still among them).
     fn is_live(&self, s: SlotId) -> bool {
+        let uses = |u: &TUnit| u.inputs.iter().chain(u.outputs.iter()).any(|x| x.0 == s);
         s == self.goal
-            || self
-                .alive_units()
-                .any(|(_, u)| u.inputs.iter().chain(u.outputs.iter()).any(|x| x.0 == s))
+            || self.producer[s].is_some_and(|p| self.units[p].alive && uses(&self.units[p]))
+            || self.alive_units().any(|(_, u)| uses(u))
     }
 
     /// Per slot: used by a live unit, or the goal (marks by index: no sort).
