@@ -880,9 +880,11 @@ fn attach_point(
     o: &str,
     c: Category,
 ) -> Option<TUnitId> {
-    let goal_label = tree.slots[tree.goal].node.label.clone();
-    let mut best: Option<(TUnitId, (bool, bool, usize, usize))> = None;
-    for (pos, &u) in order.iter().enumerate() {
+    let goal_label = tree.slots[tree.goal].node.label.as_str();
+    // closest to the goal first: a unit further from it must do strictly better, so its kin
+    // ingredients are worked out only when they could make it
+    let mut best: Option<(TUnitId, (bool, bool, usize))> = None;
+    for &u in order.iter().rev() {
         let unit = &tree.units[u];
         let takes = unit
             .outputs
@@ -900,6 +902,13 @@ fn attach_point(
             let x = &tree.slots[i.0];
             i.1 && !x.utensil && x.node.label != goal_label
         });
+        let beats = |kin: bool| {
+            let key = (adds, kin, usize::MAX - pref);
+            best.as_ref().is_none_or(|(_, b)| key > *b).then_some(key)
+        };
+        if beats(true).is_none() {
+            continue;
+        }
         let kin = unit.inputs.iter().any(|i| {
             let x = &tree.slots[i.0];
             let n = &x.node;
@@ -910,8 +919,7 @@ fn attach_point(
                     ctx.sim.accepts(sim) && sim < 1.0
                 })
         });
-        let key = (adds, kin, usize::MAX - pref, pos);
-        if best.as_ref().is_none_or(|(_, b)| key > *b) {
+        if let Some(key) = beats(kin) {
             best = Some((u, key));
         }
     }
