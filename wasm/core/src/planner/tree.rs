@@ -98,6 +98,20 @@ fn node_cmp(a: &ObjectNode, b: &ObjectNode) -> Ordering {
     }
 }
 
+/// What a unit does, in values (see `Tree::values`): its motion's id, its inputs' values sorted, a
+/// separator, its outputs' values sorted. Units with equal keys are the same step of a plan.
+fn value_key(unit: &TUnit, motion: usize, value: &[usize]) -> Vec<usize> {
+    let mut key = Vec::with_capacity(unit.inputs.len() + unit.outputs.len() + 2);
+    key.push(motion);
+    key.extend(unit.inputs.iter().map(|i| value[i.0]));
+    key[1..].sort_unstable();
+    key.push(usize::MAX);
+    let outs = key.len();
+    key.extend(unit.outputs.iter().map(|o| value[o.0]));
+    key[outs..].sort_unstable();
+    key
+}
+
 /// A copy of a node with its lists of contents rewritten (see `edit_contents`).
 pub(crate) fn map_contents(node: &ObjectNode, f: &mut dyn FnMut(&mut Vec<String>)) -> ObjectNode {
     let mut copy = node.clone();
@@ -443,6 +457,7 @@ impl<'kb> Tree<'kb> {
     pub fn normalize(&mut self) {
         // slots keep their nodes here: compare values by interned id rather than by node
         let value = self.values();
+        let motion = self.motion_ids();
         // the tree's order, computed again only after a change
         let mut order = self.order();
         for _ in 0..16 {
@@ -451,17 +466,14 @@ impl<'kb> Tree<'kb> {
                 order = self.order();
             }
             // position of the last unit using each slot (inputs as they are at the start of the round)
-            let cap = order.len() * 4;
-            let mut last_use: HashMap<SlotId, usize> =
-                HashMap::with_capacity_and_hasher(cap, Default::default());
+            let mut last_use: Vec<Option<usize>> = vec![None; self.slots.len()];
             for (pos, &u) in order.iter().enumerate() {
                 for i in &self.units[u].inputs {
-                    last_use.insert(i.0, pos);
+                    last_use[i.0] = Some(pos);
                 }
             }
             let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
-            type Key = (Vec<usize>, String, Vec<usize>);
-            let mut first: HashMap<Key, TUnitId> =
+            let mut first: HashMap<Vec<usize>, TUnitId> =
                 HashMap::with_capacity_and_hasher(order.len(), Default::default());
             for (pos, &u) in order.iter().enumerate() {
                 {
@@ -478,11 +490,7 @@ impl<'kb> Tree<'kb> {
                 }
                 let unit = &self.units[u];
                 let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
-                let mut ins: Vec<usize> = unit.inputs.iter().map(|i| value[i.0]).collect();
-                ins.sort_unstable();
-                let mut outs: Vec<usize> = unit.outputs.iter().map(|o| value[o.0]).collect();
-                outs.sort_unstable();
-                let key = (ins, unit.motion.clone(), outs);
+                let key = value_key(unit, motion[u], &value);
                 if !makes_goal {
                     if let Some(&f) = first.get(&key) {
                         let theirs = self.units[f].outputs.clone();
@@ -498,13 +506,13 @@ impl<'kb> Tree<'kb> {
                         continue;
                     }
                 }
-                let ins = key.0.clone();
-                first.insert(key, u);
                 // new products a later unit uses (or the goal)
+                let ins = &key[1..=unit.inputs.len()];
                 let useful = unit.outputs.iter().any(|&(o, _)| {
                     !ins.contains(&value[o])
-                        && (o == self.goal || last_use.get(&o).is_some_and(|&l| l > pos))
+                        && (o == self.goal || last_use[o].is_some_and(|l| l > pos))
                 });
+                first.insert(key, u);
                 if makes_goal && !useful {
                     // the goal's last unit changes nothing: the goal is its equal input
                     if let Some(&(i, _)) =
@@ -554,6 +562,19 @@ impl<'kb> Tree<'kb> {
         }
     }
 
+    /// An id per unit, equal for units with the same motion.
+    fn motion_ids(&self) -> Vec<usize> {
+        let mut ids: HashMap<&str, usize> =
+            HashMap::with_capacity_and_hasher(self.units.len(), Default::default());
+        self.units
+            .iter()
+            .map(|u| {
+                let next = ids.len();
+                *ids.entry(u.motion.as_str()).or_insert(next)
+            })
+            .collect()
+    }
+
     /// An id per slot, equal for slots with equal nodes.
     fn values(&self) -> Vec<usize> {
         let mut ids: HashMap<&ObjectNode, usize> =
@@ -570,13 +591,15 @@ impl<'kb> Tree<'kb> {
     /// A starting slot equal in value to a slot some unit makes is the same node in the plan: it is
     /// joined to the made one, so its users come after its maker, when that makes no cycle.
     fn join_equal_leaves(&mut self, value: &[usize], order: &[TUnitId]) -> bool {
-        let mut made: HashMap<usize, SlotId> =
-            HashMap::with_capacity_and_hasher(2 * order.len(), Default::default());
+        // per value, the first slot made with it (value ids are below the number of slots)
+        let mut made: Vec<Option<SlotId>> = vec![None; self.slots.len()];
         for &u in order {
-            let ins: Vec<SlotId> = self.units[u].inputs.iter().map(|i| i.0).collect();
-            for &(o, _) in &self.units[u].outputs {
-                if self.producer[o] == Some(u) && !ins.iter().any(|&i| value[i] == value[o]) {
-                    made.entry(value[o]).or_insert(o);
+            let unit = &self.units[u];
+            for &(o, _) in &unit.outputs {
+                if self.producer[o] == Some(u)
+                    && !unit.inputs.iter().any(|i| value[i.0] == value[o])
+                {
+                    made[value[o]].get_or_insert(o);
                 }
             }
         }
@@ -587,7 +610,7 @@ impl<'kb> Tree<'kb> {
                 if self.produced(x) {
                     continue;
                 }
-                let Some(&y) = made.get(&value[x]) else {
+                let Some(y) = made[value[x]] else {
                     continue;
                 };
                 if y == x || self.depends_on_unit(y, v) {
