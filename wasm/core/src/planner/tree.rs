@@ -244,7 +244,9 @@ impl<'kb> Tree<'kb> {
         // dense ids: flags by index are cheaper than hashing on this hot path
         let mut done = vec![false; self.units.len()];
         let mut seen = vec![false; self.slots.len()];
-        let mut stack: Vec<(SlotId, bool)> = Vec::with_capacity(2 * self.slots.len() + 1);
+        // deep enough for most trees, and small: a request of a kilobyte or more makes the allocator
+        // sweep its free lists
+        let mut stack: Vec<(SlotId, bool)> = Vec::with_capacity(self.units.len() + 8);
         stack.push((self.goal, false));
         let mut inputs: Vec<SlotId> = Vec::with_capacity(16);
         while let Some((slot, expanded)) = stack.pop() {
