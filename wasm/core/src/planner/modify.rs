@@ -619,8 +619,7 @@ fn restate<'kb>(
         let before = tree.slots.len();
         let added = tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
         if eq != o {
-            let new: Vec<SlotId> = (before..tree.slots.len()).collect();
-            tree.rename_in(&new, eq, o);
+            tree.rename_in(before..tree.slots.len(), eq, o);
         }
         return Ok(format!(
             "added {} unit(s) making the tree's '{leaf_state}' {o} from '{s}'",
@@ -1042,8 +1041,7 @@ fn finish_branch<'kb>(
         }
     }
     if eq != o {
-        let new: Vec<SlotId> = (before..tree.slots.len()).collect();
-        tree.rename_in(&new, eq, o);
+        tree.rename_in(before..tree.slots.len(), eq, o);
         how = format!("'{eq}' substituted with '{o}': {how}");
     }
     let order = tree.order();
@@ -1071,15 +1069,15 @@ fn map_states(node: &ObjectNode, s: &str) -> ObjectNode {
 fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
     // asked of every name in every list of every slot: a hash set rather than the ordered one
     let labels: HashSet<&str> = labels.iter().map(String::as_str).collect();
-    let mut touched: HashSet<SlotId> = HashSet::default();
-    for (i, slot) in tree.slots.iter_mut().enumerate() {
+    let mut touched = vec![false; tree.slots.len()];
+    for (slot, touched) in tree.slots.iter_mut().zip(touched.iter_mut()) {
         if !slot.node.listed().any(|x| labels.contains(x)) {
             continue;
         }
         edit_contents(slot.node.to_mut(), &mut |list| {
             list.retain(|x| !labels.contains(x.as_str()))
         });
-        touched.insert(i);
+        *touched = true;
     }
     for u in tree.units.iter_mut() {
         if u.alive
@@ -1087,18 +1085,19 @@ fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
             && u.inputs
                 .iter()
                 .chain(u.outputs.iter())
-                .any(|x| touched.contains(&x.0))
+                .any(|x| touched[x.0])
         {
             u.origin = Origin::Renamed;
         }
     }
 }
 
-/// Whether a unit with these inputs handles any ingredient: a non-utensil input or a listed content.
-fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &HashSet<SlotId>) -> bool {
+/// Whether a unit with these inputs handles any ingredient: a non-utensil input or a listed content
+/// (`gone` marks the slots pruned).
+fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &[bool]) -> bool {
     inputs.iter().any(|&(x, _)| {
         let slot = &tree.slots[x];
-        !gone.contains(&x) && (!slot.utensil || slot.node.holds_something())
+        !gone[x] && (!slot.utensil || slot.node.holds_something())
     })
 }
 
@@ -1116,21 +1115,17 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     if pruned.is_empty() {
         return Vec::new();
     }
-    let had: HashMap<TUnitId, bool> = order
-        .iter()
-        .map(|&u| {
-            (
-                u,
-                handles_any(tree, &tree.units[u].inputs, &HashSet::default()),
-            )
-        })
-        .collect();
+    // per slot, whether it is pruned
+    let mut gone = vec![false; tree.slots.len()];
+    // per unit, whether it handled an ingredient before pruning
+    let mut had = vec![false; tree.units.len()];
+    for &u in &order {
+        had[u] = handles_any(tree, &tree.units[u].inputs, &gone);
+    }
     drop_contents(tree, &pruned);
-    let mut gone: HashSet<SlotId> = live
-        .iter()
-        .copied()
-        .filter(|&x| pruned.contains(&tree.slots[x].node.label))
-        .collect();
+    for &x in &live {
+        gone[x] = pruned.contains(&tree.slots[x].node.label);
+    }
     let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
     let resolve = |alias: &HashMap<SlotId, SlotId>, mut s: SlotId| {
         for _ in 0..10_000 {
@@ -1147,16 +1142,16 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
             .inputs
             .iter()
             .map(|&(x, m)| (resolve(&alias, x), m))
-            .filter(|i| !gone.contains(&i.0))
+            .filter(|i| !gone[i.0])
             .collect();
         let outputs: Vec<(SlotId, bool)> = tree.units[u]
             .outputs
             .iter()
             .copied()
-            .filter(|o| !gone.contains(&o.0))
+            .filter(|o| !gone[o.0])
             .collect();
         let makes_goal = outputs.iter().any(|o| o.0 == goal);
-        let lost_all = had.get(&u).copied().unwrap_or(false) && !handles_any(tree, &inputs, &gone);
+        let lost_all = had[u] && !handles_any(tree, &inputs, &gone);
         // nothing new comes out: every output is one of the inputs as they are now
         let no_op = outputs.iter().all(|o| {
             inputs
@@ -1183,7 +1178,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
                     Some(_) => {}
                     None => {
                         let label = node.label.clone();
-                        gone.insert(x);
+                        gone[x] = true;
                         if !utensil && !keep.contains(&label) {
                             pruned.insert(label);
                         }
@@ -1199,13 +1194,13 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     }
     // the goal may have been passed through a removed unit
     // labels made only by removed units leave the lists of contents as well
-    let still: BTreeSet<String> = tree
+    let still: Vec<SlotId> = tree
         .live_slots()
         .into_iter()
-        .filter(|x| !gone.contains(x))
-        .map(|x| tree.slots[x].node.label.clone())
+        .filter(|&x| !gone[x])
         .collect();
-    pruned.retain(|l| !still.contains(l) || starting.contains(l));
+    pruned
+        .retain(|l| starting.contains(l) || !still.iter().any(|&x| tree.slots[x].node.label == *l));
     drop_contents(tree, &pruned);
     pruned.into_iter().collect()
 }

@@ -11,6 +11,7 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::borrow::Cow;
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
+use std::ops::Range;
 
 pub(crate) type SlotId = usize;
 pub(crate) type TUnitId = usize;
@@ -369,12 +370,10 @@ impl<'kb> Tree<'kb> {
     }
 
     /// Renames an object in the given slots, in their labels and their lists of contents.
-    pub fn rename_in(&mut self, slots: &[SlotId], from: &str, to: &str) {
-        let mut touched: HashSet<SlotId> = HashSet::default();
-        for &s in slots {
-            let Some(slot) = self.slots.get_mut(s) else {
-                continue;
-            };
+    pub fn rename_in(&mut self, slots: Range<SlotId>, from: &str, to: &str) {
+        let mut touched = vec![false; self.slots.len()];
+        for s in slots {
+            let slot = &mut self.slots[s];
             if slot.node.label != from && !slot.node.listed().any(|i| i == from) {
                 continue;
             }
@@ -386,14 +385,14 @@ impl<'kb> Tree<'kb> {
             if slot.node.label == from {
                 slot.relabel(to);
             }
-            touched.insert(s);
+            touched[s] = true;
         }
         for u in self.units.iter_mut() {
             if u.origin == Origin::Reference
                 && u.inputs
                     .iter()
                     .chain(u.outputs.iter())
-                    .any(|x| touched.contains(&x.0))
+                    .any(|x| touched[x.0])
             {
                 u.origin = Origin::Renamed;
             }
@@ -401,8 +400,7 @@ impl<'kb> Tree<'kb> {
     }
 
     pub fn rename_everywhere(&mut self, from: &str, to: &str) {
-        let all: Vec<SlotId> = (0..self.slots.len()).collect();
-        self.rename_in(&all, from, to);
+        self.rename_in(0..self.slots.len(), from, to);
     }
 
     /// Adds `label` to the contents of the unit's receiving outputs (those with the longest `contains`
