@@ -248,7 +248,7 @@ pub(crate) fn modify<'kb>(
         // an asked-for ingredient whose units served only pruned ones (butter spread on the bread that
         // was not asked for) comes back as a branch of its own, like a case-4 ingredient
         for (i, w) in works.iter().enumerate() {
-            if w.planned && !present.contains(w.label.as_str()) {
+            if w.planned && present.binary_search(&w.label.as_str()).is_err() {
                 let eq = w
                     .matched
                     .as_ref()
@@ -713,7 +713,6 @@ fn utensil_slot(kb: &KnowledgeBase, tree: &mut Tree, n: NodeId) -> SlotId {
     let node = &kb.nodes[n];
     if let Some(x) = tree
         .live_slots()
-        .into_iter()
         .find(|&x| *tree.slots[x].node == *node && !tree.produced(x))
     {
         return x;
@@ -1105,7 +1104,7 @@ fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &[bool]) -> bool {
 /// held it pass on unchanged, and it leaves every `contains {…}` list. Returns the removed labels.
 fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     let order = tree.order();
-    let live = tree.live_slots();
+    let live: Vec<SlotId> = tree.live_slots().collect();
     let starting: BTreeSet<String> = live
         .iter()
         .filter(|&&x| !tree.produced(x) && !tree.slots[x].utensil)
@@ -1194,11 +1193,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     }
     // the goal may have been passed through a removed unit
     // labels made only by removed units leave the lists of contents as well
-    let still: Vec<SlotId> = tree
-        .live_slots()
-        .into_iter()
-        .filter(|&x| !gone[x])
-        .collect();
+    let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
     pruned
         .retain(|l| starting.contains(l) || !still.iter().any(|&x| tree.slots[x].node.label == *l));
     drop_contents(tree, &pruned);

@@ -10,7 +10,6 @@ use crate::taxonomy::is_utensil;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::borrow::Cow;
 use std::cmp::Ordering;
-use std::collections::BTreeSet;
 use std::ops::Range;
 
 pub(crate) type SlotId = usize;
@@ -306,11 +305,9 @@ impl<'kb> Tree<'kb> {
     }
 
     /// Slots used by live units, and the goal, ascending.
-    pub fn live_slots(&self) -> Vec<SlotId> {
+    pub fn live_slots(&self) -> impl Iterator<Item = SlotId> {
         let live = self.live_marks();
-        let mut out = Vec::with_capacity(self.slots.len());
-        out.extend((0..self.slots.len()).filter(|&s| live[s]));
-        out
+        (0..self.slots.len()).filter(move |&s| live[s])
     }
 
     /// Live slots with the label, in slot order (asked many times per plan, often of a label the tree
@@ -346,15 +343,18 @@ impl<'kb> Tree<'kb> {
         live
     }
 
-    /// Ingredient labels in the tree (not utensils, not the goal's own label).
-    pub fn ingredient_labels(&self) -> BTreeSet<&str> {
+    /// Ingredient labels in the tree (not utensils, not the goal's own label), sorted and unique.
+    pub fn ingredient_labels(&self) -> Vec<&str> {
         let goal = self.slots[self.goal].node.label.as_str();
-        self.live_slots()
-            .into_iter()
+        let mut labels: Vec<&str> = self
+            .live_slots()
             .filter(|&s| !self.slots[s].utensil)
             .map(|s| self.slots[s].node.label.as_str())
             .filter(|&l| l != goal)
-            .collect()
+            .collect();
+        labels.sort_unstable();
+        labels.dedup();
+        labels
     }
 
     /// Live units that take the slot as input, in execution order.
