@@ -4,7 +4,7 @@
 use super::index::PlannerIndex;
 use super::retrieve::{retrieve, retrieve_within};
 use super::states::{category, is_food_state, Category};
-use super::tree::{dedup_slots, edit_contents, map_contents, SlotId, TUnitId, Tree};
+use super::tree::{dedup_slots, edit_contents, map_contents, rename_item, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
@@ -768,13 +768,7 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
         {
             return s;
         }
-        let mut renamed = map_contents(node, &mut |list| {
-            for item in list.iter_mut() {
-                if item == eq {
-                    *item = o.to_string();
-                }
-            }
-        });
+        let mut renamed = map_contents(node, &mut |list| rename_item(list, eq, o));
         if renamed.label == eq {
             renamed.label = o.to_string();
         }

@@ -53,16 +53,16 @@ pub(crate) struct Tree<'kb> {
     pub goal: SlotId,
 }
 
-/// Rewrites each of a node's lists of contents in place (an emptied `contains` list becomes `empty`);
-/// states stay sorted and unique.
+/// Rewrites each of a node's lists of contents in place with `f`, which keeps it sorted and unique as
+/// every list is (the reader makes them so); an emptied `contains` list becomes `empty`, and states
+/// stay sorted and unique.
 pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<String>)) {
     node.states.retain_mut(|s| {
         let Some(StateArg::Ingredients(list)) = &mut s.arg else {
             return true;
         };
         f(list);
-        list.sort();
-        list.dedup();
+        debug_assert!(list.windows(2).all(|w| w[0] < w[1]));
         if !list.is_empty() {
             return true;
         }
@@ -74,6 +74,21 @@ pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<St
     });
     node.states.sort();
     node.states.dedup();
+}
+
+/// Adds an item to a list of contents (sorted and unique) unless it is there.
+pub(crate) fn add_item(list: &mut Vec<String>, item: &str) {
+    if let Err(at) = list.binary_search_by(|x| x.as_str().cmp(item)) {
+        list.insert(at, item.to_string());
+    }
+}
+
+/// Renames an item of a list of contents (sorted and unique), which stays sorted and unique.
+pub(crate) fn rename_item(list: &mut Vec<String>, from: &str, to: &str) {
+    if let Ok(at) = list.binary_search_by(|x| x.as_str().cmp(from)) {
+        list.remove(at);
+        add_item(list, to);
+    }
 }
 
 /// Keeps the first use of each slot, in order. In place: a unit has a handful of inputs, and this runs
@@ -377,11 +392,7 @@ impl<'kb> Tree<'kb> {
             if slot.node.label != from && !slot.node.listed().any(|i| i == from) {
                 continue;
             }
-            edit_contents(slot.node.to_mut(), &mut |list| {
-                for item in list.iter_mut().filter(|item| *item == from) {
-                    *item = to.to_string();
-                }
-            });
+            edit_contents(slot.node.to_mut(), &mut |list| rename_item(list, from, to));
             if slot.node.label == from {
                 slot.relabel(to);
             }
@@ -445,7 +456,7 @@ impl<'kb> Tree<'kb> {
                 }
             }
             edit_contents(self.slots[s].node.to_mut(), &mut |list| {
-                list.push(label.to_string())
+                add_item(list, label)
             });
         }
     }
