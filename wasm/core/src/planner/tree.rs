@@ -283,17 +283,21 @@ impl<'kb> Tree<'kb> {
             }
             seen[slot] = true;
             stack.push((slot, true));
+            // only the inputs a live unit makes, not yet visited, lead anywhere: the others are
+            // neither sorted nor stacked (most units then have one or none to sort)
             inputs.clear();
-            inputs.extend(self.units[u].inputs.iter().map(|i| i.0));
+            inputs.extend(
+                self.units[u]
+                    .inputs
+                    .iter()
+                    .map(|i| i.0)
+                    .filter(|&s| !seen[s] && self.produced(s)),
+            );
             inputs.sort_by(|a, b| {
                 node_cmp(&self.slots[*a].node, &self.slots[*b].node).then(a.cmp(b))
             });
             inputs.dedup();
-            for &s in inputs.iter().rev() {
-                if !seen[s] {
-                    stack.push((s, false));
-                }
-            }
+            stack.extend(inputs.iter().rev().map(|&s| (s, false)));
         }
         order
     }
