@@ -9,7 +9,6 @@ use crate::plan::Origin;
 use crate::taxonomy::is_utensil;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::borrow::Cow;
-use std::cmp::Ordering;
 use std::ops::Range;
 
 pub(crate) type SlotId = usize;
@@ -102,15 +101,6 @@ pub(crate) fn dedup_slots(uses: &mut Vec<(SlotId, bool)>) {
         }
     }
     uses.truncate(kept);
-}
-
-/// The nodes' order (`Ord`), decided without a call to compare strings when the labels' first bytes
-/// differ, as they nearly always do among a unit's inputs (`Tree::order` sorts them many times a plan).
-fn node_cmp(a: &ObjectNode, b: &ObjectNode) -> Ordering {
-    match (a.label.as_bytes().first(), b.label.as_bytes().first()) {
-        (Some(x), Some(y)) if x != y => x.cmp(y),
-        _ => a.cmp(b),
-    }
 }
 
 /// What a unit does, in values (see `Tree::values`): its motion's id, its inputs' values sorted, a
@@ -293,9 +283,7 @@ impl<'kb> Tree<'kb> {
                     .map(|i| i.0)
                     .filter(|&s| !seen[s] && self.produced(s)),
             );
-            inputs.sort_by(|a, b| {
-                node_cmp(&self.slots[*a].node, &self.slots[*b].node).then(a.cmp(b))
-            });
+            inputs.sort_by(|a, b| self.slots[*a].node.cmp(&self.slots[*b].node).then(a.cmp(b)));
             inputs.dedup();
             stack.extend(inputs.iter().rev().map(|&s| (s, false)));
         }
