@@ -813,13 +813,23 @@ fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
         std::cmp::Reverse<NodeId>,
     );
     let mut ranked: Vec<(Key, NodeId)> = Vec::new();
+    // a node's food states and their categories, one buffer for all nodes
+    let mut food: Vec<&str> = Vec::new();
+    let mut cats: Vec<Category> = Vec::new();
     for &n in ctx.index.nodes_of(eq) {
         let node = &ctx.kb.nodes[n];
-        let food = food_states(node);
+        food.clear();
+        cats.clear();
+        for state in node.physical_states() {
+            let k = category(state);
+            if k != Category::Other {
+                food.push(state);
+                cats.push(k);
+            }
+        }
         let exact = food.contains(&s);
-        let cat = c != Category::Other && food.iter().any(|f| category(f) == c);
-        let raw =
-            c.is_starting() && ctx.kb.kitchen[n] && food.iter().all(|f| category(f).is_starting());
+        let cat = c != Category::Other && cats.contains(&c);
+        let raw = c.is_starting() && ctx.kb.kitchen[n] && cats.iter().all(|k| k.is_starting());
         if !(exact || cat || raw) {
             continue;
         }
