@@ -968,7 +968,9 @@ fn add_branch<'kb>(
             format!("'{eq}' taken as bought (FOON makes it only together with other ingredients)");
         return finish_branch(ctx, tree, eq, o, s, before, bare, String::new(), false, how);
     };
-    let mut slot_of: HashMap<NodeId, SlotId> = HashMap::default();
+    // the utensils below and the branch's nodes (a unit has a few): sized so that it does not grow
+    let mut slot_of: HashMap<NodeId, SlotId> =
+        HashMap::with_capacity_and_hasher(4 * r.units.len() + 16, Default::default());
     // utensils the tree already starts with are shared rather than duplicated
     for x in tree.live_slots() {
         if let Some(k) = tree.slots[x].kb {
