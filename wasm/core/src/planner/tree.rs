@@ -320,8 +320,12 @@ impl<'kb> Tree<'kb> {
     /// Live slots with the label, in slot order (asked many times per plan, often of a label the tree
     /// lacks: the labels are compared before the units are walked, and only for the few that match).
     pub fn slots_with_label(&self, label: &str) -> Vec<SlotId> {
-        let mut with: Vec<SlotId> = (0..self.slots.len())
-            .filter(|&s| self.slots[s].node.label == label)
+        let mut with: Vec<SlotId> = self
+            .slots
+            .iter()
+            .enumerate()
+            .filter(|(_, x)| x.node.label == label)
+            .map(|(s, _)| s)
             .collect();
         with.retain(|&s| self.is_live(s));
         with
