@@ -44,32 +44,37 @@ impl State {
     /// render every state of every node).
     pub fn text(&self) -> String {
         let mut out = String::with_capacity(self.name.len() + 16);
-        out.push_str(&self.name);
+        let _ = self.write_to(&mut out);
+        out
+    }
+
+    /// Writes `text` piece by piece (a `String` never fails to take them).
+    fn write_to(&self, out: &mut impl std::fmt::Write) -> std::fmt::Result {
+        out.write_str(&self.name)?;
         match &self.arg {
-            None => {}
+            None => Ok(()),
             Some(StateArg::Container(c)) => {
-                out.push_str(" [");
-                out.push_str(c);
-                out.push(']');
+                out.write_str(" [")?;
+                out.write_str(c)?;
+                out.write_char(']')
             }
             Some(StateArg::Ingredients(list)) => {
-                out.push_str(" {");
+                out.write_str(" {")?;
                 for (i, x) in list.iter().enumerate() {
                     if i > 0 {
-                        out.push(',');
+                        out.write_char(',')?;
                     }
-                    out.push_str(x);
+                    out.write_str(x)?;
                 }
-                out.push('}');
+                out.write_char('}')
             }
         }
-        out
     }
 }
 
 impl std::fmt::Display for State {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.text())
+        self.write_to(f)
     }
 }
 
@@ -158,11 +163,15 @@ impl ObjectNode {
 
 impl std::fmt::Display for ObjectNode {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let states: Vec<String> = self.states.iter().map(|s| s.to_string()).collect();
-        if states.is_empty() {
-            f.write_str(&self.label)
+        f.write_str(&self.label)?;
+        for (i, s) in self.states.iter().enumerate() {
+            f.write_str(if i == 0 { " (" } else { ", " })?;
+            write!(f, "{s}")?;
+        }
+        if self.states.is_empty() {
+            Ok(())
         } else {
-            write!(f, "{} ({})", self.label, states.join(", "))
+            f.write_str(")")
         }
     }
 }

@@ -83,7 +83,6 @@ pub fn plan(
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
     tree.normalize();
-    tree.drop_unneeded();
     let scheduled = schedule::schedule(&mut tree);
     if request.modify {
         schedule::confirm_planned(&tree, &scheduled.order, &mut outcomes);

@@ -4,7 +4,7 @@
 use super::index::PlannerIndex;
 use super::retrieve::{retrieve, retrieve_within};
 use super::states::{category, is_food_state, Category};
-use super::tree::{dedup_slots, edit_contents, map_contents, SlotId, TUnitId, Tree};
+use super::tree::{dedup_slots, edit_contents, map_contents, rename_item, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
@@ -175,13 +175,13 @@ pub(crate) fn modify<'kb>(
             continue;
         };
         w.low_confidence = eq != o && ctx.sim.low_confidence(o, &eq, sim);
-        let in_tree = !tree.slots_with_label(&eq).is_empty();
+        let slots = tree.slots_with_label(&eq);
         if !enabled {
-            judge_unmodified(tree, o, s, &eq, sim, in_tree, &mut w);
+            judge_unmodified(tree, o, s, &eq, sim, &slots, &mut w);
             works.push(w);
             continue;
         }
-        if !in_tree {
+        if slots.is_empty() {
             // case 4 from elsewhere in FOON (or an exact FOON label the reference tree lacks): attached
             // after pruning, so that it joins a unit that stays
             pending.push((works.len(), eq.clone(), s.to_string()));
@@ -195,13 +195,9 @@ pub(crate) fn modify<'kb>(
             continue;
         }
         // the equivalent is in the tree: substitute (cases 2, 4) or keep (cases 1, 3)
-        let tree_state = best_state_slot(tree, &eq, s)
-            .or_else(|| tree.slots_with_label(&eq).first().copied())
-            .map(|slot| state_text(&tree.slots[slot].node))
-            .unwrap_or_default();
         w.matched = Some(Match {
             label: eq.clone(),
-            state: tree_state,
+            state: tree_state(tree, &slots, s),
             similarity: sim,
         });
         if eq != o {
@@ -252,7 +248,7 @@ pub(crate) fn modify<'kb>(
         // an asked-for ingredient whose units served only pruned ones (butter spread on the bread that
         // was not asked for) comes back as a branch of its own, like a case-4 ingredient
         for (i, w) in works.iter().enumerate() {
-            if w.planned && !present.contains(w.label.as_str()) {
+            if w.planned && present.binary_search(&w.label.as_str()).is_err() {
                 let eq = w
                     .matched
                     .as_ref()
@@ -265,14 +261,11 @@ pub(crate) fn modify<'kb>(
             let w = &mut works[i];
             let o = query.ingredients[i].object.as_str();
             let lost = w.planned;
-            if !lost && !tree.slots_with_label(o).is_empty() {
+            let slots = tree.slots_with_label(o);
+            if !lost && !slots.is_empty() {
                 // an earlier ingredient of the same name brought it: one branch serves both
-                let tree_state = best_state_slot(tree, o, &s)
-                    .or_else(|| tree.slots_with_label(o).first().copied())
-                    .map(|x| state_text(&tree.slots[x].node))
-                    .unwrap_or_default();
                 if let Some(m) = w.matched.as_mut() {
-                    m.state = tree_state;
+                    m.state = tree_state(tree, &slots, &s);
                 }
                 settle_state(ctx, tree, &eq, o, &s, &mut restated, w);
                 continue;
@@ -348,7 +341,8 @@ fn settle_state<'kb>(
     restated: &mut HashMap<String, String>,
     w: &mut Work,
 ) {
-    let state_ok = best_state_slot(tree, o, s).is_some();
+    let slots = tree.slots_with_label(o);
+    let state_ok = best_state_slot(tree, &slots, s).is_some();
     w.case = Some(match (eq == o, state_ok) {
         (true, true) => 1,
         (false, true) => 2,
@@ -359,7 +353,7 @@ fn settle_state<'kb>(
         w.reasons.push(format!(
             "state '{s}' is not in the state taxonomy: kept the tree's state"
         ));
-    } else if state_ok && best_exact(tree, o, s).is_none() {
+    } else if state_ok && best_exact(tree, &slots, s).is_none() {
         w.reasons.push(format!(
             "state '{s}' matched by category ({})",
             category(s).name()
@@ -468,20 +462,17 @@ fn judge_unmodified(
     s: &str,
     eq: &str,
     sim: f32,
-    in_tree: bool,
+    slots: &[SlotId],
     w: &mut Work,
 ) {
-    if !in_tree {
+    if slots.is_empty() {
         w.case = Some(4);
         w.reasons
             .push("not in the reference task tree (modification off)".to_string());
         return;
     }
-    let slot = best_state_slot(tree, eq, s);
-    let state = slot
-        .or_else(|| tree.slots_with_label(eq).first().copied())
-        .map(|x| state_text(&tree.slots[x].node))
-        .unwrap_or_default();
+    let slot = best_state_slot(tree, slots, s);
+    let state = state_text(&tree.slots[slot.unwrap_or(slots[0])].node);
     w.case = Some(match (eq == o, slot.is_some()) {
         (true, true) => 1,
         (false, true) => 2,
@@ -500,32 +491,41 @@ fn judge_unmodified(
     }
 }
 
-fn best_exact(tree: &Tree, label: &str, s: &str) -> Option<SlotId> {
-    tree.slots_with_label(label)
-        .into_iter()
+/// The state an ingredient has in the tree, given its label's live slots (`Tree::slots_with_label`,
+/// not empty): that of its slot in the state `s` (see `best_state_slot`), else of the first.
+fn tree_state(tree: &Tree, slots: &[SlotId], s: &str) -> String {
+    let slot = best_state_slot(tree, slots, s).unwrap_or(slots[0]);
+    state_text(&tree.slots[slot].node)
+}
+
+/// Of a label's live slots, the first in the state `s`.
+fn best_exact(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
+    slots
+        .iter()
+        .copied()
         .find(|&x| tree.slots[x].node.physical_states().any(|p| p == s))
 }
 
-/// A slot of `label` in the given state: exactly, else by category; a starting state matches a leaf in
-/// a starting state; a state outside the taxonomy matches any.
-fn best_state_slot(tree: &Tree, label: &str, s: &str) -> Option<SlotId> {
-    if let Some(x) = best_exact(tree, label, s) {
+/// Of a label's live slots, one in the state `s`: exactly, else by category; a starting state matches a
+/// leaf in a starting state; a state outside the taxonomy matches any.
+fn best_state_slot(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
+    if let Some(x) = best_exact(tree, slots, s) {
         return Some(x);
     }
-    let slots = tree.slots_with_label(label);
     let c = category(s);
     if c == Category::Other {
         return slots.first().copied();
     }
+    let mut slots = slots.iter().copied();
     if c.is_starting() {
-        return slots.into_iter().find(|&x| {
+        return slots.find(|&x| {
             !tree.produced(x)
                 && food_states(&tree.slots[x].node)
                     .iter()
                     .all(|f| category(f).is_starting())
         });
     }
-    slots.into_iter().find(|&x| {
+    slots.find(|&x| {
         food_states(&tree.slots[x].node)
             .iter()
             .any(|f| category(f) == c)
@@ -619,8 +619,7 @@ fn restate<'kb>(
         let before = tree.slots.len();
         let added = tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
         if eq != o {
-            let new: Vec<SlotId> = (before..tree.slots.len()).collect();
-            tree.rename_in(&new, eq, o);
+            tree.rename_in(before..tree.slots.len(), eq, o);
         }
         return Ok(format!(
             "added {} unit(s) making the tree's '{leaf_state}' {o} from '{s}'",
@@ -688,7 +687,7 @@ fn restate<'kb>(
         .map(str::to_string)
         .collect();
     let new_node = ObjectNode::new(o, vec![State::plain(s)]);
-    let consumers = tree.consumers(leaf, &order);
+    let consumers: Vec<TUnitId> = tree.consumers(leaf, &order).collect();
     let new_slot = tree.add_slot(new_node);
     let mut inputs = vec![(leaf, true)];
     if let Some(t) = ctx.index.utensil_for(&motion) {
@@ -714,7 +713,6 @@ fn utensil_slot(kb: &KnowledgeBase, tree: &mut Tree, n: NodeId) -> SlotId {
     let node = &kb.nodes[n];
     if let Some(x) = tree
         .live_slots()
-        .into_iter()
         .find(|&x| *tree.slots[x].node == *node && !tree.produced(x))
     {
         return x;
@@ -731,15 +729,16 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
         let ing_in: Vec<&str> = unit
             .inputs
             .iter()
-            .map(|i| tree.slots[i.0].node.label.as_str())
-            .filter(|l| !is_utensil(l))
+            .map(|i| &tree.slots[i.0])
+            .filter(|x| !x.utensil)
+            .map(|x| x.node.label.as_str())
             .collect();
         let ing_out_ok = unit
             .outputs
             .iter()
-            .map(|x| tree.slots[x.0].node.label.as_str())
-            .filter(|l| !is_utensil(l))
-            .all(|l| l == eq);
+            .map(|o| &tree.slots[o.0])
+            .filter(|x| !x.utensil)
+            .all(|x| x.node.label == eq);
         !ing_in.is_empty() && ing_in.iter().all(|&l| l == eq) && ing_out_ok
     };
     let branch: Vec<TUnitId> = order.iter().copied().filter(|&u| is_private(u)).collect();
@@ -769,13 +768,7 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
         {
             return s;
         }
-        let mut renamed = map_contents(node, &mut |list| {
-            for item in list.iter_mut() {
-                if item == eq {
-                    *item = o.to_string();
-                }
-            }
-        });
+        let mut renamed = map_contents(node, &mut |list| rename_item(list, eq, o));
         if renamed.label == eq {
             renamed.label = o.to_string();
         }
@@ -820,13 +813,23 @@ fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
         std::cmp::Reverse<NodeId>,
     );
     let mut ranked: Vec<(Key, NodeId)> = Vec::new();
+    // a node's food states and their categories, one buffer for all nodes
+    let mut food: Vec<&str> = Vec::new();
+    let mut cats: Vec<Category> = Vec::new();
     for &n in ctx.index.nodes_of(eq) {
         let node = &ctx.kb.nodes[n];
-        let food = food_states(node);
+        food.clear();
+        cats.clear();
+        for state in node.physical_states() {
+            let k = category(state);
+            if k != Category::Other {
+                food.push(state);
+                cats.push(k);
+            }
+        }
         let exact = food.contains(&s);
-        let cat = c != Category::Other && food.iter().any(|f| category(f) == c);
-        let raw =
-            c.is_starting() && ctx.kb.kitchen[n] && food.iter().all(|f| category(f).is_starting());
+        let cat = c != Category::Other && cats.contains(&c);
+        let raw = c.is_starting() && ctx.kb.kitchen[n] && cats.iter().all(|k| k.is_starting());
         if !(exact || cat || raw) {
             continue;
         }
@@ -879,9 +882,11 @@ fn attach_point(
     o: &str,
     c: Category,
 ) -> Option<TUnitId> {
-    let goal_label = tree.slots[tree.goal].node.label.clone();
-    let mut best: Option<(TUnitId, (bool, bool, usize, usize))> = None;
-    for (pos, &u) in order.iter().enumerate() {
+    let goal_label = tree.slots[tree.goal].node.label.as_str();
+    // closest to the goal first: a unit further from it must do strictly better, so its kin
+    // ingredients are worked out only when they could make it
+    let mut best: Option<(TUnitId, (bool, bool, usize))> = None;
+    for &u in order.iter().rev() {
         let unit = &tree.units[u];
         let takes = unit
             .outputs
@@ -896,20 +901,27 @@ fn attach_point(
         }
         // a unit that adds an ingredient, not one that only moves the dish itself
         let adds = unit.inputs.iter().any(|i| {
-            let n = &tree.slots[i.0].node;
-            i.1 && !is_utensil(&n.label) && n.label != goal_label
+            let x = &tree.slots[i.0];
+            i.1 && !x.utensil && x.node.label != goal_label
         });
+        let beats = |kin: bool| {
+            let key = (adds, kin, usize::MAX - pref);
+            best.as_ref().is_none_or(|(_, b)| key > *b).then_some(key)
+        };
+        if beats(true).is_none() {
+            continue;
+        }
         let kin = unit.inputs.iter().any(|i| {
-            let n = &tree.slots[i.0].node;
-            !is_utensil(&n.label)
+            let x = &tree.slots[i.0];
+            let n = &x.node;
+            !x.utensil
                 && n.label != o
                 && ((!matches!(c, Category::Whole | Category::Other) && node_category(n) == c) || {
                     let sim = ctx.scorer.pair(o, &n.label);
                     ctx.sim.accepts(sim) && sim < 1.0
                 })
         });
-        let key = (adds, kin, usize::MAX - pref, pos);
-        if best.as_ref().is_none_or(|(_, b)| key > *b) {
+        if let Some(key) = beats(kin) {
             best = Some((u, key));
         }
     }
@@ -956,11 +968,13 @@ fn add_branch<'kb>(
             format!("'{eq}' taken as bought (FOON makes it only together with other ingredients)");
         return finish_branch(ctx, tree, eq, o, s, before, bare, String::new(), false, how);
     };
-    let mut slot_of: HashMap<NodeId, SlotId> = HashMap::default();
+    // the utensils below and the branch's nodes (a unit has a few): sized so that it does not grow
+    let mut slot_of: HashMap<NodeId, SlotId> =
+        HashMap::with_capacity_and_hasher(4 * r.units.len() + 16, Default::default());
     // utensils the tree already starts with are shared rather than duplicated
     for x in tree.live_slots() {
         if let Some(k) = tree.slots[x].kb {
-            if is_utensil(&tree.slots[x].node.label) && !tree.produced(x) {
+            if tree.slots[x].utensil && !tree.produced(x) {
                 slot_of.entry(k).or_insert(x);
             }
         }
@@ -1032,8 +1046,7 @@ fn finish_branch<'kb>(
         }
     }
     if eq != o {
-        let new: Vec<SlotId> = (before..tree.slots.len()).collect();
-        tree.rename_in(&new, eq, o);
+        tree.rename_in(before..tree.slots.len(), eq, o);
         how = format!("'{eq}' substituted with '{o}': {how}");
     }
     let order = tree.order();
@@ -1061,15 +1074,15 @@ fn map_states(node: &ObjectNode, s: &str) -> ObjectNode {
 fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
     // asked of every name in every list of every slot: a hash set rather than the ordered one
     let labels: HashSet<&str> = labels.iter().map(String::as_str).collect();
-    let mut touched: HashSet<SlotId> = HashSet::default();
-    for (i, slot) in tree.slots.iter_mut().enumerate() {
+    let mut touched = vec![false; tree.slots.len()];
+    for (slot, touched) in tree.slots.iter_mut().zip(touched.iter_mut()) {
         if !slot.node.listed().any(|x| labels.contains(x)) {
             continue;
         }
         edit_contents(slot.node.to_mut(), &mut |list| {
             list.retain(|x| !labels.contains(x.as_str()))
         });
-        touched.insert(i);
+        *touched = true;
     }
     for u in tree.units.iter_mut() {
         if u.alive
@@ -1077,18 +1090,19 @@ fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
             && u.inputs
                 .iter()
                 .chain(u.outputs.iter())
-                .any(|x| touched.contains(&x.0))
+                .any(|x| touched[x.0])
         {
             u.origin = Origin::Renamed;
         }
     }
 }
 
-/// Whether a unit with these inputs handles any ingredient: a non-utensil input or a listed content.
-fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &HashSet<SlotId>) -> bool {
+/// Whether a unit with these inputs handles any ingredient: a non-utensil input or a listed content
+/// (`gone` marks the slots pruned).
+fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &[bool]) -> bool {
     inputs.iter().any(|&(x, _)| {
-        let n = &tree.slots[x].node;
-        !gone.contains(&x) && (!is_utensil(&n.label) || n.holds_something())
+        let slot = &tree.slots[x];
+        !gone[x] && (!slot.utensil || slot.node.holds_something())
     })
 }
 
@@ -1096,32 +1110,27 @@ fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &HashSet<SlotId>) -
 /// held it pass on unchanged, and it leaves every `contains {…}` list. Returns the removed labels.
 fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     let order = tree.order();
-    let live = tree.live_slots();
+    let live: Vec<SlotId> = tree.live_slots().collect();
     let starting: BTreeSet<String> = live
         .iter()
-        .filter(|&&x| !tree.produced(x))
+        .filter(|&&x| !tree.produced(x) && !tree.slots[x].utensil)
         .map(|&x| tree.slots[x].node.label.clone())
-        .filter(|l| !is_utensil(l))
         .collect();
     let mut pruned: BTreeSet<String> = starting.difference(keep).cloned().collect();
     if pruned.is_empty() {
         return Vec::new();
     }
-    let had: HashMap<TUnitId, bool> = order
-        .iter()
-        .map(|&u| {
-            (
-                u,
-                handles_any(tree, &tree.units[u].inputs, &HashSet::default()),
-            )
-        })
-        .collect();
+    // per slot, whether it is pruned
+    let mut gone = vec![false; tree.slots.len()];
+    // per unit, whether it handled an ingredient before pruning
+    let mut had = vec![false; tree.units.len()];
+    for &u in &order {
+        had[u] = handles_any(tree, &tree.units[u].inputs, &gone);
+    }
     drop_contents(tree, &pruned);
-    let mut gone: HashSet<SlotId> = live
-        .iter()
-        .copied()
-        .filter(|&x| pruned.contains(&tree.slots[x].node.label))
-        .collect();
+    for &x in &live {
+        gone[x] = pruned.contains(&tree.slots[x].node.label);
+    }
     let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
     let resolve = |alias: &HashMap<SlotId, SlotId>, mut s: SlotId| {
         for _ in 0..10_000 {
@@ -1138,16 +1147,16 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
             .inputs
             .iter()
             .map(|&(x, m)| (resolve(&alias, x), m))
-            .filter(|i| !gone.contains(&i.0))
+            .filter(|i| !gone[i.0])
             .collect();
         let outputs: Vec<(SlotId, bool)> = tree.units[u]
             .outputs
             .iter()
             .copied()
-            .filter(|o| !gone.contains(&o.0))
+            .filter(|o| !gone[o.0])
             .collect();
         let makes_goal = outputs.iter().any(|o| o.0 == goal);
-        let lost_all = had.get(&u).copied().unwrap_or(false) && !handles_any(tree, &inputs, &gone);
+        let lost_all = had[u] && !handles_any(tree, &inputs, &gone);
         // nothing new comes out: every output is one of the inputs as they are now
         let no_op = outputs.iter().all(|o| {
             inputs
@@ -1157,6 +1166,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
         if (lost_all || no_op || outputs.is_empty()) && !makes_goal {
             tree.units[u].alive = false;
             for &(x, _) in &outputs {
+                let utensil = tree.slots[x].utensil;
                 let node = &tree.slots[x].node;
                 let same = inputs
                     .iter()
@@ -1173,8 +1183,8 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
                     Some(_) => {}
                     None => {
                         let label = node.label.clone();
-                        gone.insert(x);
-                        if !is_utensil(&label) && !keep.contains(&label) {
+                        gone[x] = true;
+                        if !utensil && !keep.contains(&label) {
                             pruned.insert(label);
                         }
                     }
@@ -1189,13 +1199,9 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     }
     // the goal may have been passed through a removed unit
     // labels made only by removed units leave the lists of contents as well
-    let still: BTreeSet<String> = tree
-        .live_slots()
-        .into_iter()
-        .filter(|x| !gone.contains(x))
-        .map(|x| tree.slots[x].node.label.clone())
-        .collect();
-    pruned.retain(|l| !still.contains(l) || starting.contains(l));
+    let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
+    pruned
+        .retain(|l| starting.contains(l) || !still.iter().any(|&x| tree.slots[x].node.label == *l));
     drop_contents(tree, &pruned);
     pruned.into_iter().collect()
 }

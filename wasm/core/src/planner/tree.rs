@@ -9,7 +9,7 @@ use crate::plan::Origin;
 use crate::taxonomy::is_utensil;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::borrow::Cow;
-use std::collections::BTreeSet;
+use std::ops::Range;
 
 pub(crate) type SlotId = usize;
 pub(crate) type TUnitId = usize;
@@ -20,6 +20,17 @@ pub(crate) struct Slot<'kb> {
     pub node: Cow<'kb, ObjectNode>,
     /// The knowledge-base node it was made from, if any.
     pub kb: Option<NodeId>,
+    /// Whether the label is a utensil's, set with the label (asked of nearly every slot the planner
+    /// touches: a flag instead of hashing the label each time).
+    pub utensil: bool,
+}
+
+impl Slot<'_> {
+    /// Gives the slot another label, keeping `utensil` true to it.
+    fn relabel(&mut self, to: &str) {
+        self.node.to_mut().label = to.to_string();
+        self.utensil = is_utensil(to);
+    }
 }
 
 #[derive(Clone, Debug)]
@@ -41,16 +52,16 @@ pub(crate) struct Tree<'kb> {
     pub goal: SlotId,
 }
 
-/// Rewrites each of a node's lists of contents in place (an emptied `contains` list becomes `empty`);
-/// states stay sorted and unique.
+/// Rewrites each of a node's lists of contents in place with `f`, which keeps it sorted and unique as
+/// every list is (the reader makes them so); an emptied `contains` list becomes `empty`, and states
+/// stay sorted and unique.
 pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<String>)) {
     node.states.retain_mut(|s| {
         let Some(StateArg::Ingredients(list)) = &mut s.arg else {
             return true;
         };
         f(list);
-        list.sort();
-        list.dedup();
+        debug_assert!(list.windows(2).all(|w| w[0] < w[1]));
         if !list.is_empty() {
             return true;
         }
@@ -64,6 +75,21 @@ pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<St
     node.states.dedup();
 }
 
+/// Adds an item to a list of contents (sorted and unique) unless it is there.
+pub(crate) fn add_item(list: &mut Vec<String>, item: &str) {
+    if let Err(at) = list.binary_search_by(|x| x.as_str().cmp(item)) {
+        list.insert(at, item.to_string());
+    }
+}
+
+/// Renames an item of a list of contents (sorted and unique), which stays sorted and unique.
+pub(crate) fn rename_item(list: &mut Vec<String>, from: &str, to: &str) {
+    if let Ok(at) = list.binary_search_by(|x| x.as_str().cmp(from)) {
+        list.remove(at);
+        add_item(list, to);
+    }
+}
+
 /// Keeps the first use of each slot, in order. In place: a unit has a handful of inputs, and this runs
 /// for every unit of every round of `normalize`.
 pub(crate) fn dedup_slots(uses: &mut Vec<(SlotId, bool)>) {
@@ -75,6 +101,20 @@ pub(crate) fn dedup_slots(uses: &mut Vec<(SlotId, bool)>) {
         }
     }
     uses.truncate(kept);
+}
+
+/// What a unit does, in values (see `Tree::values`): its motion's id, its inputs' values sorted, a
+/// separator, its outputs' values sorted. Units with equal keys are the same step of a plan.
+fn value_key(unit: &TUnit, motion: usize, value: &[usize]) -> Vec<usize> {
+    let mut key = Vec::with_capacity(unit.inputs.len() + unit.outputs.len() + 2);
+    key.push(motion);
+    key.extend(unit.inputs.iter().map(|i| value[i.0]));
+    key[1..].sort_unstable();
+    key.push(usize::MAX);
+    let outs = key.len();
+    key.extend(unit.outputs.iter().map(|o| value[o.0]));
+    key[outs..].sort_unstable();
+    key
 }
 
 /// A copy of a node with its lists of contents rewritten (see `edit_contents`).
@@ -97,7 +137,8 @@ impl<'kb> Tree<'kb> {
     }
 
     fn new_slot(&mut self, node: Cow<'kb, ObjectNode>, kb: Option<NodeId>) -> SlotId {
-        self.slots.push(Slot { node, kb });
+        let utensil = is_utensil(&node.label);
+        self.slots.push(Slot { node, kb, utensil });
         self.producer.push(None);
         self.slots.len() - 1
     }
@@ -208,7 +249,9 @@ impl<'kb> Tree<'kb> {
         // dense ids: flags by index are cheaper than hashing on this hot path
         let mut done = vec![false; self.units.len()];
         let mut seen = vec![false; self.slots.len()];
-        let mut stack: Vec<(SlotId, bool)> = Vec::with_capacity(2 * self.slots.len() + 1);
+        // deep enough for most trees, and small: a request of a kilobyte or more makes the allocator
+        // sweep its free lists
+        let mut stack: Vec<(SlotId, bool)> = Vec::with_capacity(self.units.len() + 8);
         stack.push((self.goal, false));
         let mut inputs: Vec<SlotId> = Vec::with_capacity(16);
         while let Some((slot, expanded)) = stack.pop() {
@@ -230,26 +273,37 @@ impl<'kb> Tree<'kb> {
             }
             seen[slot] = true;
             stack.push((slot, true));
+            // only the inputs a live unit makes, not yet visited, lead anywhere: the others are
+            // neither sorted nor stacked (most units then have one or none to sort)
             inputs.clear();
-            inputs.extend(self.units[u].inputs.iter().map(|i| i.0));
+            inputs.extend(
+                self.units[u]
+                    .inputs
+                    .iter()
+                    .map(|i| i.0)
+                    .filter(|&s| !seen[s] && self.produced(s)),
+            );
             inputs.sort_by(|a, b| self.slots[*a].node.cmp(&self.slots[*b].node).then(a.cmp(b)));
             inputs.dedup();
-            for &s in inputs.iter().rev() {
-                if !seen[s] {
-                    stack.push((s, false));
-                }
-            }
+            stack.extend(inputs.iter().rev().map(|&s| (s, false)));
         }
         order
     }
 
     /// Marks units the goal does not need as dead.
     pub fn drop_unneeded(&mut self) {
-        let keep: HashSet<TUnitId> = self.order().into_iter().collect();
-        for (i, u) in self.units.iter_mut().enumerate() {
-            if !keep.contains(&i) {
-                u.alive = false;
-            }
+        let order = self.order();
+        self.keep_only(&order);
+    }
+
+    /// Marks units outside `order` (the tree's order) as dead; the order stays the same.
+    fn keep_only(&mut self, order: &[TUnitId]) {
+        let mut keep = vec![false; self.units.len()];
+        for &u in order {
+            keep[u] = true;
+        }
+        for (u, keep) in self.units.iter_mut().zip(keep) {
+            u.alive &= keep;
         }
     }
 
@@ -258,24 +312,32 @@ impl<'kb> Tree<'kb> {
     }
 
     /// Slots used by live units, and the goal, ascending.
-    pub fn live_slots(&self) -> Vec<SlotId> {
+    pub fn live_slots(&self) -> impl Iterator<Item = SlotId> {
         let live = self.live_marks();
-        let mut out = Vec::with_capacity(self.slots.len());
-        out.extend((0..self.slots.len()).filter(|&s| live[s]));
-        out
+        (0..self.slots.len()).filter(move |&s| live[s])
     }
 
     /// Live slots with the label, in slot order (asked many times per plan, often of a label the tree
-    /// lacks: the labels are compared before the units are walked).
+    /// lacks: the labels are compared before the units are walked, and only for the few that match).
     pub fn slots_with_label(&self, label: &str) -> Vec<SlotId> {
-        let mut with: Vec<SlotId> = (0..self.slots.len())
-            .filter(|&s| self.slots[s].node.label == label)
+        let mut with: Vec<SlotId> = self
+            .slots
+            .iter()
+            .enumerate()
+            .filter(|(_, x)| x.node.label == label)
+            .map(|(s, _)| s)
             .collect();
-        if !with.is_empty() {
-            let live = self.live_marks();
-            with.retain(|&s| live[s]);
-        }
+        with.retain(|&s| self.is_live(s));
         with
+    }
+
+    /// Whether the slot is used by a live unit, or is the goal (its live producer's outputs are looked
+    /// at first: a made slot is nearly always still among them).
+    fn is_live(&self, s: SlotId) -> bool {
+        let uses = |u: &TUnit| u.inputs.iter().chain(u.outputs.iter()).any(|x| x.0 == s);
+        s == self.goal
+            || self.producer[s].is_some_and(|p| self.units[p].alive && uses(&self.units[p]))
+            || self.alive_units().any(|(_, u)| uses(u))
     }
 
     /// Per slot: used by a live unit, or the goal (marks by index: no sort).
@@ -292,51 +354,52 @@ impl<'kb> Tree<'kb> {
         live
     }
 
-    /// Ingredient labels in the tree (not utensils, not the goal's own label).
-    pub fn ingredient_labels(&self) -> BTreeSet<&str> {
+    /// Ingredient labels in the tree (not utensils, not the goal's own label), sorted and unique.
+    pub fn ingredient_labels(&self) -> Vec<&str> {
         let goal = self.slots[self.goal].node.label.as_str();
-        self.live_slots()
-            .into_iter()
+        let mut labels: Vec<&str> = self
+            .live_slots()
+            .filter(|&s| !self.slots[s].utensil)
             .map(|s| self.slots[s].node.label.as_str())
-            .filter(|&l| l != goal && !is_utensil(l))
-            .collect()
+            .filter(|&l| l != goal)
+            .collect();
+        labels.sort_unstable();
+        labels.dedup();
+        labels
     }
 
     /// Live units that take the slot as input, in execution order.
-    pub fn consumers(&self, s: SlotId, order: &[TUnitId]) -> Vec<TUnitId> {
+    pub fn consumers<'a>(
+        &'a self,
+        s: SlotId,
+        order: &'a [TUnitId],
+    ) -> impl Iterator<Item = TUnitId> + 'a {
         order
             .iter()
             .copied()
-            .filter(|&u| self.units[u].inputs.iter().any(|i| i.0 == s))
-            .collect()
+            .filter(move |&u| self.units[u].inputs.iter().any(|i| i.0 == s))
     }
 
     /// Renames an object in the given slots, in their labels and their lists of contents.
-    pub fn rename_in(&mut self, slots: &[SlotId], from: &str, to: &str) {
-        let mut touched: HashSet<SlotId> = HashSet::default();
-        for &s in slots {
-            let Some(slot) = self.slots.get_mut(s) else {
-                continue;
-            };
+    pub fn rename_in(&mut self, slots: Range<SlotId>, from: &str, to: &str) {
+        let mut touched = vec![false; self.slots.len()];
+        for s in slots {
+            let slot = &mut self.slots[s];
             if slot.node.label != from && !slot.node.listed().any(|i| i == from) {
                 continue;
             }
-            edit_contents(slot.node.to_mut(), &mut |list| {
-                for item in list.iter_mut().filter(|item| *item == from) {
-                    *item = to.to_string();
-                }
-            });
+            edit_contents(slot.node.to_mut(), &mut |list| rename_item(list, from, to));
             if slot.node.label == from {
-                slot.node.to_mut().label = to.to_string();
+                slot.relabel(to);
             }
-            touched.insert(s);
+            touched[s] = true;
         }
         for u in self.units.iter_mut() {
             if u.origin == Origin::Reference
                 && u.inputs
                     .iter()
                     .chain(u.outputs.iter())
-                    .any(|x| touched.contains(&x.0))
+                    .any(|x| touched[x.0])
             {
                 u.origin = Origin::Renamed;
             }
@@ -344,8 +407,7 @@ impl<'kb> Tree<'kb> {
     }
 
     pub fn rename_everywhere(&mut self, from: &str, to: &str) {
-        let all: Vec<SlotId> = (0..self.slots.len()).collect();
-        self.rename_in(&all, from, to);
+        self.rename_in(0..self.slots.len(), from, to);
     }
 
     /// Adds `label` to the contents of the unit's receiving outputs (those with the longest `contains`
@@ -367,57 +429,58 @@ impl<'kb> Tree<'kb> {
             .filter(|x| x.1 == longest)
             .map(|x| x.0)
             .collect();
-        let mut seen: HashSet<SlotId> = HashSet::default();
+        // a handful of slots: a list is cheaper than a hash set
+        let mut seen: Vec<SlotId> = Vec::with_capacity(8);
         while let Some(s) = work.pop() {
-            if !seen.insert(s) {
+            if seen.contains(&s) {
                 continue;
             }
-            if self.slots[s].node.contents().any(|x| x == label) {
+            seen.push(s);
+            let node = &self.slots[s].node;
+            if node.contents().any(|x| x == label) {
                 continue;
             }
             // the nodes taking over its contents, judged before the edit (it changes only `s`)
-            let mut next = Vec::new();
-            let node = &self.slots[s].node;
-            let old = node.ingredient_refs();
             for v in self.consumers(s, order) {
                 for &(o, _) in &self.units[v].outputs {
                     let theirs = &self.slots[o].node;
-                    let took_over = old.iter().all(|x| theirs.contents().any(|c| c == *x));
+                    let took_over = node.contents().all(|x| theirs.contents().any(|c| c == x));
                     let same_vessel = theirs.label == node.label;
                     if theirs.holds_something() && (took_over || same_vessel) && o != s {
-                        next.push(o);
+                        work.push(o);
                     }
                 }
             }
             edit_contents(self.slots[s].node.to_mut(), &mut |list| {
-                list.push(label.to_string())
+                add_item(list, label)
             });
-            work.extend(next);
         }
     }
 
     /// Makes the tree sound at the level of node *values*, which is what a plan shows: a unit identical
     /// to an earlier one is dropped (its products are the earlier one's), and a unit that makes nothing
     /// new that a later unit uses (only passes its inputs on) is dropped, its outputs replaced by the
-    /// equal inputs. Repeats until nothing changes.
+    /// equal inputs. Repeats until nothing changes; units the goal does not need are dropped.
     pub fn normalize(&mut self) {
         // slots keep their nodes here: compare values by interned id rather than by node
         let value = self.values();
+        let motion = self.motion_ids();
+        // the tree's order, computed again only after a change
+        let mut order = self.order();
         for _ in 0..16 {
-            let mut changed = self.join_equal_leaves(&value);
-            let order = self.order();
+            let mut changed = self.join_equal_leaves(&value, &order);
+            if changed {
+                order = self.order();
+            }
             // position of the last unit using each slot (inputs as they are at the start of the round)
-            let cap = order.len() * 4;
-            let mut last_use: HashMap<SlotId, usize> =
-                HashMap::with_capacity_and_hasher(cap, Default::default());
+            let mut last_use: Vec<Option<usize>> = vec![None; self.slots.len()];
             for (pos, &u) in order.iter().enumerate() {
                 for i in &self.units[u].inputs {
-                    last_use.insert(i.0, pos);
+                    last_use[i.0] = Some(pos);
                 }
             }
             let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
-            type Key = (Vec<usize>, String, Vec<usize>);
-            let mut first: HashMap<Key, TUnitId> =
+            let mut first: HashMap<Vec<usize>, TUnitId> =
                 HashMap::with_capacity_and_hasher(order.len(), Default::default());
             for (pos, &u) in order.iter().enumerate() {
                 {
@@ -434,11 +497,7 @@ impl<'kb> Tree<'kb> {
                 }
                 let unit = &self.units[u];
                 let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
-                let mut ins: Vec<usize> = unit.inputs.iter().map(|i| value[i.0]).collect();
-                ins.sort_unstable();
-                let mut outs: Vec<usize> = unit.outputs.iter().map(|o| value[o.0]).collect();
-                outs.sort_unstable();
-                let key = (ins, unit.motion.clone(), outs);
+                let key = value_key(unit, motion[u], &value);
                 if !makes_goal {
                     if let Some(&f) = first.get(&key) {
                         let theirs = self.units[f].outputs.clone();
@@ -454,13 +513,13 @@ impl<'kb> Tree<'kb> {
                         continue;
                     }
                 }
-                let ins = key.0.clone();
-                first.insert(key, u);
                 // new products a later unit uses (or the goal)
+                let ins = &key[1..=unit.inputs.len()];
                 let useful = unit.outputs.iter().any(|&(o, _)| {
                     !ins.contains(&value[o])
-                        && (o == self.goal || last_use.get(&o).is_some_and(|&l| l > pos))
+                        && (o == self.goal || last_use[o].is_some_and(|l| l > pos))
                 });
+                first.insert(key, u);
                 if makes_goal && !useful {
                     // the goal's last unit changes nothing: the goal is its equal input
                     if let Some(&(i, _)) =
@@ -487,6 +546,8 @@ impl<'kb> Tree<'kb> {
                 }
             }
             if !changed {
+                // as after a round that changed something, the units the goal does not need go
+                self.keep_only(&order);
                 break;
             }
             // apply the last aliases to every live unit, then forget units the goal no longer needs
@@ -503,8 +564,22 @@ impl<'kb> Tree<'kb> {
                 }
                 dedup_slots(&mut unit.inputs);
             }
-            self.drop_unneeded();
+            order = self.order();
+            self.keep_only(&order);
         }
+    }
+
+    /// An id per unit, equal for units with the same motion.
+    fn motion_ids(&self) -> Vec<usize> {
+        let mut ids: HashMap<&str, usize> =
+            HashMap::with_capacity_and_hasher(self.units.len(), Default::default());
+        self.units
+            .iter()
+            .map(|u| {
+                let next = ids.len();
+                *ids.entry(u.motion.as_str()).or_insert(next)
+            })
+            .collect()
     }
 
     /// An id per slot, equal for slots with equal nodes.
@@ -522,26 +597,27 @@ impl<'kb> Tree<'kb> {
 
     /// A starting slot equal in value to a slot some unit makes is the same node in the plan: it is
     /// joined to the made one, so its users come after its maker, when that makes no cycle.
-    fn join_equal_leaves(&mut self, value: &[usize]) -> bool {
-        let order = self.order();
-        let mut made: HashMap<usize, SlotId> =
-            HashMap::with_capacity_and_hasher(2 * order.len(), Default::default());
-        for &u in &order {
-            let ins: Vec<SlotId> = self.units[u].inputs.iter().map(|i| i.0).collect();
-            for &(o, _) in &self.units[u].outputs {
-                if self.producer[o] == Some(u) && !ins.iter().any(|&i| value[i] == value[o]) {
-                    made.entry(value[o]).or_insert(o);
+    fn join_equal_leaves(&mut self, value: &[usize], order: &[TUnitId]) -> bool {
+        // per value, the first slot made with it (value ids are below the number of slots)
+        let mut made: Vec<Option<SlotId>> = vec![None; self.slots.len()];
+        for &u in order {
+            let unit = &self.units[u];
+            for &(o, _) in &unit.outputs {
+                if self.producer[o] == Some(u)
+                    && !unit.inputs.iter().any(|i| value[i.0] == value[o])
+                {
+                    made[value[o]].get_or_insert(o);
                 }
             }
         }
         let mut changed = false;
-        for &v in &order {
+        for &v in order {
             for k in 0..self.units[v].inputs.len() {
                 let x = self.units[v].inputs[k].0;
                 if self.produced(x) {
                     continue;
                 }
-                let Some(&y) = made.get(&value[x]) else {
+                let Some(y) = made[value[x]] else {
                     continue;
                 };
                 if y == x || self.depends_on_unit(y, v) {
