@@ -43,7 +43,14 @@ impl State {
     /// The state as FOON writes it, `in [bowl]` or `contains {egg,milk}` (built without `fmt`: plans
     /// render every state of every node).
     pub fn text(&self) -> String {
-        let mut out = String::with_capacity(self.name.len() + 16);
+        let arg_len = match &self.arg {
+            None => 0,
+            Some(StateArg::Container(c)) => c.len() + 3,
+            Some(StateArg::Ingredients(list)) => {
+                3 + list.iter().map(String::len).sum::<usize>() + list.len().saturating_sub(1)
+            }
+        };
+        let mut out = String::with_capacity(self.name.len() + arg_len);
         out.push_str(&self.name);
         match &self.arg {
             None => {}
