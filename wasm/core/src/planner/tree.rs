@@ -403,49 +403,63 @@ impl<'kb> Tree<'kb> {
     pub fn normalize(&mut self) {
         // slots keep their nodes here: compare values by interned id rather than by node
         let value = self.values();
+        // motions by interned id too: a unit's key then borrows nothing from the units a round edits
+        let motion: Vec<usize> = {
+            let mut ids: HashMap<&str, usize> =
+                HashMap::with_capacity_and_hasher(self.units.len(), Default::default());
+            self.units
+                .iter()
+                .map(|u| {
+                    let next = ids.len();
+                    *ids.entry(u.motion.as_str()).or_insert(next)
+                })
+                .collect()
+        };
         for _ in 0..16 {
-            let mut changed = self.join_equal_leaves(&value);
-            let order = self.order();
-            // position of the last unit using each slot (inputs as they are at the start of the round)
-            let cap = order.len() * 4;
-            let mut last_use: HashMap<SlotId, usize> =
-                HashMap::with_capacity_and_hasher(cap, Default::default());
+            let mut order = self.order();
+            let mut changed = self.join_equal_leaves(&value, &order);
+            if changed {
+                order = self.order();
+            }
+            // position of the last unit using each slot (inputs as they are at the start of the round);
+            // 0 also for none, as no position comes before 0
+            let mut last_use = vec![0usize; self.slots.len()];
             for (pos, &u) in order.iter().enumerate() {
                 for i in &self.units[u].inputs {
-                    last_use.insert(i.0, pos);
+                    last_use[i.0] = pos;
                 }
             }
-            let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
-            type Key = (Vec<usize>, String, Vec<usize>);
-            let mut first: HashMap<Key, TUnitId> =
+            // the slot each slot stands for (itself when none)
+            let mut alias: Vec<SlotId> = (0..self.slots.len()).collect();
+            // a unit's value: [motion, number of inputs, input values sorted, output values sorted]
+            let mut first: HashMap<Vec<usize>, TUnitId> =
                 HashMap::with_capacity_and_hasher(order.len(), Default::default());
             for (pos, &u) in order.iter().enumerate() {
                 {
                     let unit = &mut self.units[u];
                     for i in unit.inputs.iter_mut() {
-                        while let Some(&a) = alias.get(&i.0) {
-                            if a == i.0 {
-                                break;
-                            }
-                            i.0 = a;
+                        while alias[i.0] != i.0 {
+                            i.0 = alias[i.0];
                         }
                     }
                     dedup_slots(&mut unit.inputs);
                 }
                 let unit = &self.units[u];
                 let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
-                let mut ins: Vec<usize> = unit.inputs.iter().map(|i| value[i.0]).collect();
-                ins.sort_unstable();
-                let mut outs: Vec<usize> = unit.outputs.iter().map(|o| value[o.0]).collect();
-                outs.sort_unstable();
-                let key = (ins, unit.motion.clone(), outs);
+                let ins = 2..2 + unit.inputs.len();
+                let mut key = Vec::with_capacity(ins.end + unit.outputs.len());
+                key.extend([motion[u], unit.inputs.len()]);
+                key.extend(unit.inputs.iter().map(|i| value[i.0]));
+                key[ins.clone()].sort_unstable();
+                key.extend(unit.outputs.iter().map(|o| value[o.0]));
+                key[ins.end..].sort_unstable();
                 if !makes_goal {
                     if let Some(&f) = first.get(&key) {
                         let theirs = self.units[f].outputs.clone();
                         for &(o, _) in &self.units[u].outputs {
                             if let Some(&(t, _)) = theirs.iter().find(|t| value[t.0] == value[o]) {
                                 if t != o {
-                                    alias.insert(o, t);
+                                    alias[o] = t;
                                 }
                             }
                         }
@@ -454,13 +468,11 @@ impl<'kb> Tree<'kb> {
                         continue;
                     }
                 }
-                let ins = key.0.clone();
-                first.insert(key, u);
                 // new products a later unit uses (or the goal)
                 let useful = unit.outputs.iter().any(|&(o, _)| {
-                    !ins.contains(&value[o])
-                        && (o == self.goal || last_use.get(&o).is_some_and(|&l| l > pos))
+                    !key[ins.clone()].contains(&value[o]) && (o == self.goal || last_use[o] > pos)
                 });
+                first.insert(key, u);
                 if makes_goal && !useful {
                     // the goal's last unit changes nothing: the goal is its equal input
                     if let Some(&(i, _)) =
@@ -478,7 +490,7 @@ impl<'kb> Tree<'kb> {
                     for &(o, _) in &unit.outputs {
                         if let Some(&(i, _)) = unit.inputs.iter().find(|i| value[i.0] == value[o]) {
                             if i != o {
-                                alias.insert(o, i);
+                                alias[o] = i;
                             }
                         }
                     }
@@ -493,11 +505,8 @@ impl<'kb> Tree<'kb> {
             for unit in self.units.iter_mut().filter(|u| u.alive) {
                 for i in unit.inputs.iter_mut() {
                     let mut guard = 0;
-                    while let Some(&a) = alias.get(&i.0) {
-                        if a == i.0 || guard > 64 {
-                            break;
-                        }
-                        i.0 = a;
+                    while alias[i.0] != i.0 && guard <= 64 {
+                        i.0 = alias[i.0];
                         guard += 1;
                     }
                 }
@@ -507,41 +516,56 @@ impl<'kb> Tree<'kb> {
         }
     }
 
-    /// An id per slot, equal for slots with equal nodes.
+    /// An id per slot, equal for slots with equal nodes, below the number of slots. `normalize` compares
+    /// only slots that live units use (it edits only those units, and only among their slots): every
+    /// other slot gets an id of its own without its node being hashed.
     fn values(&self) -> Vec<usize> {
+        let live = self.live_marks();
         let mut ids: HashMap<&ObjectNode, usize> =
             HashMap::with_capacity_and_hasher(self.slots.len(), Default::default());
+        let mut next = 0;
         self.slots
             .iter()
-            .map(|s| {
-                let next = ids.len();
-                *ids.entry(&s.node).or_insert(next)
+            .zip(live)
+            .map(|(s, live)| {
+                let fresh = next;
+                let id = if live {
+                    *ids.entry(&s.node).or_insert(fresh)
+                } else {
+                    fresh
+                };
+                if id == fresh {
+                    next += 1;
+                }
+                id
             })
             .collect()
     }
 
     /// A starting slot equal in value to a slot some unit makes is the same node in the plan: it is
-    /// joined to the made one, so its users come after its maker, when that makes no cycle.
-    fn join_equal_leaves(&mut self, value: &[usize]) -> bool {
-        let order = self.order();
-        let mut made: HashMap<usize, SlotId> =
-            HashMap::with_capacity_and_hasher(2 * order.len(), Default::default());
-        for &u in &order {
-            let ins: Vec<SlotId> = self.units[u].inputs.iter().map(|i| i.0).collect();
-            for &(o, _) in &self.units[u].outputs {
-                if self.producer[o] == Some(u) && !ins.iter().any(|&i| value[i] == value[o]) {
-                    made.entry(value[o]).or_insert(o);
+    /// joined to the made one, so its users come after its maker, when that makes no cycle. `order` is
+    /// the tree's order.
+    fn join_equal_leaves(&mut self, value: &[usize], order: &[TUnitId]) -> bool {
+        // the first maker of each value (ids are below the number of slots)
+        let mut made: Vec<Option<SlotId>> = vec![None; self.slots.len()];
+        for &u in order {
+            let unit = &self.units[u];
+            for &(o, _) in &unit.outputs {
+                if self.producer[o] == Some(u)
+                    && !unit.inputs.iter().any(|i| value[i.0] == value[o])
+                {
+                    made[value[o]].get_or_insert(o);
                 }
             }
         }
         let mut changed = false;
-        for &v in &order {
+        for &v in order {
             for k in 0..self.units[v].inputs.len() {
                 let x = self.units[v].inputs[k].0;
                 if self.produced(x) {
                     continue;
                 }
-                let Some(&y) = made.get(&value[x]) else {
+                let Some(y) = made[value[x]] else {
                     continue;
                 };
                 if y == x || self.depends_on_unit(y, v) {
