@@ -82,9 +82,9 @@ pub fn plan(
     };
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
-    tree.normalize();
+    let values = tree.normalize();
     tree.drop_unneeded();
-    let scheduled = schedule::schedule(&mut tree);
+    let scheduled = schedule::schedule(&mut tree, &values);
     if request.modify {
         schedule::confirm_planned(&tree, &scheduled.order, &mut outcomes);
     }

@@ -10,7 +10,6 @@
 use super::check::{available_at_start, node_key, NodeKey};
 use super::output::plan_node;
 use super::tree::{TUnitId, Tree};
-use crate::model::ObjectNode;
 use crate::plan::{IngredientOutcome, PlanNode, Status};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::collections::BinaryHeap;
@@ -32,16 +31,13 @@ pub(crate) struct Schedule {
     pub nodes: Vec<Option<Arc<PlanNode>>>,
 }
 
-/// Each live slot's plan node, made once per distinct node (plan nodes are costly).
-fn plan_nodes(tree: &Tree) -> Vec<Option<Arc<PlanNode>>> {
+/// Each live slot's plan node, made once per distinct node (plan nodes are costly). `value` tells
+/// equal nodes apart by id (`Tree::normalize`), so the nodes need no hashing here.
+fn plan_nodes(tree: &Tree, value: &[usize]) -> Vec<Option<Arc<PlanNode>>> {
     let mut nodes = vec![None; tree.slots.len()];
-    let mut by_node: HashMap<&ObjectNode, Arc<PlanNode>> =
-        HashMap::with_capacity_and_hasher(tree.slots.len(), Default::default());
+    let mut of_value: Vec<Option<Arc<PlanNode>>> = vec![None; tree.slots.len()];
     for x in tree.live_slots() {
-        let node: &ObjectNode = &tree.slots[x].node;
-        let p = by_node
-            .entry(node)
-            .or_insert_with(|| Arc::new(plan_node(node)));
+        let p = of_value[value[x]].get_or_insert_with(|| Arc::new(plan_node(&tree.slots[x].node)));
         nodes[x] = Some(Arc::clone(p));
     }
     nodes
@@ -127,8 +123,9 @@ fn push_sorted(buf: &mut Vec<Value>, values: impl Iterator<Item = Value>) -> Ran
 
 /// Orders the live units the goal needs so that the evaluator's invariants hold, editing the tree where
 /// the order alone cannot (see the module comment). Returns the order; dropped units are marked dead.
-pub(crate) fn schedule(tree: &mut Tree) -> Schedule {
-    let nodes = plan_nodes(tree);
+/// `value`: the slots' values from `Tree::normalize` (no node has changed since).
+pub(crate) fn schedule(tree: &mut Tree, value: &[usize]) -> Schedule {
+    let nodes = plan_nodes(tree, value);
     let mut vals = values(&nodes);
     let goal = vals.of_slot[tree.goal];
     // the finished dish is never in the kitchen at the start, whatever its states say

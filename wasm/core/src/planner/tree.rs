@@ -399,8 +399,9 @@ impl<'kb> Tree<'kb> {
     /// Makes the tree sound at the level of node *values*, which is what a plan shows: a unit identical
     /// to an earlier one is dropped (its products are the earlier one's), and a unit that makes nothing
     /// new that a later unit uses (only passes its inputs on) is dropped, its outputs replaced by the
-    /// equal inputs. Repeats until nothing changes.
-    pub fn normalize(&mut self) {
+    /// equal inputs. Repeats until nothing changes. Returns the slots' values (`values`): the slots live
+    /// units use afterwards are among those it compared.
+    pub fn normalize(&mut self) -> Vec<usize> {
         // slots keep their nodes here: compare values by interned id rather than by node
         let value = self.values();
         // motions by interned id too: a unit's key then borrows nothing from the units a round edits
@@ -514,6 +515,7 @@ impl<'kb> Tree<'kb> {
             }
             self.drop_unneeded();
         }
+        value
     }
 
     /// An id per slot, equal for slots with equal nodes, below the number of slots. `normalize` compares
