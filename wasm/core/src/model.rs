@@ -99,7 +99,7 @@ impl ObjectNode {
     }
 
     /// Physical states (those without a container or ingredient argument), e.g. `sliced`, `whole`.
-    pub fn physical_states(&self) -> impl Iterator<Item = &str> {
+    pub fn physical_states(&self) -> impl Iterator<Item = &str> + Clone {
         self.states
             .iter()
             .filter(|s| s.arg.is_none())

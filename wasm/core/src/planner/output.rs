@@ -135,11 +135,25 @@ impl Uses {
     }
 }
 
+/// The parts with `sep` between them, in a string of exactly their size (`concat` and `join` take a
+/// slower, general path for these few short pieces).
+fn joined<'a>(parts: impl Iterator<Item = &'a str> + Clone, sep: &str) -> String {
+    let len = parts.clone().map(|p| p.len() + sep.len()).sum::<usize>();
+    let mut out = String::with_capacity(len.saturating_sub(sep.len()));
+    for (k, p) in parts.enumerate() {
+        if k > 0 {
+            out.push_str(sep);
+        }
+        out.push_str(p);
+    }
+    out
+}
+
 fn location(n: &ObjectNode) -> String {
     n.states
         .iter()
         .find_map(|s| match &s.arg {
-            Some(StateArg::Container(c)) => Some([s.name.as_str(), " ", c].concat()),
+            Some(StateArg::Container(c)) => Some(joined([s.name.as_str(), c].into_iter(), " ")),
             _ => None,
         })
         .unwrap_or_default()
@@ -147,17 +161,11 @@ fn location(n: &ObjectNode) -> String {
 
 fn physical(n: &ObjectNode) -> String {
     let food = food_states(n);
-    if !food.is_empty() {
-        return food.join(", ");
+    if food.is_empty() {
+        joined(n.physical_states(), ", ")
+    } else {
+        joined(food.iter().copied(), ", ")
     }
-    let mut out = String::new();
-    for (k, s) in n.physical_states().enumerate() {
-        if k > 0 {
-            out.push_str(", ");
-        }
-        out.push_str(s);
-    }
-    out
 }
 
 /// The ingredient's states and places from its starting node, the motions between them, and the dish.
@@ -180,7 +188,8 @@ fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Op
     });
     let mut motions = Vec::with_capacity(4);
     let mut at = start;
-    let mut seen: Vec<SlotId> = vec![start];
+    let mut seen: Vec<SlotId> = Vec::with_capacity(4);
+    seen.push(start);
     let mut from = 0usize;
     let mut end_product = None;
     let mut last_step: Option<(usize, TUnitId)> = None;
@@ -231,7 +240,7 @@ fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Op
                 }) {
                     let n = &tree.slots[o].node;
                     states.push(ProgressState {
-                        physical_state: ["in ", n.label.as_str()].concat(),
+                        physical_state: joined(["in", n.label.as_str()].into_iter(), " "),
                         location: location(n),
                     });
                     end_product = product_of(tree, order, pos, o, label);
@@ -318,7 +327,7 @@ fn push_list(out: &mut String, items: &[&str]) {
 pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
     let unit = &tree.units[u];
     let node = |x: SlotId| &tree.slots[x].node;
-    let mut objects: Vec<&str> = Vec::new();
+    let mut objects: Vec<&str> = Vec::with_capacity(unit.inputs.len());
     fn push<'n>(objects: &mut Vec<&'n str>, l: &'n str) {
         if !objects.contains(&l) {
             objects.push(l);
