@@ -203,15 +203,8 @@ impl Needs {
     /// Every maker of every input that is not a kitchen item.
     fn new(units: &[TUnitId], shapes: &Shapes, vals: &Values) -> Needs {
         // the makers of each value, by position (values are dense: a counting sort)
-        let mut first = vec![0usize; vals.start.len() + 1];
-        for &u in units {
-            for &m in shapes.made(u) {
-                first[m + 1] += 1;
-            }
-        }
-        for k in 1..first.len() {
-            first[k] += first[k - 1];
-        }
+        let made = units.iter().flat_map(|&u| shapes.made(u).iter().copied());
+        let first = offsets(vals.start.len(), made);
         let mut makers = vec![0usize; first[first.len() - 1]];
         let mut next = first.clone();
         for (i, &u) in units.iter().enumerate() {
@@ -235,22 +228,9 @@ impl Needs {
                 }
             }
         }
-        let mut needs = Needs {
+        Needs {
+            from: offsets(units.len(), edges.iter().map(|e| e.0)),
             edges,
-            from: Vec::new(),
-        };
-        needs.index(units.len());
-        needs
-    }
-
-    fn index(&mut self, n: usize) {
-        self.from.clear();
-        self.from.resize(n + 1, 0);
-        for &(v, _, _) in &self.edges {
-            self.from[v + 1] += 1;
-        }
-        for k in 1..=n {
-            self.from[k] += self.from[k - 1];
         }
     }
 
@@ -275,9 +255,21 @@ impl Needs {
             k += 1;
             !redundant[k - 1]
         });
-        self.index(self.from.len() - 1);
+        self.from = offsets(self.from.len() - 1, self.edges.iter().map(|e| e.0));
         true
     }
+}
+
+/// Where each group of a table grouped by key starts: group `k` of `0..n` is `from[k]..from[k + 1]`.
+fn offsets(n: usize, keys: impl Iterator<Item = usize>) -> Vec<usize> {
+    let mut from = vec![0usize; n + 1];
+    for k in keys {
+        from[k + 1] += 1;
+    }
+    for k in 1..=n {
+        from[k] += from[k - 1];
+    }
+    from
 }
 
 /// Kahn's order over "made before used" edges, ties in the tree's own order. A consumer whose input is
