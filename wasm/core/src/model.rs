@@ -43,7 +43,14 @@ impl State {
     /// The state as FOON writes it, `in [bowl]` or `contains {egg,milk}` (built without `fmt`: plans
     /// render every state of every node).
     pub fn text(&self) -> String {
-        let mut out = String::with_capacity(self.name.len() + 16);
+        let arg_len = match &self.arg {
+            None => 0,
+            Some(StateArg::Container(c)) => c.len() + 3,
+            Some(StateArg::Ingredients(list)) => {
+                3 + list.iter().map(String::len).sum::<usize>() + list.len().saturating_sub(1)
+            }
+        };
+        let mut out = String::with_capacity(self.name.len() + arg_len);
         let _ = self.write_to(&mut out);
         out
     }
@@ -97,7 +104,7 @@ impl ObjectNode {
     }
 
     /// Physical states (those without a container or ingredient argument), e.g. `sliced`, `whole`.
-    pub fn physical_states(&self) -> impl Iterator<Item = &str> {
+    pub fn physical_states(&self) -> impl Iterator<Item = &str> + Clone {
         self.states
             .iter()
             .filter(|s| s.arg.is_none())

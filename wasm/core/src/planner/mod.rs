@@ -82,8 +82,8 @@ pub fn plan(
     };
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
-    tree.normalize();
-    let scheduled = schedule::schedule(&mut tree);
+    let values = tree.normalize();
+    let scheduled = schedule::schedule(&mut tree, &values);
     if request.modify {
         schedule::confirm_planned(&tree, &scheduled.order, &mut outcomes);
     }

@@ -10,7 +10,6 @@ use crate::plan::{
     ProgressState, Query, Status,
 };
 use crate::taxonomy::is_utensil;
-use rustc_hash::FxHashSet as HashSet;
 use std::sync::Arc;
 
 pub(crate) struct Parts<'a> {
@@ -31,10 +30,14 @@ pub(crate) struct Parts<'a> {
 }
 
 pub(crate) fn plan_node(n: &ObjectNode) -> PlanNode {
+    // `ObjectNode::ingredients`, owned from the start rather than copied from a borrowed list
+    let mut ingredients: Vec<String> = n.contents().map(str::to_string).collect();
+    ingredients.sort_unstable();
+    ingredients.dedup();
     PlanNode {
         label: n.label.clone(),
         states: n.states.iter().map(State::text).collect(),
-        ingredients: n.ingredients(),
+        ingredients,
         container: n.container().map(str::to_string),
     }
 }
@@ -62,23 +65,15 @@ pub(crate) fn build(p: Parts) -> Plan {
         .collect();
     let goal_node = &tree.slots[tree.goal].node;
     let steps = order.iter().map(|&u| sentence(tree, u)).collect();
-    let made: HashSet<SlotId> = order
-        .iter()
-        .flat_map(|&u| {
-            let unit = &tree.units[u];
-            unit.outputs
-                .iter()
-                .map(|o| o.0)
-                .filter(|o| !unit.inputs.iter().any(|i| i.0 == *o))
-        })
-        .collect();
+    let uses = Uses::new(tree, order);
     let mut progress_lines = Vec::new();
-    let mut done: HashSet<String> = HashSet::default();
+    let mut done: Vec<&str> = Vec::with_capacity(p.outcomes.len());
     for o in &p.outcomes {
-        if o.status != Status::Planned || !done.insert(o.object.clone()) {
+        if o.status != Status::Planned || done.contains(&o.object.as_str()) {
             continue;
         }
-        if let Some(line) = progress_line(tree, order, &made, &o.object) {
+        done.push(&o.object);
+        if let Some(line) = progress_line(tree, order, &uses, &o.object) {
             progress_lines.push(line);
         }
     }
@@ -91,7 +86,7 @@ pub(crate) fn build(p: Parts) -> Plan {
         modified: p.modified,
         goal: GoalInfo {
             label: goal_node.label.clone(),
-            states: goal_node.states.iter().map(|s| s.to_string()).collect(),
+            states: goal_node.states.iter().map(State::text).collect(),
             ingredients: if p.goal.ingredients.is_empty() {
                 kb_goal.ingredients()
             } else {
@@ -109,11 +104,56 @@ pub(crate) fn build(p: Parts) -> Plan {
     }
 }
 
+/// Where the progress lines look, found in one pass over the order rather than once per ingredient.
+struct Uses {
+    /// The slots live units use, and the goal, ascending.
+    live: Vec<SlotId>,
+    /// Per slot: made by a unit (an output that is not also its input).
+    made: Vec<bool>,
+    /// Per slot: the position of the first unit using it (`usize::MAX` for none).
+    first_use: Vec<usize>,
+}
+
+impl Uses {
+    fn new(tree: &Tree, order: &[TUnitId]) -> Uses {
+        let mut made = vec![false; tree.slots.len()];
+        let mut first_use = vec![usize::MAX; tree.slots.len()];
+        for (pos, &u) in order.iter().enumerate().rev() {
+            let unit = &tree.units[u];
+            for &(i, _) in &unit.inputs {
+                first_use[i] = pos;
+            }
+            for &(o, _) in &unit.outputs {
+                made[o] |= !unit.inputs.iter().any(|i| i.0 == o);
+            }
+        }
+        Uses {
+            live: tree.live_slots().collect(),
+            made,
+            first_use,
+        }
+    }
+}
+
+/// The parts with `sep` between them, in a string of exactly their size (`concat` and `join` take a
+/// slower, general path for these few short pieces).
+fn joined<'a>(parts: impl Iterator<Item = &'a str> + Clone, sep: &str) -> String {
+    let len = parts.clone().map(|p| p.len() + sep.len()).sum::<usize>();
+    let mut out = String::with_capacity(len.saturating_sub(sep.len()));
+    for (k, p) in parts.enumerate() {
+        if k > 0 {
+            out.push_str(sep);
+        }
+        out.push_str(p);
+    }
+    out
+}
+
 fn location(n: &ObjectNode) -> String {
     n.states
         .iter()
         .find_map(|s| match &s.arg {
-            Some(StateArg::Container(c)) => Some(format!("{} {c}", s.name)),
+            Some(StateArg::Container(c)) => Some(joined([s.name.as_str(), c].into_iter(), " ")),
             _ => None,
         })
         .unwrap_or_default()
@@ -122,39 +162,34 @@ fn location(n: &ObjectNode) -> String {
 fn physical(n: &ObjectNode) -> String {
     let food = food_states(n);
     if food.is_empty() {
-        n.physical_states().collect::<Vec<_>>().join(", ")
+        joined(n.physical_states(), ", ")
     } else {
-        food.join(", ")
+        joined(food.iter().copied(), ", ")
     }
 }
 
 /// The ingredient's states and places from its starting node, the motions between them, and the dish.
-fn progress_line(
-    tree: &Tree,
-    order: &[TUnitId],
-    made: &HashSet<SlotId>,
-    label: &str,
-) -> Option<ProgressLine> {
-    let slots = tree.slots_with_label(label);
-    let first_use = |x: SlotId| {
-        order
-            .iter()
-            .position(|&u| tree.units[u].inputs.iter().any(|i| i.0 == x))
-            .unwrap_or(usize::MAX)
-    };
-    let start = slots
+fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Option<ProgressLine> {
+    let slots = uses
+        .live
         .iter()
         .copied()
-        .filter(|x| !made.contains(x))
-        .min_by_key(|&x| (first_use(x), x))
-        .or_else(|| slots.first().copied())?;
-    let mut states = vec![ProgressState {
+        .filter(|&x| tree.slots[x].node.label == label);
+    let first = slots.clone().next()?;
+    let start = slots
+        .filter(|&x| !uses.made[x])
+        .min_by_key(|&x| (uses.first_use[x], x))
+        .unwrap_or(first);
+    // a line has a few states: one allocation each for them and the motions
+    let mut states = Vec::with_capacity(4);
+    states.push(ProgressState {
         physical_state: physical(&tree.slots[start].node),
         location: location(&tree.slots[start].node),
-    }];
-    let mut motions = Vec::new();
+    });
+    let mut motions = Vec::with_capacity(4);
     let mut at = start;
-    let mut seen: HashSet<SlotId> = [start].into_iter().collect();
+    let mut seen: Vec<SlotId> = Vec::with_capacity(4);
+    seen.push(start);
     let mut from = 0usize;
     let mut end_product = None;
     let mut last_step: Option<(usize, TUnitId)> = None;
@@ -189,7 +224,7 @@ fn progress_line(
         motions.push(tree.units[u].motion.clone());
         match out {
             Some(o) => {
-                seen.insert(o);
+                seen.push(o);
                 states.push(ProgressState {
                     physical_state: physical(&tree.slots[o].node),
                     location: location(&tree.slots[o].node),
@@ -200,16 +235,12 @@ fn progress_line(
             None => {
                 // it went into something else: the last state is that product
                 if let Some(&(o, _)) = tree.units[u].outputs.iter().find(|o| {
-                    tree.slots[o.0]
-                        .node
-                        .ingredients()
-                        .iter()
-                        .any(|i| i == label)
+                    tree.slots[o.0].node.contents().any(|i| i == label)
                         || !is_utensil(&tree.slots[o.0].node.label)
                 }) {
                     let n = &tree.slots[o].node;
                     states.push(ProgressState {
-                        physical_state: format!("in {}", n.label),
+                        physical_state: joined(["in", n.label.as_str()].into_iter(), " "),
                         location: location(n),
                     });
                     end_product = product_of(tree, order, pos, o, label);
@@ -243,7 +274,7 @@ fn product_of(
         return Some(tree.slots[entered].node.label.clone());
     }
     // a vessel holding it: the first food made from that vessel's contents
-    let mut vessels: HashSet<SlotId> = [entered].into_iter().collect();
+    let mut vessels: Vec<SlotId> = vec![entered];
     for &u in &order[pos + 1..] {
         let unit = &tree.units[u];
         if !unit.inputs.iter().any(|i| vessels.contains(&i.0)) {
@@ -266,7 +297,8 @@ fn product_of(
     None
 }
 
-fn verb(motion: &str) -> String {
+/// The motion as the sentence's capitalised verb, written onto `out`.
+fn push_verb(out: &mut String, motion: &str) {
     let m = motion.trim_end_matches('*').trim();
     let m = match m {
         "pick-and-place" => "place",
@@ -274,9 +306,9 @@ fn verb(motion: &str) -> String {
         other => other,
     };
     let mut c = m.chars();
-    match c.next() {
-        Some(f) => f.to_uppercase().collect::<String>() + c.as_str(),
-        None => String::new(),
+    if let Some(f) = c.next() {
+        out.extend(f.to_uppercase());
+        out.push_str(c.as_str());
     }
 }
 
@@ -295,7 +327,7 @@ fn push_list(out: &mut String, items: &[&str]) {
 pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
     let unit = &tree.units[u];
     let node = |x: SlotId| &tree.slots[x].node;
-    let mut objects: Vec<&str> = Vec::new();
+    let mut objects: Vec<&str> = Vec::with_capacity(unit.inputs.len());
     fn push<'n>(objects: &mut Vec<&'n str>, l: &'n str) {
         if !objects.contains(&l) {
             objects.push(l);
@@ -350,7 +382,9 @@ pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
         })
         .map(|&(x, _)| node(x).label.as_str())
         .collect();
-    let mut text = verb(&unit.motion);
+    // sized for most sentences: one allocation
+    let mut text = String::with_capacity(64);
+    push_verb(&mut text, &unit.motion);
     text.push(' ');
     push_list(&mut text, &objects);
     if let Some((rel, c)) = place {

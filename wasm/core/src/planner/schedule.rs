@@ -9,11 +9,11 @@
 
 use super::check::{available_at_start, node_key, NodeKey};
 use super::output::plan_node;
-use super::tree::{SlotId, TUnitId, Tree};
-use crate::model::{ObjectNode, StateArg};
+use super::tree::{TUnitId, Tree};
 use crate::plan::{IngredientOutcome, PlanNode, Status};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
-use std::collections::{BTreeSet, BinaryHeap};
+use std::collections::BinaryHeap;
+use std::ops::Range;
 use std::sync::Arc;
 
 type Value = usize;
@@ -31,16 +31,13 @@ pub(crate) struct Schedule {
     pub nodes: Vec<Option<Arc<PlanNode>>>,
 }
 
-/// Each live slot's plan node, made once per distinct node (plan nodes are costly).
-fn plan_nodes(tree: &Tree) -> Vec<Option<Arc<PlanNode>>> {
+/// Each live slot's plan node, made once per distinct node (plan nodes are costly). `value` tells
+/// equal nodes apart by id (`Tree::normalize`), so the nodes need no hashing here.
+fn plan_nodes(tree: &Tree, value: &[usize]) -> Vec<Option<Arc<PlanNode>>> {
     let mut nodes = vec![None; tree.slots.len()];
-    let mut by_node: HashMap<&ObjectNode, Arc<PlanNode>> =
-        HashMap::with_capacity_and_hasher(tree.slots.len(), Default::default());
+    let mut of_value: Vec<Option<Arc<PlanNode>>> = vec![None; tree.slots.len()];
     for x in tree.live_slots() {
-        let node: &ObjectNode = &tree.slots[x].node;
-        let p = by_node
-            .entry(node)
-            .or_insert_with(|| Arc::new(plan_node(node)));
+        let p = of_value[value[x]].get_or_insert_with(|| Arc::new(plan_node(&tree.slots[x].node)));
         nodes[x] = Some(Arc::clone(p));
     }
     nodes
@@ -68,46 +65,76 @@ fn values(nodes: &[Option<Arc<PlanNode>>]) -> Values {
     Values { of_slot, start }
 }
 
-/// A unit's input values (with repeats, sorted) and the values it makes (outputs that are not inputs).
-struct Shape {
-    inputs: Vec<Value>,
-    outputs: Vec<Value>,
-    made: BTreeSet<Value>,
+/// Per unit: its input values (with repeats, sorted), output values (sorted) and the values it makes
+/// (outputs that are not inputs, sorted, unique), as ranges of one buffer. A shape changes only where a
+/// round of `schedule` edits its unit, so it is found once rather than every round.
+struct Shapes {
+    of_unit: Vec<[Range<usize>; 3]>,
+    buf: Vec<Value>,
 }
 
-fn shape(tree: &Tree, v: &Values, u: TUnitId) -> Shape {
-    let unit = &tree.units[u];
-    let mut inputs: Vec<Value> = unit.inputs.iter().map(|i| v.of_slot[i.0]).collect();
-    inputs.sort_unstable();
-    let mut outputs: Vec<Value> = unit.outputs.iter().map(|o| v.of_slot[o.0]).collect();
-    outputs.sort_unstable();
-    let made = outputs
-        .iter()
-        .copied()
-        .filter(|o| inputs.binary_search(o).is_err())
-        .collect();
-    Shape {
-        inputs,
-        outputs,
-        made,
+impl Shapes {
+    fn new(tree: &Tree, v: &Values, units: &[TUnitId]) -> Shapes {
+        let mut shapes = Shapes {
+            of_unit: vec![[0..0, 0..0, 0..0]; tree.units.len()],
+            buf: Vec::with_capacity(8 * units.len()),
+        };
+        for &u in units {
+            shapes.update(tree, v, u);
+        }
+        shapes
     }
+
+    /// (Re)computes the unit's shape (a replaced one stays unused in the buffer).
+    fn update(&mut self, tree: &Tree, v: &Values, u: TUnitId) {
+        let unit = &tree.units[u];
+        let buf = &mut self.buf;
+        let inputs = push_sorted(buf, unit.inputs.iter().map(|i| v.of_slot[i.0]));
+        let outputs = push_sorted(buf, unit.outputs.iter().map(|o| v.of_slot[o.0]));
+        let from = buf.len();
+        for k in outputs.clone() {
+            let o = buf[k];
+            if buf[inputs.clone()].binary_search(&o).is_err() && buf[from..].last() != Some(&o) {
+                buf.push(o);
+            }
+        }
+        self.of_unit[u] = [inputs, outputs, from..buf.len()];
+    }
+
+    fn inputs(&self, u: TUnitId) -> &[Value] {
+        &self.buf[self.of_unit[u][0].clone()]
+    }
+
+    fn outputs(&self, u: TUnitId) -> &[Value] {
+        &self.buf[self.of_unit[u][1].clone()]
+    }
+
+    fn made(&self, u: TUnitId) -> &[Value] {
+        &self.buf[self.of_unit[u][2].clone()]
+    }
+}
+
+fn push_sorted(buf: &mut Vec<Value>, values: impl Iterator<Item = Value>) -> Range<usize> {
+    let from = buf.len();
+    buf.extend(values);
+    buf[from..].sort_unstable();
+    from..buf.len()
 }
 
 /// Orders the live units the goal needs so that the evaluator's invariants hold, editing the tree where
 /// the order alone cannot (see the module comment). Returns the order; dropped units are marked dead.
-pub(crate) fn schedule(tree: &mut Tree) -> Schedule {
-    let nodes = plan_nodes(tree);
+/// `value`: the slots' values from `Tree::normalize` (no node has changed since).
+pub(crate) fn schedule(tree: &mut Tree, value: &[usize]) -> Schedule {
+    let nodes = plan_nodes(tree, value);
     let mut vals = values(&nodes);
     let goal = vals.of_slot[tree.goal];
     // the finished dish is never in the kitchen at the start, whatever its states say
     vals.start[goal] = false;
     let mut units: Vec<TUnitId> = tree.order();
+    let mut shapes = Shapes::new(tree, &vals, &units);
     // each round either settles or removes a product or a unit, so the rounds are bounded
     let limit = 4 * units.len() + 8;
     for _ in 0..limit {
-        let mut shapes: HashMap<TUnitId, Shape> =
-            HashMap::with_capacity_and_hasher(units.len(), Default::default());
-        shapes.extend(units.iter().map(|&u| (u, shape(tree, &vals, u))));
         let before = units.len();
         drop_duplicates(tree, &mut units, &shapes);
         if units.len() != before {
@@ -115,7 +142,7 @@ pub(crate) fn schedule(tree: &mut Tree) -> Schedule {
         }
         match topological(&units, &shapes, &vals) {
             Ok(order) => {
-                let kept = drop_dead(tree, &order, &shapes, goal);
+                let kept = drop_dead(tree, &order, &shapes, &vals, goal);
                 if kept.len() == order.len() {
                     return Schedule { order: kept, nodes };
                 }
@@ -127,8 +154,11 @@ pub(crate) fn schedule(tree: &mut Tree) -> Schedule {
                     // no place in the plan; what it made comes from the kitchen instead
                     tree.units[v].alive = false;
                     units.retain(|&u| u != v);
-                } else if !break_cycle(tree, &vals, p, value) {
+                } else if break_cycle(tree, &vals, p, value) {
+                    shapes.update(tree, &vals, p);
+                } else {
                     tree.units[v].inputs.retain(|i| vals.of_slot[i.0] != value);
+                    shapes.update(tree, &vals, v);
                 }
             }
         }
@@ -140,23 +170,106 @@ pub(crate) fn schedule(tree: &mut Tree) -> Schedule {
 }
 
 /// Drops every unit equal in value to an earlier one (its products are the earlier one's).
-fn drop_duplicates(tree: &mut Tree, units: &mut Vec<TUnitId>, shapes: &HashMap<TUnitId, Shape>) {
+fn drop_duplicates(tree: &mut Tree, units: &mut Vec<TUnitId>, shapes: &Shapes) {
+    let mut dropped = Vec::new();
     let mut seen: HashSet<(&str, &[Value], &[Value])> =
         HashSet::with_capacity_and_hasher(units.len(), Default::default());
-    let mut keep = Vec::with_capacity(units.len());
-    for &u in units.iter() {
-        let s = &shapes[&u];
-        let key = (tree.units[u].motion.as_str(), &s.inputs[..], &s.outputs[..]);
-        if seen.insert(key) {
-            keep.push(u);
+    units.retain(|&u| {
+        let key = (
+            tree.units[u].motion.as_str(),
+            shapes.inputs(u),
+            shapes.outputs(u),
+        );
+        let first = seen.insert(key);
+        if !first {
+            dropped.push(u);
+        }
+        first
+    });
+    drop(seen);
+    for u in dropped {
+        tree.units[u].alive = false;
+    }
+}
+
+/// "Made before used" edges: (consumer, maker, value) by positions in the unit list, grouped by
+/// consumer; `from[v]..from[v + 1]` are the edges into `v`.
+struct Needs {
+    edges: Vec<(usize, usize, Value)>,
+    from: Vec<usize>,
+}
+
+impl Needs {
+    /// Every maker of every input that is not a kitchen item.
+    fn new(units: &[TUnitId], shapes: &Shapes, vals: &Values) -> Needs {
+        // the makers of each value, by position (values are dense: a counting sort)
+        let made = units.iter().flat_map(|&u| shapes.made(u).iter().copied());
+        let first = offsets(vals.start.len(), made);
+        let mut makers = vec![0usize; first[first.len() - 1]];
+        let mut next = first.clone();
+        for (i, &u) in units.iter().enumerate() {
+            for &m in shapes.made(u) {
+                makers[next[m]] = i;
+                next[m] += 1;
+            }
+        }
+        let mut edges = Vec::with_capacity(2 * units.len());
+        for (i, &u) in units.iter().enumerate() {
+            // inputs are sorted: a repeated value follows its first use
+            let mut last = None;
+            for &x in shapes.inputs(u) {
+                if vals.start[x] || last.replace(x) == Some(x) {
+                    continue;
+                }
+                for &p in &makers[first[x]..first[x + 1]] {
+                    if p != i {
+                        edges.push((i, p, x));
+                    }
+                }
+            }
+        }
+        Needs {
+            from: offsets(units.len(), edges.iter().map(|e| e.0)),
+            edges,
         }
     }
-    for &u in units.iter() {
-        if !keep.contains(&u) {
-            tree.units[u].alive = false;
-        }
+
+    fn of(&self, v: usize) -> &[(usize, usize, Value)] {
+        &self.edges[self.from[v]..self.from[v + 1]]
     }
-    *units = keep;
+
+    /// Drops each edge inside a cycle whose value the consumer also gets from a maker outside it.
+    /// False when there is none.
+    fn relax(&mut self, comp: &[usize]) -> bool {
+        let inner = |&(v, p, _): &(usize, usize, Value)| comp[p] == comp[v];
+        let redundant: Vec<bool> = self
+            .edges
+            .iter()
+            .map(|e| inner(e) && self.of(e.0).iter().any(|f| f.2 == e.2 && !inner(f)))
+            .collect();
+        if !redundant.contains(&true) {
+            return false;
+        }
+        let mut k = 0;
+        self.edges.retain(|_| {
+            k += 1;
+            !redundant[k - 1]
+        });
+        self.from = offsets(self.from.len() - 1, self.edges.iter().map(|e| e.0));
+        true
+    }
+}
+
+/// Where each group of a table grouped by key starts: group `k` of `0..n` is `from[k]..from[k + 1]`.
+fn offsets(n: usize, keys: impl Iterator<Item = usize>) -> Vec<usize> {
+    let mut from = vec![0usize; n + 1];
+    for k in keys {
+        from[k + 1] += 1;
+    }
+    for k in 1..=n {
+        from[k] += from[k - 1];
+    }
+    from
 }
 
 /// Kahn's order over "made before used" edges, ties in the tree's own order. A consumer whose input is
@@ -164,98 +277,37 @@ fn drop_duplicates(tree: &mut Tree, units: &mut Vec<TUnitId>, shapes: &HashMap<T
 /// (maker, consumer, value), the consumer earliest in the tree's order and the maker latest.
 fn topological(
     units: &[TUnitId],
-    shapes: &HashMap<TUnitId, Shape>,
+    shapes: &Shapes,
     vals: &Values,
 ) -> Result<Vec<TUnitId>, (TUnitId, TUnitId, Value)> {
-    let mut makers: HashMap<Value, Vec<usize>> =
-        HashMap::with_capacity_and_hasher(units.len() * 2, Default::default());
-    for (i, u) in units.iter().enumerate() {
-        for &m in &shapes[u].made {
-            makers.entry(m).or_default().push(i);
-        }
-    }
-    // needs[v] = (maker position, value): every maker of every input that is not a kitchen item
-    let needs: Vec<Vec<(usize, Value)>> = units
-        .iter()
-        .enumerate()
-        .map(|(i, u)| {
-            let mut out = Vec::new();
-            // inputs are sorted: a repeated value follows its first use
-            let mut last = None;
-            for &x in &shapes[u].inputs {
-                if vals.start[x] || last.replace(x) == Some(x) {
-                    continue;
-                }
-                for &p in makers.get(&x).map(Vec::as_slice).unwrap_or(&[]) {
-                    if p != i {
-                        out.push((p, x));
-                    }
-                }
-            }
-            out
-        })
-        .collect();
     let n = units.len();
-    let mut needs = needs;
+    let mut needs = Needs::new(units, shapes, vals);
     // relax edges into a cycle when the value is available from a maker outside it (each round that
     // changes something removes an edge)
     loop {
         let comp = components(n, &needs);
-        let mut changed = false;
-        for v in 0..n {
-            let list = &needs[v];
-            // only an edge inside v's component can go
-            if list.iter().all(|(p, _)| comp[*p] != comp[v]) {
-                continue;
-            }
-            let outside: HashSet<Value> = list
-                .iter()
-                .filter(|(p, _)| comp[*p] != comp[v])
-                .map(|e| e.1)
-                .collect();
-            let len = list.len();
-            needs[v].retain(|(p, x)| comp[*p] != comp[v] || !outside.contains(x));
-            changed |= needs[v].len() != len;
+        if needs.relax(&comp) {
+            continue;
         }
-        if !changed {
-            let sizes = comp.iter().fold(HashMap::default(), |mut m, c| {
-                *m.entry(*c).or_insert(0usize) += 1;
-                m
-            });
-            // a cycle: break the edge into its earliest consumer from its latest maker
-            let mut worst: Option<(usize, usize, Value)> = None;
-            for (v, list) in needs.iter().enumerate() {
-                if sizes[&comp[v]] < 2 {
-                    continue;
-                }
-                for &(p, x) in list {
-                    if comp[p] != comp[v] {
-                        continue;
-                    }
-                    let better = worst.is_none_or(|(bp, bv, bx)| {
-                        (v, usize::MAX - p, x) < (bv, usize::MAX - bp, bx)
-                    });
-                    if better {
-                        worst = Some((p, v, x));
-                    }
-                }
-            }
-            if let Some((p, v, x)) = worst {
-                return Err((units[p], units[v], x));
-            }
-            break;
+        // a cycle (an edge inside a component: there are no loops): break the edge into its earliest
+        // consumer from its latest maker
+        let worst = needs
+            .edges
+            .iter()
+            .filter(|&&(v, p, _)| comp[p] == comp[v])
+            .min_by_key(|&&(v, p, x)| (v, std::cmp::Reverse(p), x));
+        if let Some(&(v, p, x)) = worst {
+            return Err((units[p], units[v], x));
         }
+        break;
     }
+    // each maker's users, once per pair: (maker, consumer) sorted by maker
+    let mut arcs: Vec<(usize, usize)> = needs.edges.iter().map(|&(v, p, _)| (p, v)).collect();
+    arcs.sort_unstable();
+    arcs.dedup();
     let mut indegree = vec![0usize; n];
-    let mut users: Vec<Vec<usize>> = vec![Vec::new(); n];
-    for (v, list) in needs.iter().enumerate() {
-        let mut ps: Vec<usize> = list.iter().map(|e| e.0).collect();
-        ps.sort_unstable();
-        ps.dedup();
-        indegree[v] = ps.len();
-        for p in ps {
-            users[p].push(v);
-        }
+    for &(_, v) in &arcs {
+        indegree[v] += 1;
     }
     let mut ready: BinaryHeap<std::cmp::Reverse<usize>> = (0..n)
         .filter(|&v| indegree[v] == 0)
@@ -264,7 +316,8 @@ fn topological(
     let mut order = Vec::with_capacity(n);
     while let Some(std::cmp::Reverse(v)) = ready.pop() {
         order.push(units[v]);
-        for &w in &users[v] {
+        let users = arcs.partition_point(|a| a.0 < v)..arcs.partition_point(|a| a.0 <= v);
+        for &(_, w) in &arcs[users] {
             indegree[w] -= 1;
             if indegree[w] == 0 {
                 ready.push(std::cmp::Reverse(w));
@@ -275,7 +328,7 @@ fn topological(
 }
 
 /// Strongly connected components of the "needs" graph (Tarjan, iterative): a component id per unit.
-fn components(n: usize, needs: &[Vec<(usize, Value)>]) -> Vec<usize> {
+fn components(n: usize, needs: &Needs) -> Vec<usize> {
     let mut index = vec![usize::MAX; n];
     let mut low = vec![0usize; n];
     let mut on_stack = vec![false; n];
@@ -299,7 +352,7 @@ fn components(n: usize, needs: &[Vec<(usize, Value)>]) -> Vec<usize> {
                 stack.push(v);
                 on_stack[v] = true;
             }
-            if let Some(&(w, _)) = needs[v].get(*e) {
+            if let Some(&(_, w, _)) = needs.of(v).get(*e) {
                 *e += 1;
                 if index[w] == usize::MAX {
                     work.push((w, 0));
@@ -340,16 +393,17 @@ fn break_cycle(tree: &mut Tree, vals: &Values, p: TUnitId, value: Value) -> bool
 fn drop_dead(
     tree: &mut Tree,
     order: &[TUnitId],
-    shapes: &HashMap<TUnitId, Shape>,
+    shapes: &Shapes,
+    vals: &Values,
     goal: Value,
 ) -> Vec<TUnitId> {
-    let mut used: HashSet<Value> =
-        HashSet::with_capacity_and_hasher(4 * order.len(), Default::default());
+    let mut used = vec![false; vals.start.len()];
     let mut kept = Vec::with_capacity(order.len());
     for &u in order.iter().rev() {
-        let s = &shapes[&u];
-        if s.outputs.contains(&goal) || s.made.iter().any(|m| used.contains(m)) {
-            used.extend(s.inputs.iter().copied());
+        if shapes.outputs(u).contains(&goal) || shapes.made(u).iter().any(|&m| used[m]) {
+            for &x in shapes.inputs(u) {
+                used[x] = true;
+            }
             kept.push(u);
         } else {
             tree.units[u].alive = false;
@@ -362,25 +416,27 @@ fn drop_dead(
 /// Every planned ingredient must be in the plan as shown (a label or in a list of contents); one the
 /// ordering had to drop is reported unplannable with the reason rather than claimed.
 pub(crate) fn confirm_planned(tree: &Tree, order: &[TUnitId], outcomes: &mut [IngredientOutcome]) {
-    let slots: BTreeSet<SlotId> = order
-        .iter()
-        .flat_map(|&u| {
-            let unit = &tree.units[u];
-            unit.inputs.iter().chain(unit.outputs.iter()).map(|x| x.0)
-        })
-        .collect();
-    let mut present: HashSet<&str> = HashSet::default();
-    for &s in &slots {
-        let node = &tree.slots[s].node;
-        present.insert(node.label.as_str());
-        for st in &node.states {
-            if let Some(StateArg::Ingredients(list)) = &st.arg {
-                present.extend(list.iter().map(String::as_str));
+    // the plan's slots, each once
+    let mut in_plan = vec![false; tree.slots.len()];
+    let mut slots = Vec::with_capacity(tree.slots.len());
+    for &u in order {
+        let unit = &tree.units[u];
+        for &(x, _) in unit.inputs.iter().chain(unit.outputs.iter()) {
+            if !in_plan[x] {
+                in_plan[x] = true;
+                slots.push(x);
             }
         }
     }
+    // a few ingredients against a few dozen nodes: looked up directly rather than hashed
+    let present = |object: &str| {
+        slots.iter().any(|&s| {
+            let node = &tree.slots[s].node;
+            node.label == object || node.listed().any(|i| i == object)
+        })
+    };
     for o in outcomes.iter_mut() {
-        if o.status == Status::Planned && !present.contains(o.object.as_str()) {
+        if o.status == Status::Planned && !present(&o.object) {
             o.status = Status::Unplannable;
             let why = "its units were dropped while ordering the plan (they closed a cycle)";
             o.reason = Some(match o.reason.take() {

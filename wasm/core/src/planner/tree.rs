@@ -460,8 +460,9 @@ impl<'kb> Tree<'kb> {
     /// Makes the tree sound at the level of node *values*, which is what a plan shows: a unit identical
     /// to an earlier one is dropped (its products are the earlier one's), and a unit that makes nothing
     /// new that a later unit uses (only passes its inputs on) is dropped, its outputs replaced by the
-    /// equal inputs. Repeats until nothing changes; units the goal does not need are dropped.
-    pub fn normalize(&mut self) {
+    /// equal inputs. Repeats until nothing changes; units the goal does not need are dropped. Returns
+    /// the slots' values (`values`): the slots live units use afterwards are among those it compared.
+    pub fn normalize(&mut self) -> Vec<usize> {
         // slots keep their nodes here: compare values by interned id rather than by node
         let value = self.values();
         let motion = self.motion_ids();
@@ -567,6 +568,7 @@ impl<'kb> Tree<'kb> {
             order = self.order();
             self.keep_only(&order);
         }
+        value
     }
 
     /// An id per unit, equal for units with the same motion.
@@ -582,15 +584,28 @@ impl<'kb> Tree<'kb> {
             .collect()
     }
 
-    /// An id per slot, equal for slots with equal nodes.
+    /// An id per slot, equal for slots with equal nodes, below the number of slots. `normalize` compares
+    /// only slots that live units use (it edits only those units, and only among their slots): every
+    /// other slot gets an id of its own without its node being hashed.
     fn values(&self) -> Vec<usize> {
+        let live = self.live_marks();
         let mut ids: HashMap<&ObjectNode, usize> =
             HashMap::with_capacity_and_hasher(self.slots.len(), Default::default());
+        let mut next = 0;
         self.slots
             .iter()
-            .map(|s| {
-                let next = ids.len();
-                *ids.entry(&s.node).or_insert(next)
+            .zip(live)
+            .map(|(s, live)| {
+                let fresh = next;
+                let id = if live {
+                    *ids.entry(&s.node).or_insert(fresh)
+                } else {
+                    fresh
+                };
+                if id == fresh {
+                    next += 1;
+                }
+                id
             })
             .collect()
     }
