@@ -7,7 +7,9 @@ use crate::model::NodeId;
 use crate::taxonomy::is_utensil;
 use rustc_hash::FxHashMap as HashMap;
 use std::collections::{BTreeMap, BTreeSet};
+use std::hash::Hash;
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex, PoisonError};
 
 /// Built once per knowledge base (`PlannerIndex::new`) and passed to every `plan` call.
 #[derive(Clone, Debug, Default)]
@@ -45,6 +47,41 @@ pub struct PlannerIndex {
     /// For each node, the ids of the subgraphs (sorted) in which some unit makes it (not merely passes
     /// it on).
     made_in: Vec<Vec<u32>>,
+    /// Per (dish class, label, state), the label's nodes ranked for a case-4 branch (`modify::pick_nodes`).
+    pub(crate) picks: Memo<(Option<u32>, String, String), Arc<[(NodeId, bool)]>>,
+}
+
+/// Answers that follow from the knowledge base alone, remembered for every plan. Bounded: full, it starts
+/// over, so that hostile queries or a far larger knowledge base cannot grow it without limit.
+#[derive(Debug, Default)]
+pub(crate) struct Memo<K, V>(Mutex<HashMap<K, V>>);
+
+const MAX_REMEMBERED: usize = 4096;
+
+impl<K: Eq + Hash, V: Clone> Memo<K, V> {
+    /// The answer for `key`, worked out by `answer` the first time it is asked.
+    pub(crate) fn get_or_insert_with(&self, key: K, answer: impl FnOnce() -> V) -> V {
+        // a panic elsewhere cannot leave the map half-written: its answers stay sound
+        let lock = || self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some(v) = lock().get(&key) {
+            return v.clone();
+        }
+        // worked out unlocked: plans on other threads are not held up
+        let v = answer();
+        let mut map = lock();
+        if map.len() >= MAX_REMEMBERED {
+            map.clear();
+        }
+        map.insert(key, v.clone());
+        v
+    }
+}
+
+impl<K: Clone, V: Clone> Clone for Memo<K, V> {
+    fn clone(&self) -> Self {
+        let map = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        Memo(Mutex::new(map.clone()))
+    }
 }
 
 static NEXT_ID: AtomicU64 = AtomicU64::new(1);
@@ -262,6 +299,7 @@ impl PlannerIndex {
                 .collect(),
             subgraph_ids,
             unit_sources,
+            picks: Memo::default(),
         }
     }
 
@@ -365,3 +403,9 @@ impl PlannerIndex {
         self.utensil_for_motion.get(motion).copied()
     }
 }
+
+/// Plans may run on several threads against one index.
+const _: fn() = || {
+    fn send_sync<T: Send + Sync>() {}
+    send_sync::<PlannerIndex>();
+};

@@ -14,6 +14,7 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::borrow::Cow;
 use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
+use std::sync::Arc;
 
 pub(crate) struct Context<'a> {
     pub kb: &'a KnowledgeBase,
@@ -800,7 +801,16 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
 /// Knowledge-base nodes of `eq` for state `s`, best first: same state, else same category (ties: the
 /// state most frequent in recipes of the dish class, then overall), preferring nodes without a place.
 /// The flag says whether the node is in the wanted state (else it is the ingredient as bought).
-fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
+/// Remembered by the index: the ranking follows from the knowledge base alone, the same in every plan.
+fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Arc<[(NodeId, bool)]> {
+    let key = (ctx.class, eq.to_string(), s.to_string());
+    ctx.index
+        .picks
+        .get_or_insert_with(key, || rank_nodes(ctx, eq, s).into())
+}
+
+/// `pick_nodes` worked out.
+fn rank_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
     let c = category(s);
     type Key = (
         bool,
@@ -944,7 +954,8 @@ fn add_branch<'kb>(
     let count = candidates.len();
     // the best few in the state, and always the ingredient as it comes from the kitchen (last)
     let tried = candidates
-        .into_iter()
+        .iter()
+        .copied()
         .enumerate()
         .filter(|(i, _)| *i < 8 || *i + 1 == count)
         .map(|x| x.1);
