@@ -1142,6 +1142,8 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     for &x in &live {
         gone[x] = pruned.contains(&tree.slots[x].node.label);
     }
+    // labels that go with the units removed below, beyond those already dropped from the contents
+    let mut with_units: BTreeSet<String> = BTreeSet::new();
     let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
     let resolve = |alias: &HashMap<SlotId, SlotId>, mut s: SlotId| {
         for _ in 0..10_000 {
@@ -1195,8 +1197,8 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
                     None => {
                         let label = node.label.clone();
                         gone[x] = true;
-                        if !utensil && !keep.contains(&label) {
-                            pruned.insert(label);
+                        if !utensil && !keep.contains(&label) && !pruned.contains(&label) {
+                            with_units.insert(label);
                         }
                     }
                 }
@@ -1211,8 +1213,10 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     // the goal may have been passed through a removed unit
     // labels made only by removed units leave the lists of contents as well
     let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
-    pruned
-        .retain(|l| starting.contains(l) || !still.iter().any(|&x| tree.slots[x].node.label == *l));
-    drop_contents(tree, &pruned);
+    with_units.retain(|l| !still.iter().any(|&x| tree.slots[x].node.label == *l));
+    if !with_units.is_empty() {
+        drop_contents(tree, &with_units);
+        pruned.extend(with_units);
+    }
     pruned.into_iter().collect()
 }
