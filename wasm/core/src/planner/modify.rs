@@ -933,6 +933,10 @@ fn attach_point(
         });
         if let Some(key) = beats(kin) {
             best = Some((u, key));
+            // a unit adding ingredients of the same kind with the dish's first motion: none beats it
+            if key == (true, true, usize::MAX) {
+                break;
+            }
         }
     }
     best.map(|b| b.0)

@@ -444,9 +444,10 @@ impl<'kb> Tree<'kb> {
             for v in self.consumers(s, order) {
                 for &(o, _) in &self.units[v].outputs {
                     let theirs = &self.slots[o].node;
-                    let took_over = node.contents().all(|x| theirs.contents().any(|c| c == x));
+                    // the contents compared last: the dearest test, and only when it decides
+                    let took_over = || node.contents().all(|x| theirs.contents().any(|c| c == x));
                     let same_vessel = theirs.label == node.label;
-                    if theirs.holds_something() && (took_over || same_vessel) && o != s {
+                    if o != s && theirs.holds_something() && (same_vessel || took_over()) {
                         work.push(o);
                     }
                 }
