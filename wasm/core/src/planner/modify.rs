@@ -983,31 +983,15 @@ fn add_branch<'kb>(
             format!("'{eq}' taken as bought (FOON makes it only together with other ingredients)");
         return finish_branch(ctx, tree, eq, o, s, before, bare, String::new(), false, how);
     };
-    // the utensils below and the branch's nodes (a unit has a few): sized so that it does not grow
-    let mut slot_of: HashMap<NodeId, SlotId> =
-        HashMap::with_capacity_and_hasher(4 * r.units.len() + 16, Default::default());
-    // utensils the tree already starts with are shared rather than duplicated
-    for x in tree.live_slots() {
-        if let Some(k) = tree.slots[x].kb {
-            if tree.slots[x].utensil && !tree.produced(x) {
-                slot_of.entry(k).or_insert(x);
-            }
-        }
-    }
-    let units = if ctx.kb.kitchen[n] {
-        Vec::new()
+    // most branches are a kitchen item alone: only units retrieved for one share the tree's utensils
+    let (added, made) = if ctx.kb.kitchen[n] || r.units.is_empty() {
+        (Vec::new(), None)
     } else {
-        r.units.clone()
+        let mut slot_of = starting_utensils(tree, r.units.len());
+        let added = tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
+        (added, slot_of.get(&n).copied())
     };
-    let added = if units.is_empty() {
-        Vec::new()
-    } else {
-        tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted)
-    };
-    let last = match slot_of.get(&n) {
-        Some(&x) => x,
-        None => tree.add_slot(ctx.kb.nodes[n].clone()),
-    };
+    let last = made.unwrap_or_else(|| tree.add_slot(ctx.kb.nodes[n].clone()));
     let how = format!(
         "'{}' taken from FOON{}",
         ctx.kb.nodes[n],
@@ -1019,6 +1003,20 @@ fn add_branch<'kb>(
     );
     let state = state_text(&ctx.kb.nodes[n]);
     finish_branch(ctx, tree, eq, o, s, before, last, state, in_state, how)
+}
+
+/// The utensils the tree starts with, by knowledge-base node: a branch of `units` units shares them
+/// rather than duplicating them (sized for the branch's nodes too, a few per unit).
+fn starting_utensils(tree: &Tree, units: usize) -> HashMap<NodeId, SlotId> {
+    let mut slot_of = HashMap::with_capacity_and_hasher(4 * units + 16, Default::default());
+    for x in tree.live_slots() {
+        if let Some(k) = tree.slots[x].kb {
+            if tree.slots[x].utensil && !tree.produced(x) {
+                slot_of.entry(k).or_insert(x);
+            }
+        }
+    }
+    slot_of
 }
 
 /// The rest of a case-4 branch whose last node is `last`: a unit bringing it to the state `s` when it is
