@@ -48,8 +48,11 @@ pub struct PlannerIndex {
     /// it on).
     made_in: Vec<Vec<u32>>,
     /// Per (dish class, label, state), the label's nodes ranked for a case-4 branch (`modify::pick_nodes`).
-    pub(crate) picks: Memo<(Option<u32>, String, String), Arc<[(NodeId, bool)]>>,
+    pub(crate) picks: Memo<(Option<u32>, String, String), Picks>,
 }
+
+/// Knowledge-base nodes ranked for a case-4 branch, each flagged when it is in the wanted state.
+pub(crate) type Picks = Arc<[(NodeId, bool)]>;
 
 /// Answers that follow from the knowledge base alone, remembered for every plan. Bounded: full, it starts
 /// over, so that hostile queries or a far larger knowledge base cannot grow it without limit.

@@ -1,7 +1,7 @@
 //! Section III-C: modification of the reference task tree for the query's ingredients (Table I),
 //! branches for ingredients from elsewhere in FOON, and pruning of what was not asked for.
 
-use super::index::PlannerIndex;
+use super::index::{Picks, PlannerIndex};
 use super::retrieve::{retrieve, retrieve_within};
 use super::states::{category, is_food_state, Category};
 use super::tree::{dedup_slots, edit_contents, map_contents, rename_item, SlotId, TUnitId, Tree};
@@ -14,7 +14,6 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::borrow::Cow;
 use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
-use std::sync::Arc;
 
 pub(crate) struct Context<'a> {
     pub kb: &'a KnowledgeBase,
@@ -802,7 +801,7 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
 /// state most frequent in recipes of the dish class, then overall), preferring nodes without a place.
 /// The flag says whether the node is in the wanted state (else it is the ingredient as bought).
 /// Remembered by the index: the ranking follows from the knowledge base alone, the same in every plan.
-fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Arc<[(NodeId, bool)]> {
+fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Picks {
     let key = (ctx.class, eq.to_string(), s.to_string());
     ctx.index
         .picks
