@@ -2,6 +2,10 @@
 //! retrieval heuristic and substitution all go through it), so the embedding table can replace the
 //! exact-match default without touching the planner.
 
+use rustc_hash::FxHashMap as HashMap;
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+use std::sync::{Arc, Mutex};
+
 /// A similarity between ingredient names in the normal form of `label::normalize_label`.
 pub trait Similarity {
     /// Similarity in [0, 1]; 1 when both names are the same.
@@ -61,6 +65,81 @@ pub trait Similarity {
     /// Whether a candidate this similar may stand in for an ingredient at all.
     fn accepts(&self, sim: f32) -> bool {
         sim >= 0.3
+    }
+
+    /// Where this similarity's pairs may be remembered from plan to plan (`None`: nowhere, the default
+    /// for a similarity as cheap as a lookup).
+    fn memory(&self) -> Option<&PairMemory> {
+        None
+    }
+}
+
+/// Pairs (sim(name, candidate), sim(candidate, name)) of one similarity, remembered per name and
+/// candidate list (named by a set id that never changes for it, as in `Similarity::rank_in_set`): query
+/// names recur from plan to plan, and so do the candidates goal selection asks of them. The caller fills
+/// the rows with this similarity's answers. Bounded: the memory starts again when it holds
+/// `PAIR_MEMORY_CELLS` pairs.
+#[derive(Debug, Default)]
+pub struct PairMemory {
+    rows: Mutex<Rows>,
+}
+
+/// The pairs held (how many), and the rows per set id and name.
+type Rows = (usize, HashMap<u64, HashMap<String, Arc<PairRow>>>);
+
+/// Pairs remembered at most: 16 MB (a goal class of 100 times FOON-111 has a few thousand labels).
+const PAIR_MEMORY_CELLS: usize = 1 << 21;
+
+impl PairMemory {
+    /// The row of `name` against the `len` candidates of `set`, empty on first ask.
+    pub fn row(&self, set: u64, name: &str, len: usize) -> Arc<PairRow> {
+        let Ok(mut guard) = self.rows.lock() else {
+            return Arc::new(PairRow::new(len));
+        };
+        let (cells, rows) = &mut *guard;
+        if let Some(row) = rows.get(&set).and_then(|r| r.get(name)) {
+            return Arc::clone(row);
+        }
+        if *cells + len > PAIR_MEMORY_CELLS {
+            *cells = 0;
+            rows.clear();
+        }
+        *cells += len;
+        let row = Arc::new(PairRow::new(len));
+        rows.entry(set)
+            .or_default()
+            .insert(name.to_string(), Arc::clone(&row));
+        row
+    }
+}
+
+/// One name's pairs with a candidate list, by candidate position; each filled once. Atomic cells let
+/// plans share a row without a lock (a pair written twice is written the same).
+#[derive(Debug)]
+pub struct PairRow(Box<[AtomicU64]>);
+
+/// A cell not filled yet: two NaNs, never a pair of similarities.
+const UNKNOWN: u64 = u64::MAX;
+
+impl PairRow {
+    pub fn new(len: usize) -> PairRow {
+        PairRow((0..len).map(|_| AtomicU64::new(UNKNOWN)).collect())
+    }
+
+    /// The pair at position `i`, when filled.
+    pub fn get(&self, i: usize) -> Option<(f32, f32)> {
+        let bits = self.0[i].load(Relaxed);
+        (bits != UNKNOWN).then(|| {
+            (
+                f32::from_bits((bits >> 32) as u32),
+                f32::from_bits(bits as u32),
+            )
+        })
+    }
+
+    pub fn set(&self, i: usize, (to, from): (f32, f32)) {
+        let bits = (u64::from(to.to_bits()) << 32) | u64::from(from.to_bits());
+        self.0[i].store(bits, Relaxed);
     }
 }
 

@@ -18,7 +18,7 @@ use crate::embedding::{is_stop_word, words, EmbeddingTable};
 use crate::error::Result;
 use crate::kb::KnowledgeBase;
 use crate::label::normalize_label;
-use crate::similarity::{Prepared, Similarity};
+use crate::similarity::{PairMemory, Prepared, Similarity};
 use rust_stemmers::{Algorithm, Stemmer};
 use rustc_hash::FxHashMap as HashMap;
 use serde::Serialize;
@@ -441,6 +441,8 @@ pub struct EmbeddingSimilarity {
     /// The profiles of the candidate sets last used by `rank_in_set` and `prepare` (a knowledge base's
     /// labels), most recent last, so that a ranking or a comparison does not look each label up again.
     set_profiles: Mutex<Vec<(u64, SetProfiles)>>,
+    /// Pairs the planner remembers from plan to plan (goal selection's).
+    memory: PairMemory,
 }
 
 /// Candidate sets whose profiles are kept (a planner index has two: all labels, ingredient labels).
@@ -676,6 +678,7 @@ impl EmbeddingSimilarity {
             cache: Mutex::new(HashMap::default()),
             ranked: Mutex::new(HashMap::default()),
             set_profiles: Mutex::new(Vec::new()),
+            memory: PairMemory::default(),
         }
     }
 
@@ -1206,6 +1209,10 @@ impl Similarity for EmbeddingSimilarity {
             UNLISTED_CONFIDENT_FROM
         };
         !q.is_known() || q.category.is_none() || q.category != c.category || similarity < needed
+    }
+
+    fn memory(&self) -> Option<&PairMemory> {
+        Some(&self.memory)
     }
 }
 

@@ -3,7 +3,7 @@
 use super::index::PlannerIndex;
 use super::score::{GoalFit, Scorer};
 use crate::kb::{Goal, KnowledgeBase};
-use crate::taxonomy::{dish_class_name, is_utensil};
+use crate::taxonomy::dish_class_name;
 use std::cmp::Ordering;
 
 #[derive(Clone, Debug)]
@@ -32,37 +32,24 @@ pub(crate) fn select<'a>(
     notes: &mut Vec<String>,
     dish_type: &str,
 ) -> Option<Chosen<'a>> {
-    // a goal must be made by some unit, and be a dish rather than a container
-    let usable = |(_, g): &(usize, &Goal)| {
-        kb.producers.get(g.node).is_some_and(|p| !p.is_empty())
-            && !is_utensil(&kb.nodes[g.node].label)
-    };
-    let mut candidates: Vec<(usize, &Goal)> = match class {
-        Some(c) => kb
-            .goals
-            .iter()
-            .enumerate()
-            .filter(|(_, g)| g.dish_class == Some(c))
-            .filter(usable)
-            .collect(),
-        None => Vec::new(),
-    };
-    if candidates.is_empty() {
-        match class {
-            None => notes.push(format!(
-                "unknown dish type '{dish_type}': searched all goal nodes"
-            )),
-            Some(c) => notes.push(format!(
-                "no recipe of class '{}' in the knowledge base: searched all goal nodes",
-                dish_class_name(c).unwrap_or("?")
-            )),
+    let goals = match class.and_then(|c| index.goals_of_class(c)) {
+        Some(goals) => goals,
+        None => {
+            notes.push(match class {
+                None => format!("unknown dish type '{dish_type}': searched all goal nodes"),
+                Some(c) => format!(
+                    "no recipe of class '{}' in the knowledge base: searched all goal nodes",
+                    dish_class_name(c).unwrap_or("?")
+                ),
+            });
+            index.all_goals()
         }
-        candidates = kb.goals.iter().enumerate().filter(usable).collect();
-    }
+    };
+    let fits = scorer.goal_fits(goals);
     let mut best: Option<(Chosen<'a>, usize, usize)> = None;
-    for (i, g) in candidates {
-        let ings = index.goal_ingredients(i);
-        let fit = scorer.goal_fit(ings);
+    for (i, ings) in &goals.goals {
+        let g = &kb.goals[*i];
+        let fit = fits.fit(ings);
         let (s, exact) = (score(&fit), fit.exact);
         let better = match &best {
             None => true,

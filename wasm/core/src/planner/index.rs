@@ -38,8 +38,10 @@ pub struct PlannerIndex {
     label_ids: HashMap<String, u32>,
     /// Per unit, the ids of the ingredients it handles: its non-utensil inputs and their contents.
     unit_ingredients: Vec<Vec<u32>>,
-    /// Per goal (`kb.goals` order), the ids of its ingredients that are not utensils, as listed.
-    goal_ingredients: Vec<Vec<u32>>,
+    /// The usable goals per dish class, for the classes that have some.
+    class_goals: HashMap<u32, GoalClass>,
+    /// Every usable goal: goal selection's choice when the query's class has none.
+    all_goals: GoalClass,
     /// Subgraph names by id; ids follow name order, so sorted id lists are sorted name lists.
     subgraph_ids: HashMap<String, u32>,
     /// For each unit, the ids of the subgraphs it occurs in (sorted): `kb.provenance` without strings.
@@ -87,6 +89,46 @@ impl<K: Clone, V: Clone> Clone for Memo<K, V> {
     }
 }
 
+/// The goals goal selection may choose among (made by some unit, a dish rather than a container), with
+/// their ingredients numbered within the group: the pairs a query's names make with them are remembered
+/// from plan to plan by these numbers (`Similarity::memory`).
+#[derive(Clone, Debug, Default)]
+pub(crate) struct GoalClass {
+    /// Unique for the process: names `labels` for `PairMemory`.
+    pub set: u64,
+    /// The label ids of the goals' ingredients, ascending: an ingredient's position here is its slot.
+    pub labels: Vec<u32>,
+    /// Each goal (index into `kb.goals`, in that order) with the slots of its ingredients that are not
+    /// utensils, as listed.
+    pub goals: Vec<(usize, Vec<u32>)>,
+}
+
+impl GoalClass {
+    /// `goals` (with their ingredients' label ids) numbered as a group.
+    fn new(goals: Vec<(usize, &Vec<u32>)>) -> GoalClass {
+        let mut labels: Vec<u32> = goals
+            .iter()
+            .flat_map(|(_, ids)| ids.iter().copied())
+            .collect();
+        labels.sort_unstable();
+        labels.dedup();
+        let slot = |id: &u32| labels.binary_search(id).unwrap_or_default() as u32;
+        GoalClass {
+            set: NEXT_ID.fetch_add(1, Ordering::Relaxed),
+            goals: goals
+                .into_iter()
+                .map(|(g, ids)| (g, ids.iter().map(slot).collect()))
+                .collect(),
+            labels,
+        }
+    }
+
+    /// The slot of label `id`, when an ingredient of these goals has it.
+    pub fn slot(&self, id: u32) -> Option<u32> {
+        self.labels.binary_search(&id).ok().map(|s| s as u32)
+    }
+}
+
 static NEXT_ID: AtomicU64 = AtomicU64::new(1);
 
 /// Occurrences per dish class (`None`: all classes).
@@ -110,6 +152,35 @@ fn by_word(flat: HashMap<(&str, Option<u32>), u32>) -> HashMap<String, ClassCoun
         out.entry(word.to_string()).or_default().insert(class, n);
     }
     out
+}
+
+/// The usable goals (with their ingredients' label ids, `kb.goals` order) per dish class, and all of them.
+fn goal_classes(
+    kb: &KnowledgeBase,
+    ingredients: &[Vec<u32>],
+) -> (HashMap<u32, GoalClass>, GoalClass) {
+    let usable: Vec<(usize, &Vec<u32>)> = kb
+        .goals
+        .iter()
+        .zip(ingredients)
+        .enumerate()
+        .filter(|(_, (g, _))| {
+            kb.producers.get(g.node).is_some_and(|p| !p.is_empty())
+                && !is_utensil(&kb.nodes[g.node].label)
+        })
+        .map(|(i, (_, ids))| (i, ids))
+        .collect();
+    let mut by_class: BTreeMap<u32, Vec<(usize, &Vec<u32>)>> = BTreeMap::new();
+    for &(i, ids) in &usable {
+        if let Some(c) = kb.goals[i].dish_class {
+            by_class.entry(c).or_default().push((i, ids));
+        }
+    }
+    let classes = by_class
+        .into_iter()
+        .map(|(c, goals)| (c, GoalClass::new(goals)))
+        .collect();
+    (classes, GoalClass::new(usable))
 }
 
 impl PlannerIndex {
@@ -252,7 +323,7 @@ impl PlannerIndex {
                 ids
             })
             .collect();
-        let goal_ingredients = kb
+        let goal_ingredients: Vec<Vec<u32>> = kb
             .goals
             .iter()
             .map(|g| {
@@ -266,8 +337,10 @@ impl PlannerIndex {
         for n in &kb.nodes {
             intern(&n.label);
         }
+        let (class_goals, all_goals) = goal_classes(kb, &goal_ingredients);
         PlannerIndex {
-            goal_ingredients,
+            class_goals,
+            all_goals,
             label_names,
             label_ids,
             unit_ingredients,
@@ -352,12 +425,14 @@ impl PlannerIndex {
             .unwrap_or(&[])
     }
 
-    /// The non-utensil ingredient ids of goal `g` (an index into `kb.goals`).
-    pub(crate) fn goal_ingredients(&self, g: usize) -> &[u32] {
-        self.goal_ingredients
-            .get(g)
-            .map(Vec::as_slice)
-            .unwrap_or(&[])
+    /// The usable goals of dish class `class`, when it has some.
+    pub(crate) fn goals_of_class(&self, class: u32) -> Option<&GoalClass> {
+        self.class_goals.get(&class)
+    }
+
+    /// Every usable goal.
+    pub(crate) fn all_goals(&self) -> &GoalClass {
+        &self.all_goals
     }
 
     pub(crate) fn nodes_of(&self, label: &str) -> &[NodeId] {

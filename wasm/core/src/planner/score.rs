@@ -2,11 +2,12 @@
 //! of the retrieval (Alg. 2), once per unit, and the ingredient-set coverage of goal selection (Alg. 1).
 //! Each similarity is computed at most once per plan (not once per unit, goal and retrieval).
 
-use super::index::PlannerIndex;
+use super::index::{GoalClass, PlannerIndex};
 use crate::model::UnitId;
-use crate::similarity::{Prepared, Similarity};
+use crate::similarity::{PairRow, Prepared, Similarity};
 use rustc_hash::FxHashMap as HashMap;
 use std::cell::RefCell;
+use std::sync::Arc;
 
 /// The fit of a goal's ingredient set with the query's.
 pub(crate) struct GoalFit {
@@ -29,7 +30,7 @@ pub(crate) struct Scorer<'a> {
     /// (sim(name, label), sim(label, name)) per query name and label, computed on first ask. Both
     /// directions come from one comparison, and goal selection asks both of every pair.
     pairs: RefCell<PairTable>,
-    /// `goal_fit`'s per-query-name bests, kept between goals (it is asked of every goal of a class).
+    /// `recall`'s per-query-name bests, kept between units.
     best_to: RefCell<Vec<f32>>,
     units: RefCell<HashMap<UnitId, f32>>,
 }
@@ -83,60 +84,45 @@ impl<'a> Scorer<'a> {
         }
     }
 
-    /// How well a goal's ingredient set (`labels`) and the query's fit each other (goal selection asks
-    /// it of every goal of a dish class).
-    pub fn goal_fit(&self, labels: &[u32]) -> GoalFit {
-        let (recall, precision, exact) = self.coverage(labels);
-        GoalFit {
-            recall: if self.query.is_empty() {
-                0.0
-            } else {
-                recall / self.query.len() as f32
-            },
-            precision: if labels.is_empty() {
-                0.0
-            } else {
-                precision / labels.len() as f32
-            },
-            exact,
+    /// Goal selection among `goals`: the pairs of the query's names with the goals' ingredients come
+    /// from the similarity's memory when it has one (they recur from plan to plan), else from this plan.
+    pub fn goal_fits<'s>(&'s self, goals: &'s GoalClass) -> GoalFits<'s, 'a> {
+        let len = goals.labels.len();
+        let rows = self
+            .query
+            .iter()
+            .map(|q| match self.sim.memory() {
+                Some(memory) => memory.row(goals.set, q, len),
+                None => Arc::new(PairRow::new(len)),
+            })
+            .collect();
+        GoalFits {
+            scorer: self,
+            goals,
+            rows,
+            exact_at: self
+                .query_ids
+                .iter()
+                .map(|id| id.and_then(|id| goals.slot(id)))
+                .collect(),
         }
     }
 
-    /// In one pass over the pairs of the query and `labels`: Σ over query names of the best similarity
-    /// to any of `labels`, Σ over `labels` of the best similarity to any query name (exact matches count
-    /// 1 in both), and how many query names `labels` has exactly.
-    fn coverage(&self, labels: &[u32]) -> (f32, f32, usize) {
+    /// Σ over query names of the best similarity to any of `labels` (exact matches count 1).
+    fn recall(&self, labels: &[u32]) -> f32 {
         let mut pairs = self.pairs.borrow_mut();
         // per query name, the best similarity to any of `labels` so far
         let mut best_to = self.best_to.borrow_mut();
         best_to.clear();
         best_to.resize(self.query.len(), 0.0);
-        let mut precision = 0.0f32;
         for &l in labels {
-            let mut best_from = 0.0f32;
             let cells = pairs.slot(l);
             for (q, to) in best_to.iter_mut().enumerate() {
-                let (there, back) = self.in_slot(cells, q, l);
-                *to = larger(*to, there);
-                best_from = larger(best_from, back);
-            }
-            precision += if self.query_ids.contains(&Some(l)) {
-                1.0
-            } else {
-                best_from
-            };
-        }
-        let mut recall = 0.0f32;
-        let mut exact = 0;
-        for (id, to) in self.query_ids.iter().zip(best_to.iter()) {
-            if id.is_some_and(|id| labels.contains(&id)) {
-                exact += 1;
-                recall += 1.0;
-            } else {
-                recall += to;
+                *to = larger(*to, self.in_slot(cells, q, l).0);
             }
         }
-        (recall, precision, exact)
+        let exact = |id: &Option<u32>| id.is_some_and(|id| labels.contains(&id));
+        sum_with_exact(&self.query_ids, &best_to, exact)
     }
 
     /// g(u) = Σ_q max_a sim(q, a) over the ingredients a the unit handles (exact matches count 1).
@@ -144,10 +130,75 @@ impl<'a> Scorer<'a> {
         if let Some(&g) = self.units.borrow().get(&u) {
             return g;
         }
-        let g = self.coverage(self.index.unit_ingredients(u)).0;
+        let g = self.recall(self.index.unit_ingredients(u));
         self.units.borrow_mut().insert(u, g);
         g
     }
+}
+
+/// The query against the goals of one class (`Scorer::goal_fits`), by the slots of the goals' ingredients.
+pub(crate) struct GoalFits<'s, 'a> {
+    scorer: &'s Scorer<'a>,
+    goals: &'s GoalClass,
+    /// Per query name, its pairs with the goals' ingredients.
+    rows: Vec<Arc<PairRow>>,
+    /// Per query name, its slot when an ingredient of the goals has it.
+    exact_at: Vec<Option<u32>>,
+}
+
+impl GoalFits<'_, '_> {
+    /// How well a goal's ingredient set (`slots`) and the query's fit each other.
+    pub fn fit(&self, slots: &[u32]) -> GoalFit {
+        let n = self.rows.len();
+        // per query name, the best similarity to any of `slots` so far
+        let mut best_to = vec![0.0f32; n];
+        let mut precision = 0.0f32;
+        for &s in slots {
+            let mut best_from = 0.0f32;
+            for (q, to) in best_to.iter_mut().enumerate() {
+                let (there, back) = self.pair(q, s);
+                *to = larger(*to, there);
+                best_from = larger(best_from, back);
+            }
+            precision += if self.exact_at.contains(&Some(s)) {
+                1.0
+            } else {
+                best_from
+            };
+        }
+        let exact = |slot: &Option<u32>| slot.is_some_and(|s| slots.contains(&s));
+        let recall = sum_with_exact(&self.exact_at, &best_to, exact);
+        GoalFit {
+            recall: if n == 0 { 0.0 } else { recall / n as f32 },
+            precision: if slots.is_empty() {
+                0.0
+            } else {
+                precision / slots.len() as f32
+            },
+            exact: self.exact_at.iter().filter(|s| exact(s)).count(),
+        }
+    }
+
+    /// (sim(query name `q`, ingredient at `slot`), the converse), remembered in `q`'s row.
+    fn pair(&self, q: usize, slot: u32) -> (f32, f32) {
+        let row = &self.rows[q];
+        row.get(slot as usize).unwrap_or_else(|| {
+            let label = self.goals.labels[slot as usize];
+            let pair = self
+                .scorer
+                .remembered(&mut self.scorer.pairs.borrow_mut(), q, label);
+            row.set(slot as usize, pair);
+            pair
+        })
+    }
+}
+
+/// Σ over query names of their best similarity, 1 for those `exact` says the labels have.
+fn sum_with_exact<T>(query: &[T], best: &[f32], exact: impl Fn(&T) -> bool) -> f32 {
+    query
+        .iter()
+        .zip(best)
+        .fold(0.0, |sum, (q, b)| sum + if exact(q) { 1.0 } else { *b })
 }
 
 /// The remembered pairs of a plan: each label asked about gets a slot of one cell per query name, side
