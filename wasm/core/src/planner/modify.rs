@@ -670,7 +670,7 @@ fn restate<'kb>(
                     tree.slots[x].node = Cow::Owned(node);
                 }
                 let unit = &mut tree.units[u];
-                let before = std::mem::replace(&mut unit.motion, motion.clone());
+                let before = std::mem::replace(&mut unit.motion, Cow::Owned(motion.clone()));
                 if unit.origin == Origin::Reference {
                     unit.origin = Origin::Renamed;
                 }

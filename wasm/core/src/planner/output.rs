@@ -56,7 +56,7 @@ pub(crate) fn build(p: Parts) -> Plan {
             let unit = &tree.units[u];
             PlanUnit {
                 inputs: unit.inputs.iter().map(|i| node(i.0)).collect(),
-                motion: unit.motion.clone(),
+                motion: unit.motion.to_string(),
                 outputs: unit.outputs.iter().map(|o| node(o.0)).collect(),
                 origin: unit.origin,
                 sources: unit.sources.to_vec(),
@@ -221,7 +221,7 @@ fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Op
             break;
         };
         last_step = Some((pos, u));
-        motions.push(tree.units[u].motion.clone());
+        motions.push(tree.units[u].motion.to_string());
         match out {
             Some(o) => {
                 seen.push(o);

@@ -176,7 +176,7 @@ fn drop_duplicates(tree: &mut Tree, units: &mut Vec<TUnitId>, shapes: &Shapes) {
         HashSet::with_capacity_and_hasher(units.len(), Default::default());
     units.retain(|&u| {
         let key = (
-            tree.units[u].motion.as_str(),
+            tree.units[u].motion.as_ref(),
             shapes.inputs(u),
             shapes.outputs(u),
         );

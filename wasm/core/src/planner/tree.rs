@@ -36,7 +36,8 @@ impl Slot<'_> {
 #[derive(Clone, Debug)]
 pub(crate) struct TUnit<'kb> {
     pub inputs: Vec<(SlotId, bool)>,
-    pub motion: String,
+    /// Borrowed from the knowledge base for retrieved units (the tree is dropped after every plan).
+    pub motion: Cow<'kb, str>,
     pub outputs: Vec<(SlotId, bool)>,
     pub origin: Origin,
     /// The knowledge base's subgraphs the unit comes from (none for a unit the planner made).
@@ -183,7 +184,7 @@ impl<'kb> Tree<'kb> {
                 .collect();
             self.units.push(TUnit {
                 inputs,
-                motion: unit.motion.clone(),
+                motion: Cow::Borrowed(&unit.motion),
                 outputs,
                 origin,
                 sources: &kb.provenance[u],
@@ -213,7 +214,7 @@ impl<'kb> Tree<'kb> {
     ) -> TUnitId {
         self.units.push(TUnit {
             inputs,
-            motion: motion.to_string(),
+            motion: Cow::Owned(motion.to_string()),
             outputs: outputs.clone(),
             origin,
             sources: &[],
@@ -580,7 +581,7 @@ impl<'kb> Tree<'kb> {
             .iter()
             .map(|u| {
                 let next = ids.len();
-                *ids.entry(u.motion.as_str()).or_insert(next)
+                *ids.entry(u.motion.as_ref()).or_insert(next)
             })
             .collect()
     }
