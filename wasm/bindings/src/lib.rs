@@ -49,8 +49,11 @@ fn internal_error(message: String) -> JsValue {
 }
 
 fn to_json<T: serde::Serialize>(value: &T) -> Result<String, JsValue> {
-    serde_json::to_string(value)
-        .map_err(|e| internal_error(format!("cannot serialise result: {e}")))
+    let fail = |e: &dyn std::fmt::Display| internal_error(format!("cannot serialise result: {e}"));
+    // sized for a plan (about 16 kB): grown from serde_json's 128 bytes, the text is copied seven times
+    let mut out = Vec::with_capacity(32 * 1024);
+    serde_json::to_writer(&mut out, value).map_err(|e| fail(&e))?;
+    String::from_utf8(out).map_err(|e| fail(&e))
 }
 
 fn to_json_pretty<T: serde::Serialize>(value: &T) -> Result<String, JsValue> {
