@@ -62,7 +62,6 @@ pub fn plan(
         &scorer,
         chosen.goal.node,
         index.subgraph_id(&chosen.goal.subgraph),
-        &HashSet::default(),
     );
     for &n in &reference.blocked {
         notes.push(format!(

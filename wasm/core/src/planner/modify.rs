@@ -601,15 +601,7 @@ fn restate<'kb>(
                 "no way to make '{leaf_node}' from '{s}' is known; taken as it is"
             ));
         };
-        let taken: HashSet<usize> = HashSet::default();
-        let r = retrieve(
-            ctx.kb,
-            ctx.index,
-            ctx.scorer,
-            kb_node,
-            ctx.goal_subgraph,
-            &taken,
-        );
+        let r = retrieve(ctx.kb, ctx.index, ctx.scorer, kb_node, ctx.goal_subgraph);
         if r.units.is_empty() {
             return Err(format!(
                 "FOON has no way to make '{leaf_state}' {o} from '{s}'; it is taken as it is"
@@ -951,7 +943,6 @@ fn add_branch<'kb>(
     o: &str,
     s: &str,
 ) -> Result<(String, String), String> {
-    let taken: HashSet<usize> = HashSet::default();
     let mut picked = None;
     let candidates = pick_nodes(ctx, eq, s);
     let count = candidates.len();
@@ -968,7 +959,7 @@ fn add_branch<'kb>(
             break;
         }
         let private = |u| private_unit(ctx.kb, u, eq);
-        if let Some(r) = retrieve_within(ctx.kb, ctx.index, ctx.scorer, n, None, &taken, private) {
+        if let Some(r) = retrieve_within(ctx.kb, ctx.index, ctx.scorer, n, None, private) {
             picked = Some((n, in_state, r));
             break;
         }

@@ -61,7 +61,7 @@ fn depends_on(
 /// A unit making the node being expanded, as the search weighs it.
 struct Candidate {
     unit: UnitId,
-    /// Already in the tree (or the caller's).
+    /// Already in the tree.
     reused: bool,
     /// Of the recipe of the unit that needs the node (of the preferred subgraph at the root).
     same_recipe: bool,
@@ -96,16 +96,15 @@ impl Candidate {
 
 /// Retrieves the tree making `root`. `root` is expanded even when it is a kitchen item (a goal, or a
 /// leaf whose making is asked for); every other kitchen node stops the search. `prefer` is a subgraph id
-/// whose units win ties (the reference recipe), and `taken` lists units already in the caller's tree.
+/// whose units win ties (the reference recipe).
 pub(crate) fn retrieve(
     kb: &KnowledgeBase,
     index: &PlannerIndex,
     scorer: &Scorer,
     root: NodeId,
     prefer: Option<u32>,
-    taken: &HashSet<UnitId>,
 ) -> Retrieved {
-    retrieve_within(kb, index, scorer, root, prefer, taken, |_| true).unwrap_or_default()
+    retrieve_within(kb, index, scorer, root, prefer, |_| true).unwrap_or_default()
 }
 
 /// `retrieve`, abandoned (`None`) as soon as it chooses a unit that `allowed` rejects. Every chosen unit
@@ -118,7 +117,6 @@ pub(crate) fn retrieve_within(
     scorer: &Scorer,
     root: NodeId,
     prefer: Option<u32>,
-    taken: &HashSet<UnitId>,
     allowed: impl Fn(UnitId) -> bool,
 ) -> Option<Retrieved> {
     // sized for a typical recipe's tree, so that the tables do not grow step by step
@@ -174,7 +172,7 @@ pub(crate) fn retrieve_within(
             }
             let mut candidate = Candidate {
                 unit: u,
-                reused: in_tree.contains(u) || taken.contains(&u),
+                reused: in_tree.contains(u),
                 same_recipe,
                 g: None,
             };
