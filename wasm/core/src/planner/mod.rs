@@ -81,8 +81,8 @@ pub fn plan(
     };
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
-    let values = tree.normalize();
-    let scheduled = schedule::schedule(&mut tree, &values);
+    let (values, order) = tree.normalize();
+    let scheduled = schedule::schedule(&mut tree, &values, order);
     if request.modify {
         schedule::confirm_planned(&tree, &scheduled.order, &mut outcomes);
     }

@@ -123,14 +123,15 @@ fn push_sorted(buf: &mut Vec<Value>, values: impl Iterator<Item = Value>) -> Ran
 
 /// Orders the live units the goal needs so that the evaluator's invariants hold, editing the tree where
 /// the order alone cannot (see the module comment). Returns the order; dropped units are marked dead.
-/// `value`: the slots' values from `Tree::normalize` (no node has changed since).
-pub(crate) fn schedule(tree: &mut Tree, value: &[usize]) -> Schedule {
+/// `value` and `order`: the slots' values and the tree's order from `Tree::normalize` (nothing has
+/// changed since).
+pub(crate) fn schedule(tree: &mut Tree, value: &[usize], order: Vec<TUnitId>) -> Schedule {
     let nodes = plan_nodes(tree, value);
     let mut vals = values(&nodes);
     let goal = vals.of_slot[tree.goal];
     // the finished dish is never in the kitchen at the start, whatever its states say
     vals.start[goal] = false;
-    let mut units: Vec<TUnitId> = tree.order();
+    let mut units = order;
     let mut shapes = Shapes::new(tree, &vals, &units);
     // each round either settles or removes a product or a unit, so the rounds are bounded
     let limit = 4 * units.len() + 8;

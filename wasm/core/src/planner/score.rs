@@ -30,7 +30,8 @@ pub(crate) struct Scorer<'a> {
     /// (sim(name, label), sim(label, name)) per query name and label, computed on first ask. Both
     /// directions come from one comparison, and goal selection asks both of every pair.
     pairs: RefCell<PairTable>,
-    /// `recall`'s per-query-name bests, kept between units.
+    /// Per query name, its best similarity so far (`recall`, `GoalFits::fit`): one buffer for every
+    /// unit and goal.
     best_to: RefCell<Vec<f32>>,
     units: RefCell<HashMap<UnitId, f32>>,
 }
@@ -150,8 +151,10 @@ impl GoalFits<'_, '_> {
     /// How well a goal's ingredient set (`slots`) and the query's fit each other.
     pub fn fit(&self, slots: &[u32]) -> GoalFit {
         let n = self.rows.len();
-        // per query name, the best similarity to any of `slots` so far
-        let mut best_to = vec![0.0f32; n];
+        // per query name, the best similarity to any of `slots` so far (one buffer for every goal)
+        let mut best_to = self.scorer.best_to.borrow_mut();
+        best_to.clear();
+        best_to.resize(n, 0.0);
         let mut precision = 0.0f32;
         for &s in slots {
             let mut best_from = 0.0f32;

@@ -463,8 +463,9 @@ impl<'kb> Tree<'kb> {
     /// to an earlier one is dropped (its products are the earlier one's), and a unit that makes nothing
     /// new that a later unit uses (only passes its inputs on) is dropped, its outputs replaced by the
     /// equal inputs. Repeats until nothing changes; units the goal does not need are dropped. Returns
-    /// the slots' values (`values`): the slots live units use afterwards are among those it compared.
-    pub fn normalize(&mut self) -> Vec<usize> {
+    /// the slots' values (`values`: the slots live units use afterwards are among those it compared) and
+    /// the tree's order as it leaves it.
+    pub fn normalize(&mut self) -> (Vec<usize>, Vec<TUnitId>) {
         // slots keep their nodes here: compare values by interned id rather than by node
         let value = self.values();
         let motion = self.motion_ids();
@@ -570,7 +571,7 @@ impl<'kb> Tree<'kb> {
             order = self.order();
             self.keep_only(&order);
         }
-        value
+        (value, order)
     }
 
     /// An id per unit, equal for units with the same motion.
