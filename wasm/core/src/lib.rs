@@ -11,6 +11,7 @@ pub mod export;
 pub mod kb;
 pub mod label;
 pub mod limits;
+mod memo;
 pub mod model;
 pub mod parse;
 pub mod plan;

@@ -18,6 +18,7 @@ use crate::embedding::{is_stop_word, words, EmbeddingTable};
 use crate::error::Result;
 use crate::kb::KnowledgeBase;
 use crate::label::normalize_label;
+use crate::memo::Memo;
 use crate::similarity::{PairMemory, Prepared, Similarity};
 use rust_stemmers::{Algorithm, Stemmer};
 use rustc_hash::FxHashMap as HashMap;
@@ -434,10 +435,10 @@ pub struct EmbeddingSimilarity {
     member_categories: Vec<usize>,
     /// Below this similarity a substitute is flagged as low confidence (calibrated on the dev set).
     confident_from: f32,
-    cache: Mutex<HashMap<String, Arc<Profile>>>,
+    profiles: Memo<String, Arc<Profile>, PROFILE_CACHE_LIMIT>,
     /// Answers of `rank_in_set` per (query, candidate set, top): ranking every label of a knowledge base
     /// is the costliest step of planning, and ingredient names recur from query to query.
-    ranked: Mutex<HashMap<RankKey, Vec<(String, f32)>>>,
+    ranked: Memo<RankKey, Vec<(String, f32)>, RANK_CACHE_LIMIT>,
     /// The profiles of the candidate sets last used by `rank_in_set` and `prepare` (a knowledge base's
     /// labels), most recent last, so that a ranking or a comparison does not look each label up again.
     set_profiles: Mutex<Vec<(u64, SetProfiles)>>,
@@ -675,8 +676,8 @@ impl EmbeddingSimilarity {
             member_vectors,
             member_categories,
             confident_from: CONFIDENT_FROM,
-            cache: Mutex::new(HashMap::default()),
-            ranked: Mutex::new(HashMap::default()),
+            profiles: Memo::default(),
+            ranked: Memo::default(),
             set_profiles: Mutex::new(Vec::new()),
             memory: PairMemory::default(),
         }
@@ -715,20 +716,12 @@ impl EmbeddingSimilarity {
     /// The profile of a name, from the cache when it was seen before (candidate labels recur on every
     /// query).
     fn profile(&self, name: &str) -> Arc<Profile> {
-        if let Ok(cache) = self.cache.lock() {
-            if let Some(p) = cache.get(name) {
-                return Arc::clone(p);
-            }
-        }
-        let p = Arc::new(self.compute_profile(name));
-        if name.len() > MAX_CACHED_NAME {
+        if let Some(p) = self.profiles.get(name) {
             return p;
         }
-        if let Ok(mut cache) = self.cache.lock() {
-            if cache.len() >= PROFILE_CACHE_LIMIT {
-                cache.clear();
-            }
-            cache.insert(name.to_string(), Arc::clone(&p));
+        let p = Arc::new(self.compute_profile(name));
+        if name.len() <= MAX_CACHED_NAME {
+            self.profiles.insert(name.to_string(), Arc::clone(&p));
         }
         p
     }
@@ -1168,21 +1161,11 @@ impl Similarity for EmbeddingSimilarity {
         if query.len() > MAX_CACHED_NAME {
             return self.rank_profiles(query, candidates, top);
         }
-        let key = (query.to_string(), set, top);
-        if let Ok(cache) = self.ranked.lock() {
-            if let Some(r) = cache.get(&key) {
-                return r.clone();
-            }
-        }
-        let profiles = self.set_profiles(set, candidates);
-        let r = self.rank_among(query, candidates, &profiles, top, Some(profiles.search()));
-        if let Ok(mut cache) = self.ranked.lock() {
-            if cache.len() >= RANK_CACHE_LIMIT {
-                cache.clear();
-            }
-            cache.insert(key, r.clone());
-        }
-        r
+        self.ranked
+            .get_or_insert_with((query.to_string(), set, top), || {
+                let profiles = self.set_profiles(set, candidates);
+                self.rank_among(query, candidates, &profiles, top, Some(profiles.search()))
+            })
     }
 
     fn prepare<'a>(

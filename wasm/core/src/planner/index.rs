@@ -3,13 +3,13 @@
 
 use super::states::{category, is_food_state, Category};
 use crate::kb::KnowledgeBase;
+use crate::memo::Memo;
 use crate::model::NodeId;
 use crate::taxonomy::is_utensil;
 use rustc_hash::FxHashMap as HashMap;
 use std::collections::{BTreeMap, BTreeSet};
-use std::hash::Hash;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::{Arc, Mutex, PoisonError};
+use std::sync::Arc;
 
 /// Built once per knowledge base (`PlannerIndex::new`) and passed to every `plan` call.
 #[derive(Clone, Debug, Default)]
@@ -50,44 +50,11 @@ pub struct PlannerIndex {
     /// it on).
     made_in: Vec<Vec<u32>>,
     /// Per (dish class, label, state), the label's nodes ranked for a case-4 branch (`modify::pick_nodes`).
-    pub(crate) picks: Memo<(Option<u32>, String, String), Picks>,
+    pub(crate) picks: Memo<(Option<u32>, String, String), Picks, 4096>,
 }
 
 /// Knowledge-base nodes ranked for a case-4 branch, each flagged when it is in the wanted state.
 pub(crate) type Picks = Arc<[(NodeId, bool)]>;
-
-/// Answers that follow from the knowledge base alone, remembered for every plan. Bounded: full, it starts
-/// over, so that hostile queries or a far larger knowledge base cannot grow it without limit.
-#[derive(Debug, Default)]
-pub(crate) struct Memo<K, V>(Mutex<HashMap<K, V>>);
-
-const MAX_REMEMBERED: usize = 4096;
-
-impl<K: Eq + Hash, V: Clone> Memo<K, V> {
-    /// The answer for `key`, worked out by `answer` the first time it is asked.
-    pub(crate) fn get_or_insert_with(&self, key: K, answer: impl FnOnce() -> V) -> V {
-        // a panic elsewhere cannot leave the map half-written: its answers stay sound
-        let lock = || self.0.lock().unwrap_or_else(PoisonError::into_inner);
-        if let Some(v) = lock().get(&key) {
-            return v.clone();
-        }
-        // worked out unlocked: plans on other threads are not held up
-        let v = answer();
-        let mut map = lock();
-        if map.len() >= MAX_REMEMBERED {
-            map.clear();
-        }
-        map.insert(key, v.clone());
-        v
-    }
-}
-
-impl<K: Clone, V: Clone> Clone for Memo<K, V> {
-    fn clone(&self) -> Self {
-        let map = self.0.lock().unwrap_or_else(PoisonError::into_inner);
-        Memo(Mutex::new(map.clone()))
-    }
-}
 
 /// The goals goal selection may choose among (made by some unit, a dish rather than a container), with
 /// their ingredients numbered within the group: the pairs a query's names make with them are remembered
