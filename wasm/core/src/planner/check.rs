@@ -20,69 +20,14 @@ pub const START_STATES: &[&str] = &[
 ];
 
 /// Identity of a node: label, states and contents as sets, container (borrowed from the node).
-pub(crate) type NodeKey<'a> = (&'a str, Names<'a>, Names<'a>, Option<&'a str>);
+pub(crate) type NodeKey<'a> = (&'a str, Vec<&'a str>, Vec<&'a str>, Option<&'a str>);
 
 pub(crate) fn node_key(n: &PlanNode) -> NodeKey<'_> {
-    (
-        &n.label,
-        Names::sorted(&n.states),
-        Names::sorted(&n.ingredients),
-        n.container.as_deref(),
-    )
-}
-
-/// Names in sorted order, compared as such: the node's own list when it is sorted already, as plan
-/// nodes' lists almost always are (no copy), or a sorted copy of it.
-pub(crate) enum Names<'a> {
-    Own(&'a [String]),
-    Sorted(Vec<&'a str>),
-}
-
-impl<'a> Names<'a> {
-    fn sorted(names: &'a [String]) -> Names<'a> {
-        if names.is_sorted() {
-            return Names::Own(names);
-        }
-        let mut copy: Vec<&str> = names.iter().map(String::as_str).collect();
-        copy.sort_unstable();
-        Names::Sorted(copy)
-    }
-
-    fn iter(&self) -> impl Iterator<Item = &str> + '_ {
-        let (own, copy): (&[String], &[&str]) = match self {
-            Names::Own(own) => (own, &[]),
-            Names::Sorted(copy) => (&[], copy),
-        };
-        own.iter().map(String::as_str).chain(copy.iter().copied())
-    }
-}
-
-impl PartialEq for Names<'_> {
-    fn eq(&self, other: &Self) -> bool {
-        self.iter().eq(other.iter())
-    }
-}
-
-impl Eq for Names<'_> {}
-
-impl PartialOrd for Names<'_> {
-    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-impl Ord for Names<'_> {
-    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
-        self.iter().cmp(other.iter())
-    }
-}
-
-impl std::hash::Hash for Names<'_> {
-    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
-        for name in self.iter() {
-            name.hash(state);
-        }
-    }
+    let mut states: Vec<&str> = n.states.iter().map(String::as_str).collect();
+    states.sort_unstable();
+    let mut ingredients: Vec<&str> = n.ingredients.iter().map(String::as_str).collect();
+    ingredients.sort_unstable();
+    (&n.label, states, ingredients, n.container.as_deref())
 }
 
 /// A node the kitchen has at the start even when some unit makes it again (an empty bowl, a lid put
