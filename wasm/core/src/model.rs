@@ -149,10 +149,11 @@ impl ObjectNode {
 
     /// Ingredients the object holds (`contains {…}`), sorted and unique.
     pub fn ingredients(&self) -> Vec<String> {
-        self.ingredient_refs()
-            .into_iter()
-            .map(str::to_string)
-            .collect()
+        // owned from the start rather than copied from a sorted list of borrowed names
+        let mut out: Vec<String> = self.contents().map(str::to_string).collect();
+        out.sort_unstable();
+        out.dedup();
+        out
     }
 
     /// `ingredients` without copying the names.

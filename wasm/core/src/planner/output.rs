@@ -30,14 +30,10 @@ pub(crate) struct Parts<'a> {
 }
 
 pub(crate) fn plan_node(n: &ObjectNode) -> PlanNode {
-    // `ObjectNode::ingredients`, owned from the start rather than copied from a borrowed list
-    let mut ingredients: Vec<String> = n.contents().map(str::to_string).collect();
-    ingredients.sort_unstable();
-    ingredients.dedup();
     PlanNode {
         label: n.label.clone(),
         states: n.states.iter().map(State::text).collect(),
-        ingredients,
+        ingredients: n.ingredients(),
         container: n.container().map(str::to_string),
     }
 }
