@@ -8,6 +8,8 @@ use foon_core::{
     bundle, EmbeddingSimilarity, ErrorCode, FoonError, KnowledgeBase, Plan, PlanRequest,
     PlannerIndex,
 };
+use js_sys::JsString;
+use std::cell::RefCell;
 use wasm_bindgen::prelude::*;
 
 /// Converts a core error into a JS `Error` with `code`, `file`, `line`, `column` properties.
@@ -48,17 +50,16 @@ fn internal_error(message: String) -> JsValue {
     error.into()
 }
 
+fn cannot_serialise(e: &dyn std::fmt::Display) -> JsValue {
+    internal_error(format!("cannot serialise result: {e}"))
+}
+
 fn to_json<T: serde::Serialize>(value: &T) -> Result<String, JsValue> {
-    let fail = |e: &dyn std::fmt::Display| internal_error(format!("cannot serialise result: {e}"));
-    // sized for a plan (about 16 kB): grown from serde_json's 128 bytes, the text is copied seven times
-    let mut out = Vec::with_capacity(32 * 1024);
-    serde_json::to_writer(&mut out, value).map_err(|e| fail(&e))?;
-    String::from_utf8(out).map_err(|e| fail(&e))
+    serde_json::to_string(value).map_err(|e| cannot_serialise(&e))
 }
 
 fn to_json_pretty<T: serde::Serialize>(value: &T) -> Result<String, JsValue> {
-    serde_json::to_string_pretty(value)
-        .map_err(|e| internal_error(format!("cannot serialise result: {e}")))
+    serde_json::to_string_pretty(value).map_err(|e| cannot_serialise(&e))
 }
 
 /// Collects knowledge-base files one by one (each parsed at once, so an error names its file), then
@@ -106,6 +107,7 @@ impl KnowledgeBaseLoader {
             kb,
             index,
             similarity,
+            text: RefCell::default(),
         })
     }
 }
@@ -116,6 +118,9 @@ pub struct Planner {
     kb: KnowledgeBase,
     index: PlannerIndex,
     similarity: Box<dyn Similarity>,
+    /// The plan JSON is written here and copied into a JS string: one buffer for every plan, rather than
+    /// a new one grown, shrunk to size and freed per plan.
+    text: RefCell<Vec<u8>>,
 }
 
 #[wasm_bindgen]
@@ -139,8 +144,14 @@ impl Planner {
     }
 
     /// Plans a request (`{query, modify?, overrides?}` as JSON) and returns the plan as JSON.
-    pub fn plan(&self, request_json: &str) -> Result<String, JsValue> {
-        to_json(&self.run(request_json)?)
+    pub fn plan(&self, request_json: &str) -> Result<JsString, JsValue> {
+        let plan = self.run(request_json)?;
+        // a call is never re-entered (JS is single-threaded and nothing here calls back into JS)
+        let mut text = self.text.borrow_mut();
+        text.clear();
+        serde_json::to_writer(&mut *text, &plan).map_err(|e| cannot_serialise(&e))?;
+        let json = std::str::from_utf8(&text).map_err(|e| cannot_serialise(&e))?;
+        Ok(JsString::from(json))
     }
 
     /// Plans a request and renders it: `json`, `foon` (plain FOON text), `pddl` (domain and problem),
