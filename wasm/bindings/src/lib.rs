@@ -12,6 +12,12 @@ use js_sys::JsString;
 use std::cell::RefCell;
 use wasm_bindgen::prelude::*;
 
+// Talc instead of Rust's default dlmalloc: a plan makes and frees about 1,500 small allocations, and
+// interleaved runs of the two builds put Talc's plans 3-5 % faster.
+#[cfg(all(not(target_feature = "atomics"), target_family = "wasm"))]
+#[global_allocator]
+static ALLOCATOR: talc::wasm::WasmDynamicTalc = talc::wasm::new_wasm_dynamic_allocator();
+
 /// Converts a core error into a JS `Error` with `code`, `file`, `line`, `column` properties.
 fn js_error(e: &FoonError) -> JsValue {
     let error = js_sys::Error::new(&e.to_string());
