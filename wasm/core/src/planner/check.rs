@@ -5,6 +5,7 @@
 
 use crate::plan::{Plan, PlanNode, PlanUnit};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use smol_str::SmolStr;
 
 /// States of things a kitchen has before cooking starts (`START_STATES` of the evaluator).
 pub const START_STATES: &[&str] = &[
@@ -23,9 +24,9 @@ pub const START_STATES: &[&str] = &[
 pub(crate) type NodeKey<'a> = (&'a str, Vec<&'a str>, Vec<&'a str>, Option<&'a str>);
 
 pub(crate) fn node_key(n: &PlanNode) -> NodeKey<'_> {
-    let mut states: Vec<&str> = n.states.iter().map(String::as_str).collect();
+    let mut states: Vec<&str> = n.states.iter().map(SmolStr::as_str).collect();
     states.sort_unstable();
-    let mut ingredients: Vec<&str> = n.ingredients.iter().map(String::as_str).collect();
+    let mut ingredients: Vec<&str> = n.ingredients.iter().map(SmolStr::as_str).collect();
     ingredients.sort_unstable();
     (&n.label, states, ingredients, n.container.as_deref())
 }
@@ -126,7 +127,7 @@ mod tests {
     fn node(label: &str, states: &[&str]) -> PlanNode {
         PlanNode {
             label: label.into(),
-            states: states.iter().map(|s| s.to_string()).collect(),
+            states: states.iter().map(|&s| s.into()).collect(),
             ingredients: Vec::new(),
             container: None,
         }

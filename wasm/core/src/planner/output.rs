@@ -10,6 +10,7 @@ use crate::plan::{
     ProgressState, Query, Status,
 };
 use crate::taxonomy::is_utensil;
+use smol_str::{SmolStr, SmolStrBuilder};
 use std::sync::Arc;
 
 pub(crate) struct Parts<'a> {
@@ -31,10 +32,10 @@ pub(crate) struct Parts<'a> {
 
 pub(crate) fn plan_node(n: &ObjectNode) -> PlanNode {
     PlanNode {
-        label: n.label.clone(),
+        label: n.label.as_str().into(),
         states: n.states.iter().map(State::text).collect(),
         ingredients: n.ingredients(),
-        container: n.container().map(str::to_string),
+        container: n.container().map(SmolStr::from),
     }
 }
 
@@ -52,7 +53,7 @@ pub(crate) fn build(p: Parts) -> Plan {
             let unit = &tree.units[u];
             PlanUnit {
                 inputs: unit.inputs.iter().map(|i| node(i.0)).collect(),
-                motion: unit.motion.to_string(),
+                motion: unit.motion.as_ref().into(),
                 outputs: unit.outputs.iter().map(|o| node(o.0)).collect(),
                 origin: unit.origin,
                 sources: unit.sources.to_vec(),
@@ -81,7 +82,7 @@ pub(crate) fn build(p: Parts) -> Plan {
         notes: p.notes,
         modified: p.modified,
         goal: GoalInfo {
-            label: goal_node.label.clone(),
+            label: goal_node.label.as_str().into(),
             states: goal_node.states.iter().map(State::text).collect(),
             ingredients: if p.goal.ingredients.is_empty() {
                 kb_goal.ingredients()
@@ -133,19 +134,19 @@ impl Uses {
 
 /// The parts with `sep` between them, in a string of exactly their size (`concat` and `join` take a
 /// slower, general path for these few short pieces).
-fn joined<'a>(parts: impl Iterator<Item = &'a str> + Clone, sep: &str) -> String {
+fn joined<'a>(parts: impl Iterator<Item = &'a str> + Clone, sep: &str) -> SmolStr {
     let len = parts.clone().map(|p| p.len() + sep.len()).sum::<usize>();
-    let mut out = String::with_capacity(len.saturating_sub(sep.len()));
+    let mut out = SmolStrBuilder::with_capacity(len.saturating_sub(sep.len()));
     for (k, p) in parts.enumerate() {
         if k > 0 {
             out.push_str(sep);
         }
         out.push_str(p);
     }
-    out
+    out.finish()
 }
 
-fn location(n: &ObjectNode) -> String {
+fn location(n: &ObjectNode) -> SmolStr {
     n.states
         .iter()
         .find_map(|s| match &s.arg {
@@ -155,7 +156,7 @@ fn location(n: &ObjectNode) -> String {
         .unwrap_or_default()
 }
 
-fn physical(n: &ObjectNode) -> String {
+fn physical(n: &ObjectNode) -> SmolStr {
     let food = food_states(n);
     if food.is_empty() {
         joined(n.physical_states(), ", ")
@@ -217,7 +218,7 @@ fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Op
             break;
         };
         last_step = Some((pos, u));
-        motions.push(tree.units[u].motion.to_string());
+        motions.push(tree.units[u].motion.as_ref().into());
         match out {
             Some(o) => {
                 seen.push(o);
@@ -248,26 +249,28 @@ fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Op
         }
     }
     Some(ProgressLine {
-        ingredient: label.to_string(),
+        ingredient: label.into(),
         state: states,
         motion: motions,
-        end_product: end_product.unwrap_or_else(|| tree.slots[tree.goal].node.label.clone()),
+        end_product: end_product
+            .unwrap_or(&tree.slots[tree.goal].node.label)
+            .into(),
     })
 }
 
 /// The product an ingredient goes into (section IV-A): the first food node listing it among its
 /// contents, following the vessel it was put in (flour in the bowl → the batter mixed in that bowl).
-fn product_of(
-    tree: &Tree,
+fn product_of<'t>(
+    tree: &'t Tree,
     order: &[TUnitId],
     pos: usize,
     entered: SlotId,
     label: &str,
-) -> Option<String> {
+) -> Option<&'t str> {
     let lists = |x: SlotId| tree.slots[x].node.contents().any(|i| i == label);
     let food = |x: SlotId| !is_utensil(&tree.slots[x].node.label);
     if food(entered) {
-        return Some(tree.slots[entered].node.label.clone());
+        return Some(&tree.slots[entered].node.label);
     }
     // a vessel holding it: the first food made from that vessel's contents
     let mut vessels: Vec<SlotId> = vec![entered];
@@ -286,7 +289,7 @@ fn product_of(
         let listing = unit.outputs.iter().filter(made).find(|o| lists(o.0));
         let fresh = || unit.outputs.iter().filter(made).find(new);
         if let Some(&(x, _)) = listing.or_else(fresh) {
-            return Some(tree.slots[x].node.label.clone());
+            return Some(&tree.slots[x].node.label);
         }
         vessels.extend(unit.outputs.iter().map(|o| o.0).filter(|&x| lists(x)));
     }
