@@ -9,7 +9,6 @@ use crate::plan::{
     DishClassRef, GoalInfo, IngredientOutcome, Plan, PlanNode, PlanUnit, ProgressLine,
     ProgressState, Query, Status,
 };
-use crate::taxonomy::is_utensil;
 use smol_str::{SmolStr, SmolStrBuilder};
 use std::sync::Arc;
 
@@ -167,16 +166,18 @@ fn physical(n: &ObjectNode) -> SmolStr {
 
 /// The ingredient's states and places from its starting node, the motions between them, and the dish.
 fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Option<ProgressLine> {
-    let slots = uses
-        .live
-        .iter()
-        .copied()
-        .filter(|&x| tree.slots[x].node.label == label);
-    let first = slots.clone().next()?;
-    let start = slots
-        .filter(|&x| !uses.made[x])
-        .min_by_key(|&x| (uses.first_use[x], x))
-        .unwrap_or(first);
+    // its first slot, and the first used of those no unit makes (one pass over the labels)
+    let (mut first, mut start) = (None, None::<SlotId>);
+    for &x in &uses.live {
+        if tree.slots[x].node.label != label {
+            continue;
+        }
+        first.get_or_insert(x);
+        if !uses.made[x] && start.is_none_or(|s| uses.first_use[x] < uses.first_use[s]) {
+            start = Some(x);
+        }
+    }
+    let start = start.or(first)?;
     // a line has a few states: one allocation each for them and the motions
     let mut states = Vec::with_capacity(4);
     states.push(ProgressState {
@@ -211,7 +212,7 @@ fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Op
                     .outputs
                     .iter()
                     .map(|o| o.0)
-                    .filter(|&x| is_utensil(&tree.slots[x].node.label))
+                    .filter(|&x| tree.slots[x].utensil)
                     .find(|&x| tree.slots[x].node.contents().any(|i| i == label))
                     .and_then(|x| product_of(tree, order, pos, x, label));
             }
@@ -232,8 +233,7 @@ fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Op
             None => {
                 // it went into something else: the last state is that product
                 if let Some(&(o, _)) = tree.units[u].outputs.iter().find(|o| {
-                    tree.slots[o.0].node.contents().any(|i| i == label)
-                        || !is_utensil(&tree.slots[o.0].node.label)
+                    tree.slots[o.0].node.contents().any(|i| i == label) || !tree.slots[o.0].utensil
                 }) {
                     let n = &tree.slots[o].node;
                     states.push(ProgressState {
@@ -268,7 +268,7 @@ fn product_of<'t>(
     label: &str,
 ) -> Option<&'t str> {
     let lists = |x: SlotId| tree.slots[x].node.contents().any(|i| i == label);
-    let food = |x: SlotId| !is_utensil(&tree.slots[x].node.label);
+    let food = |x: SlotId| !tree.slots[x].utensil;
     if food(entered) {
         return Some(&tree.slots[entered].node.label);
     }
@@ -326,6 +326,8 @@ fn push_list(out: &mut String, items: &[&str]) {
 pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
     let unit = &tree.units[u];
     let node = |x: SlotId| &tree.slots[x].node;
+    // the slot's flag rather than a lookup of its label
+    let utensil = |x: SlotId| tree.slots[x].utensil;
     let mut objects: Vec<&str> = Vec::with_capacity(unit.inputs.len());
     fn push<'n>(objects: &mut Vec<&'n str>, l: &'n str) {
         if !objects.contains(&l) {
@@ -333,13 +335,13 @@ pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
         }
     }
     for &(x, m) in &unit.inputs {
-        if m && !is_utensil(&node(x).label) {
+        if m && !utensil(x) {
             push(&mut objects, &node(x).label);
         }
     }
     if objects.is_empty() {
         for &(x, _) in &unit.inputs {
-            if !is_utensil(&node(x).label) {
+            if !utensil(x) {
                 push(&mut objects, &node(x).label);
             }
         }
@@ -374,7 +376,7 @@ pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
         .iter()
         .filter(|&&(x, m)| {
             let n = node(x);
-            !m && is_utensil(&n.label)
+            !m && utensil(x)
                 && n.states.is_empty()
                 && !objects.contains(&n.label.as_str())
                 && place.is_none_or(|p| p.1 != n.label)
