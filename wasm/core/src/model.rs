@@ -1,6 +1,7 @@
 //! FOON's building blocks: object nodes (a label in a set of states), motion nodes, functional units.
 
 use serde::Serialize;
+use smol_str::{SmolStr, SmolStrBuilder};
 
 /// What a state says about its object beyond its name: where it is, or what it holds.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
@@ -42,7 +43,7 @@ impl State {
 impl State {
     /// The state as FOON writes it, `in [bowl]` or `contains {egg,milk}` (built without `fmt`: plans
     /// render every state of every node).
-    pub fn text(&self) -> String {
+    pub fn text(&self) -> SmolStr {
         let arg_len = match &self.arg {
             None => 0,
             Some(StateArg::Container(c)) => c.len() + 3,
@@ -50,12 +51,13 @@ impl State {
                 3 + list.iter().map(String::len).sum::<usize>() + list.len().saturating_sub(1)
             }
         };
-        let mut out = String::with_capacity(self.name.len() + arg_len);
+        // inline, without allocating, when short (most states)
+        let mut out = SmolStrBuilder::with_capacity(self.name.len() + arg_len);
         let _ = self.write_to(&mut out);
-        out
+        out.finish()
     }
 
-    /// Writes `text` piece by piece (a `String` never fails to take them).
+    /// Writes `text` piece by piece (a builder never fails to take them).
     fn write_to(&self, out: &mut impl std::fmt::Write) -> std::fmt::Result {
         out.write_str(&self.name)?;
         match &self.arg {
@@ -147,10 +149,11 @@ impl ObjectNode {
         self.contents().next().is_some()
     }
 
-    /// Ingredients the object holds (`contains {…}`), sorted and unique.
-    pub fn ingredients(&self) -> Vec<String> {
+    /// Ingredients the object holds (`contains {…}`), sorted and unique, as `String`s or the plan's
+    /// `SmolStr`s.
+    pub fn ingredients<S: for<'a> From<&'a str> + Ord>(&self) -> Vec<S> {
         // owned from the start rather than copied from a sorted list of borrowed names
-        let mut out: Vec<String> = self.contents().map(str::to_string).collect();
+        let mut out: Vec<S> = self.contents().map(S::from).collect();
         out.sort_unstable();
         out.dedup();
         out

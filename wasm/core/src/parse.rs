@@ -704,7 +704,10 @@ mod tests {
                 dish_class: Some(15)
             })
         );
-        assert_eq!(u.outputs[0].node.ingredients(), vec!["onion", "tomato"]);
+        assert_eq!(
+            u.outputs[0].node.ingredients::<String>(),
+            vec!["onion", "tomato"]
+        );
     }
 
     #[test]

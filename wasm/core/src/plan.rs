@@ -1,6 +1,7 @@
 //! The planner's request and response, exactly the JSON contract of `docs/plan-format.md` (serde).
 
 use serde::{Deserialize, Serialize};
+use smol_str::SmolStr;
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
@@ -60,9 +61,9 @@ pub struct DishClassRef {
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct GoalInfo {
-    pub label: String,
+    pub label: SmolStr,
     /// States rendered as FOON text: `sliced`, `in [bowl]`, `contains {a,b}`.
-    pub states: Vec<String>,
+    pub states: Vec<SmolStr>,
     /// The reference goal's ingredient list.
     pub ingredients: Vec<String>,
     /// Source subgraph (file name).
@@ -72,14 +73,15 @@ pub struct GoalInfo {
     pub dish_class: Option<u32>,
 }
 
-/// An object node as the plan shows it.
+/// An object node as the plan shows it. Its texts, like the other short texts the planner writes
+/// (motions, progress lines), are `SmolStr`s: up to 23 bytes they need no allocation of their own.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub struct PlanNode {
-    pub label: String,
-    pub states: Vec<String>,
+    pub label: SmolStr,
+    pub states: Vec<SmolStr>,
     /// Its `contains {…}` list, if any.
-    pub ingredients: Vec<String>,
-    pub container: Option<String>,
+    pub ingredients: Vec<SmolStr>,
+    pub container: Option<SmolStr>,
 }
 
 /// How modification touched a unit.
@@ -102,7 +104,7 @@ pub enum Origin {
 pub struct PlanUnit {
     /// Nodes are shared: the node a unit makes is the same value where a later unit uses it.
     pub inputs: Vec<Arc<PlanNode>>,
-    pub motion: String,
+    pub motion: SmolStr,
     pub outputs: Vec<Arc<PlanNode>>,
     pub origin: Origin,
     /// Subgraphs the unit comes from (empty for units the planner made).
@@ -149,20 +151,20 @@ pub struct IngredientOutcome {
 
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct ProgressState {
-    pub physical_state: String,
-    pub location: String,
+    pub physical_state: SmolStr,
+    pub location: SmolStr,
 }
 
 /// One ingredient's progress line (section IV-A): states and locations, the motions between them, and the
 /// end product it goes into.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct ProgressLine {
-    pub ingredient: String,
+    pub ingredient: SmolStr,
     pub state: Vec<ProgressState>,
     /// Motion i leads from state i to state i+1.
-    pub motion: Vec<String>,
+    pub motion: Vec<SmolStr>,
     /// The first mixture or dish the ingredient joins (the goal when it joins nothing before it).
-    pub end_product: String,
+    pub end_product: SmolStr,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

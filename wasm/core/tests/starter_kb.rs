@@ -109,10 +109,10 @@ fn merged_kb_has_one_classified_goal_per_file() {
         *per_class.entry(class).or_default() += 1;
         let node = &kb.nodes[g.node];
         assert!(
-            !node.ingredients().is_empty(),
+            !node.ingredients::<String>().is_empty(),
             "{name}: goal {node} has no contains {{…}}"
         );
-        assert_eq!(g.ingredients, node.ingredients());
+        assert_eq!(g.ingredients, node.ingredients::<String>());
     }
     // the paper's evaluation classes (salad, soup, cake, omelette, drinks) and the others the app offers
     for (class, min) in [
@@ -220,7 +220,7 @@ fn files_are_closed_and_kitchen_items_are_never_produced() {
                             .collect::<Vec<_>>()
                     );
                     assert!(
-                        i.node.ingredients().is_empty(),
+                        i.node.ingredients::<String>().is_empty(),
                         "{}: kitchen item {} holds ingredients",
                         g.name,
                         i.node

@@ -4,6 +4,7 @@
 use crate::plan::{Plan, PlanNode};
 use crate::taxonomy::is_utensil;
 use serde::Serialize;
+use smol_str::SmolStr;
 use std::collections::BTreeSet;
 use std::fmt::Write;
 
@@ -82,7 +83,7 @@ struct PublishedState<'a> {
 struct PublishedLine<'a> {
     ingredient: &'a str,
     state: Vec<PublishedState<'a>>,
-    motion: &'a [String],
+    motion: &'a [SmolStr],
     end_product: &'a str,
 }
 

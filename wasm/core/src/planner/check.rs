@@ -5,6 +5,8 @@
 
 use crate::plan::{Plan, PlanNode, PlanUnit};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use smol_str::SmolStr;
+use std::borrow::Cow;
 
 /// States of things a kitchen has before cooking starts (`START_STATES` of the evaluator).
 pub const START_STATES: &[&str] = &[
@@ -20,14 +22,32 @@ pub const START_STATES: &[&str] = &[
 ];
 
 /// Identity of a node: label, states and contents as sets, container (borrowed from the node).
-pub(crate) type NodeKey<'a> = (&'a str, Vec<&'a str>, Vec<&'a str>, Option<&'a str>);
+pub(crate) type NodeKey<'a> = (
+    &'a str,
+    Cow<'a, [SmolStr]>,
+    Cow<'a, [SmolStr]>,
+    Option<&'a str>,
+);
 
 pub(crate) fn node_key(n: &PlanNode) -> NodeKey<'_> {
-    let mut states: Vec<&str> = n.states.iter().map(String::as_str).collect();
-    states.sort_unstable();
-    let mut ingredients: Vec<&str> = n.ingredients.iter().map(String::as_str).collect();
-    ingredients.sort_unstable();
-    (&n.label, states, ingredients, n.container.as_deref())
+    (
+        &n.label,
+        sorted(&n.states),
+        sorted(&n.ingredients),
+        n.container.as_deref(),
+    )
+}
+
+/// The list in order: itself when it is already (as a plan node's lists nearly always are, so keying
+/// a node allocates nothing), else a sorted copy.
+fn sorted(list: &[SmolStr]) -> Cow<'_, [SmolStr]> {
+    if list.is_sorted() {
+        Cow::Borrowed(list)
+    } else {
+        let mut copy = list.to_vec();
+        copy.sort_unstable();
+        Cow::Owned(copy)
+    }
 }
 
 /// A node the kitchen has at the start even when some unit makes it again (an empty bowl, a lid put
@@ -126,7 +146,7 @@ mod tests {
     fn node(label: &str, states: &[&str]) -> PlanNode {
         PlanNode {
             label: label.into(),
-            states: states.iter().map(|s| s.to_string()).collect(),
+            states: states.iter().map(|&s| s.into()).collect(),
             ingredients: Vec::new(),
             container: None,
         }

@@ -9,7 +9,7 @@ use crate::plan::{
     DishClassRef, GoalInfo, IngredientOutcome, Plan, PlanNode, PlanUnit, ProgressLine,
     ProgressState, Query, Status,
 };
-use crate::taxonomy::is_utensil;
+use smol_str::{SmolStr, SmolStrBuilder};
 use std::sync::Arc;
 
 pub(crate) struct Parts<'a> {
@@ -31,10 +31,10 @@ pub(crate) struct Parts<'a> {
 
 pub(crate) fn plan_node(n: &ObjectNode) -> PlanNode {
     PlanNode {
-        label: n.label.clone(),
+        label: n.label.as_str().into(),
         states: n.states.iter().map(State::text).collect(),
         ingredients: n.ingredients(),
-        container: n.container().map(str::to_string),
+        container: n.container().map(SmolStr::from),
     }
 }
 
@@ -52,7 +52,7 @@ pub(crate) fn build(p: Parts) -> Plan {
             let unit = &tree.units[u];
             PlanUnit {
                 inputs: unit.inputs.iter().map(|i| node(i.0)).collect(),
-                motion: unit.motion.to_string(),
+                motion: unit.motion.as_ref().into(),
                 outputs: unit.outputs.iter().map(|o| node(o.0)).collect(),
                 origin: unit.origin,
                 sources: unit.sources.to_vec(),
@@ -81,7 +81,7 @@ pub(crate) fn build(p: Parts) -> Plan {
         notes: p.notes,
         modified: p.modified,
         goal: GoalInfo {
-            label: goal_node.label.clone(),
+            label: goal_node.label.as_str().into(),
             states: goal_node.states.iter().map(State::text).collect(),
             ingredients: if p.goal.ingredients.is_empty() {
                 kb_goal.ingredients()
@@ -133,19 +133,19 @@ impl Uses {
 
 /// The parts with `sep` between them, in a string of exactly their size (`concat` and `join` take a
 /// slower, general path for these few short pieces).
-fn joined<'a>(parts: impl Iterator<Item = &'a str> + Clone, sep: &str) -> String {
+fn joined<'a>(parts: impl Iterator<Item = &'a str> + Clone, sep: &str) -> SmolStr {
     let len = parts.clone().map(|p| p.len() + sep.len()).sum::<usize>();
-    let mut out = String::with_capacity(len.saturating_sub(sep.len()));
+    let mut out = SmolStrBuilder::with_capacity(len.saturating_sub(sep.len()));
     for (k, p) in parts.enumerate() {
         if k > 0 {
             out.push_str(sep);
         }
         out.push_str(p);
     }
-    out
+    out.finish()
 }
 
-fn location(n: &ObjectNode) -> String {
+fn location(n: &ObjectNode) -> SmolStr {
     n.states
         .iter()
         .find_map(|s| match &s.arg {
@@ -155,7 +155,7 @@ fn location(n: &ObjectNode) -> String {
         .unwrap_or_default()
 }
 
-fn physical(n: &ObjectNode) -> String {
+fn physical(n: &ObjectNode) -> SmolStr {
     let food = food_states(n);
     if food.is_empty() {
         joined(n.physical_states(), ", ")
@@ -166,16 +166,18 @@ fn physical(n: &ObjectNode) -> String {
 
 /// The ingredient's states and places from its starting node, the motions between them, and the dish.
 fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Option<ProgressLine> {
-    let slots = uses
-        .live
-        .iter()
-        .copied()
-        .filter(|&x| tree.slots[x].node.label == label);
-    let first = slots.clone().next()?;
-    let start = slots
-        .filter(|&x| !uses.made[x])
-        .min_by_key(|&x| (uses.first_use[x], x))
-        .unwrap_or(first);
+    // its first slot, and the first used of those no unit makes (one pass over the labels)
+    let (mut first, mut start) = (None, None::<SlotId>);
+    for &x in &uses.live {
+        if tree.slots[x].node.label != label {
+            continue;
+        }
+        first.get_or_insert(x);
+        if !uses.made[x] && start.is_none_or(|s| uses.first_use[x] < uses.first_use[s]) {
+            start = Some(x);
+        }
+    }
+    let start = start.or(first)?;
     // a line has a few states: one allocation each for them and the motions
     let mut states = Vec::with_capacity(4);
     states.push(ProgressState {
@@ -210,14 +212,14 @@ fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Op
                     .outputs
                     .iter()
                     .map(|o| o.0)
-                    .filter(|&x| is_utensil(&tree.slots[x].node.label))
+                    .filter(|&x| tree.slots[x].utensil)
                     .find(|&x| tree.slots[x].node.contents().any(|i| i == label))
                     .and_then(|x| product_of(tree, order, pos, x, label));
             }
             break;
         };
         last_step = Some((pos, u));
-        motions.push(tree.units[u].motion.to_string());
+        motions.push(tree.units[u].motion.as_ref().into());
         match out {
             Some(o) => {
                 seen.push(o);
@@ -231,8 +233,7 @@ fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Op
             None => {
                 // it went into something else: the last state is that product
                 if let Some(&(o, _)) = tree.units[u].outputs.iter().find(|o| {
-                    tree.slots[o.0].node.contents().any(|i| i == label)
-                        || !is_utensil(&tree.slots[o.0].node.label)
+                    tree.slots[o.0].node.contents().any(|i| i == label) || !tree.slots[o.0].utensil
                 }) {
                     let n = &tree.slots[o].node;
                     states.push(ProgressState {
@@ -248,26 +249,28 @@ fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Op
         }
     }
     Some(ProgressLine {
-        ingredient: label.to_string(),
+        ingredient: label.into(),
         state: states,
         motion: motions,
-        end_product: end_product.unwrap_or_else(|| tree.slots[tree.goal].node.label.clone()),
+        end_product: end_product
+            .unwrap_or(&tree.slots[tree.goal].node.label)
+            .into(),
     })
 }
 
 /// The product an ingredient goes into (section IV-A): the first food node listing it among its
 /// contents, following the vessel it was put in (flour in the bowl → the batter mixed in that bowl).
-fn product_of(
-    tree: &Tree,
+fn product_of<'t>(
+    tree: &'t Tree,
     order: &[TUnitId],
     pos: usize,
     entered: SlotId,
     label: &str,
-) -> Option<String> {
+) -> Option<&'t str> {
     let lists = |x: SlotId| tree.slots[x].node.contents().any(|i| i == label);
-    let food = |x: SlotId| !is_utensil(&tree.slots[x].node.label);
+    let food = |x: SlotId| !tree.slots[x].utensil;
     if food(entered) {
-        return Some(tree.slots[entered].node.label.clone());
+        return Some(&tree.slots[entered].node.label);
     }
     // a vessel holding it: the first food made from that vessel's contents
     let mut vessels: Vec<SlotId> = vec![entered];
@@ -286,7 +289,7 @@ fn product_of(
         let listing = unit.outputs.iter().filter(made).find(|o| lists(o.0));
         let fresh = || unit.outputs.iter().filter(made).find(new);
         if let Some(&(x, _)) = listing.or_else(fresh) {
-            return Some(tree.slots[x].node.label.clone());
+            return Some(&tree.slots[x].node.label);
         }
         vessels.extend(unit.outputs.iter().map(|o| o.0).filter(|&x| lists(x)));
     }
@@ -323,6 +326,8 @@ fn push_list(out: &mut String, items: &[&str]) {
 pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
     let unit = &tree.units[u];
     let node = |x: SlotId| &tree.slots[x].node;
+    // the slot's flag rather than a lookup of its label
+    let utensil = |x: SlotId| tree.slots[x].utensil;
     let mut objects: Vec<&str> = Vec::with_capacity(unit.inputs.len());
     fn push<'n>(objects: &mut Vec<&'n str>, l: &'n str) {
         if !objects.contains(&l) {
@@ -330,13 +335,13 @@ pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
         }
     }
     for &(x, m) in &unit.inputs {
-        if m && !is_utensil(&node(x).label) {
+        if m && !utensil(x) {
             push(&mut objects, &node(x).label);
         }
     }
     if objects.is_empty() {
         for &(x, _) in &unit.inputs {
-            if !is_utensil(&node(x).label) {
+            if !utensil(x) {
                 push(&mut objects, &node(x).label);
             }
         }
@@ -371,7 +376,7 @@ pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
         .iter()
         .filter(|&&(x, m)| {
             let n = node(x);
-            !m && is_utensil(&n.label)
+            !m && utensil(x)
                 && n.states.is_empty()
                 && !objects.contains(&n.label.as_str())
                 && place.is_none_or(|p| p.1 != n.label)

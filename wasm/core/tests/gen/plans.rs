@@ -20,7 +20,7 @@ fn parsed_text(o: &ParsedObject) -> String {
     format!("{} ({})", o.node.label, states.join(", "))
 }
 
-fn sorted(mut v: Vec<String>) -> Vec<String> {
+fn sorted<T: Ord>(mut v: Vec<T>) -> Vec<T> {
     v.sort();
     v
 }
@@ -44,7 +44,7 @@ pub fn order_problems(plan: &Plan) -> Vec<String> {
     for (i, u) in plan.units.iter().enumerate() {
         let key = (
             sorted(u.inputs.iter().map(|n| node_text(n)).collect()),
-            u.motion.clone(),
+            u.motion.to_string(),
             sorted(u.outputs.iter().map(|n| node_text(n)).collect()),
         );
         if !seen.insert(key) {
@@ -111,7 +111,7 @@ pub fn foon_round_trip_problems(plan: &Plan) -> Vec<String> {
         .map(|u| {
             (
                 sorted(u.inputs.iter().map(|n| node_text(n)).collect()),
-                u.motion.clone(),
+                u.motion.to_string(),
                 sorted(u.outputs.iter().map(|n| node_text(n)).collect()),
             )
         })
