@@ -4,7 +4,7 @@
 use super::index::{Picks, PlannerIndex};
 use super::retrieve::{retrieve, retrieve_within};
 use super::states::{category, is_food_state, Category};
-use super::tree::{dedup_slots, edit_contents, map_contents, rename_item, SlotId, TUnitId, Tree};
+use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
@@ -1082,9 +1082,7 @@ fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
         if !slot.node.listed().any(|x| labels.contains(x)) {
             continue;
         }
-        edit_contents(slot.node.to_mut(), &mut |list| {
-            list.retain(|x| !labels.contains(x.as_str()))
-        });
+        retain_contents(&mut slot.node, &|x| !labels.contains(x));
         *touched = true;
     }
     for u in tree.units.iter_mut() {
