@@ -4,7 +4,7 @@
 use super::index::{Picks, PlannerIndex};
 use super::retrieve::{retrieve, retrieve_within};
 use super::states::{category, is_food_state, Category};
-use super::tree::{dedup_slots, edit_contents, map_contents, rename_item, SlotId, TUnitId, Tree};
+use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
@@ -1074,17 +1074,13 @@ fn map_states(node: &ObjectNode, s: &str) -> ObjectNode {
 }
 
 /// Removes `labels` from every list of contents; units touching a changed node are marked renamed.
-fn drop_contents(tree: &mut Tree, labels: &BTreeSet<String>) {
-    // asked of every name in every list of every slot: a hash set rather than the ordered one
-    let labels: HashSet<&str> = labels.iter().map(String::as_str).collect();
+fn drop_contents(tree: &mut Tree, labels: &HashSet<&str>) {
     let mut touched = vec![false; tree.slots.len()];
     for (slot, touched) in tree.slots.iter_mut().zip(touched.iter_mut()) {
         if !slot.node.listed().any(|x| labels.contains(x)) {
             continue;
         }
-        edit_contents(slot.node.to_mut(), &mut |list| {
-            list.retain(|x| !labels.contains(x.as_str()))
-        });
+        retain_contents(&mut slot.node, &|x| !labels.contains(x));
         *touched = true;
     }
     for u in tree.units.iter_mut() {
@@ -1114,15 +1110,24 @@ fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &[bool]) -> bool {
 fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     let order = tree.order();
     let live: Vec<SlotId> = tree.live_slots().collect();
-    let starting: BTreeSet<String> = live
+    // only the labels that go are copied
+    let mut starting: Vec<&str> = live
         .iter()
         .filter(|&&x| !tree.produced(x) && !tree.slots[x].utensil)
-        .map(|&x| tree.slots[x].node.label.clone())
+        .map(|&x| tree.slots[x].node.label.as_str())
         .collect();
-    let mut pruned: BTreeSet<String> = starting.difference(keep).cloned().collect();
+    starting.sort_unstable();
+    starting.dedup();
+    let mut pruned: BTreeSet<String> = starting
+        .into_iter()
+        .filter(|&l| !keep.contains(l))
+        .map(str::to_string)
+        .collect();
     if pruned.is_empty() {
         return Vec::new();
     }
+    // asked of every live slot and of every name in every list: a hash set rather than the ordered one
+    let going: HashSet<&str> = pruned.iter().map(String::as_str).collect();
     // per slot, whether it is pruned
     let mut gone = vec![false; tree.slots.len()];
     // per unit, whether it handled an ingredient before pruning
@@ -1130,9 +1135,9 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     for &u in &order {
         had[u] = handles_any(tree, &tree.units[u].inputs, &gone);
     }
-    drop_contents(tree, &pruned);
+    drop_contents(tree, &going);
     for &x in &live {
-        gone[x] = pruned.contains(&tree.slots[x].node.label);
+        gone[x] = going.contains(tree.slots[x].node.label.as_str());
     }
     // labels that go with the units removed below, beyond those already dropped from the contents
     let mut with_units: BTreeSet<String> = BTreeSet::new();
@@ -1147,19 +1152,20 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
         s
     };
     let goal = tree.goal;
+    // a unit's uses as they are now, in buffers: a kept unit's lists shrink into their own room
+    let mut inputs: Vec<(SlotId, bool)> = Vec::new();
+    let mut outputs: Vec<(SlotId, bool)> = Vec::new();
     for &u in &order {
-        let inputs: Vec<(SlotId, bool)> = tree.units[u]
-            .inputs
-            .iter()
-            .map(|&(x, m)| (resolve(&alias, x), m))
-            .filter(|i| !gone[i.0])
-            .collect();
-        let outputs: Vec<(SlotId, bool)> = tree.units[u]
-            .outputs
-            .iter()
-            .copied()
-            .filter(|o| !gone[o.0])
-            .collect();
+        inputs.clear();
+        inputs.extend(
+            tree.units[u]
+                .inputs
+                .iter()
+                .map(|&(x, m)| (resolve(&alias, x), m))
+                .filter(|i| !gone[i.0]),
+        );
+        outputs.clear();
+        outputs.extend(tree.units[u].outputs.iter().filter(|o| !gone[o.0]));
         let makes_goal = outputs.iter().any(|o| o.0 == goal);
         let lost_all = had[u] && !handles_any(tree, &inputs, &gone);
         // nothing new comes out: every output is one of the inputs as they are now
@@ -1189,7 +1195,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
                     None => {
                         let label = node.label.clone();
                         gone[x] = true;
-                        if !utensil && !keep.contains(&label) && !pruned.contains(&label) {
+                        if !utensil && !keep.contains(&label) && !going.contains(label.as_str()) {
                             with_units.insert(label);
                         }
                     }
@@ -1198,16 +1204,16 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
             continue;
         }
         let unit = &mut tree.units[u];
-        unit.inputs = inputs;
+        unit.inputs.clone_from(&inputs);
         dedup_slots(&mut unit.inputs);
-        unit.outputs = outputs;
+        unit.outputs.clone_from(&outputs);
     }
     // the goal may have been passed through a removed unit
     // labels made only by removed units leave the lists of contents as well
     let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
     with_units.retain(|l| !still.iter().any(|&x| tree.slots[x].node.label == *l));
     if !with_units.is_empty() {
-        drop_contents(tree, &with_units);
+        drop_contents(tree, &with_units.iter().map(String::as_str).collect());
         pruned.extend(with_units);
     }
     pruned.into_iter().collect()

@@ -118,6 +118,34 @@ fn value_key(unit: &TUnit, motion: usize, value: &[usize]) -> Vec<usize> {
     key
 }
 
+/// Keeps in a slot's lists of contents only the items `keep` accepts (see `edit_contents`). A node
+/// still borrowed from the knowledge base is copied without the items it loses, not whole.
+pub(crate) fn retain_contents(node: &mut Cow<ObjectNode>, keep: &dyn Fn(&str) -> bool) {
+    let Cow::Borrowed(kb_node) = node else {
+        edit_contents(node.to_mut(), &mut |list| list.retain(|x| keep(x)));
+        return;
+    };
+    let states = kb_node
+        .states
+        .iter()
+        .map(|s| State {
+            name: s.name.clone(),
+            arg: match &s.arg {
+                Some(StateArg::Ingredients(list)) => Some(StateArg::Ingredients(
+                    list.iter().filter(|x| keep(x)).cloned().collect(),
+                )),
+                arg => arg.clone(),
+            },
+        })
+        .collect();
+    let mut copy = ObjectNode {
+        label: kb_node.label.clone(),
+        states,
+    };
+    edit_contents(&mut copy, &mut |_| {});
+    *node = Cow::Owned(copy);
+}
+
 /// A copy of a node with its lists of contents rewritten (see `edit_contents`).
 pub(crate) fn map_contents(node: &ObjectNode, f: &mut dyn FnMut(&mut Vec<String>)) -> ObjectNode {
     let mut copy = node.clone();
