@@ -113,14 +113,14 @@ pub struct PlanUnit {
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Match {
-    pub label: String,
-    pub state: String,
+    pub label: SmolStr,
+    pub state: SmolStr,
     pub similarity: f32,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Alternative {
-    pub label: String,
+    pub label: SmolStr,
     pub similarity: f32,
 }
 
@@ -134,8 +134,8 @@ pub enum Status {
 /// The outcome of one query ingredient.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct IngredientOutcome {
-    pub object: String,
-    pub state: String,
+    pub object: SmolStr,
+    pub state: SmolStr,
     /// Table I of the paper (1..4); `None` when unplannable before a case applies.
     pub case: Option<u8>,
     #[serde(rename = "match")]

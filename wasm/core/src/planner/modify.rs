@@ -11,6 +11,7 @@ use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
 use crate::similarity::Similarity;
 use crate::taxonomy::{dish_class_name, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use smol_str::SmolStr;
 use std::borrow::Cow;
 use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
@@ -187,8 +188,8 @@ pub(crate) fn modify<'kb>(
             pending.push((works.len(), eq.clone(), s.to_string()));
             claimed.insert(eq.clone());
             w.matched = Some(Match {
-                label: eq.clone(),
-                state: String::new(),
+                label: eq.as_str().into(),
+                state: SmolStr::default(),
                 similarity: sim,
             });
             works.push(w);
@@ -196,8 +197,8 @@ pub(crate) fn modify<'kb>(
         }
         // the equivalent is in the tree: substitute (cases 2, 4) or keep (cases 1, 3)
         w.matched = Some(Match {
-            label: eq.clone(),
-            state: tree_state(tree, &slots, s),
+            label: eq.as_str().into(),
+            state: tree_state(tree, &slots, s).into(),
             similarity: sim,
         });
         if eq != o {
@@ -252,7 +253,7 @@ pub(crate) fn modify<'kb>(
                 let eq = w
                     .matched
                     .as_ref()
-                    .map_or(w.label.clone(), |m| m.label.clone());
+                    .map_or(w.label.clone(), |m| m.label.to_string());
                 pending.push((i, eq, query.ingredients[i].state.clone()));
             }
         }
@@ -265,7 +266,7 @@ pub(crate) fn modify<'kb>(
             if !lost && !slots.is_empty() {
                 // an earlier ingredient of the same name brought it: one branch serves both
                 if let Some(m) = w.matched.as_mut() {
-                    m.state = tree_state(tree, &slots, &s);
+                    m.state = tree_state(tree, &slots, &s).into();
                 }
                 settle_state(ctx, tree, &eq, o, &s, &mut restated, w);
                 continue;
@@ -280,7 +281,7 @@ pub(crate) fn modify<'kb>(
                     } else {
                         w.case = Some(4);
                         if let Some(m) = w.matched.as_mut() {
-                            m.state = state;
+                            m.state = state.into();
                         }
                         w.planned = true;
                         w.reasons.push(reason);
@@ -307,8 +308,8 @@ pub(crate) fn modify<'kb>(
         .iter()
         .zip(works)
         .map(|(ing, w)| IngredientOutcome {
-            object: ing.object.clone(),
-            state: ing.state.clone(),
+            object: ing.object.as_str().into(),
+            state: ing.state.as_str().into(),
             case: w.case,
             matched: w.matched,
             alternatives: w.alternatives,
@@ -394,7 +395,7 @@ fn equivalent(
             .filter(|(l, _)| l != eq && l != o)
             .take(5)
             .map(|(l, s)| Alternative {
-                label: l.clone(),
+                label: l.as_str().into(),
                 similarity: *s,
             })
             .collect()
@@ -480,8 +481,8 @@ fn judge_unmodified(
         (false, false) => 4,
     });
     w.matched = Some(Match {
-        label: eq.to_string(),
-        state,
+        label: eq.into(),
+        state: state.into(),
         similarity: sim,
     });
     w.planned = true;
