@@ -25,18 +25,18 @@ pub trait Similarity {
     }
 
     /// `rank` over a candidate list that never changes for a given `set` id (the labels of one loaded
-    /// knowledge base): an implementation may remember the answer per (query, set, top). The default
-    /// ranks afresh.
+    /// knowledge base): an implementation may remember the answer per (query, set, top) and share it
+    /// (every plan asks it of each of its ingredients). The default ranks afresh.
     fn rank_in_set(
         &self,
         query: &str,
         set: u64,
         candidates: &[String],
         top: usize,
-    ) -> Vec<(String, f32)> {
+    ) -> Arc<[(String, f32)]> {
         let _ = set;
         let refs: Vec<&str> = candidates.iter().map(String::as_str).collect();
-        self.rank(query, &refs, top)
+        self.rank(query, &refs, top).into()
     }
 
     /// `query` made ready for many comparisons with the members of a candidate list that never changes
