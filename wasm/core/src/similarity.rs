@@ -3,8 +3,8 @@
 //! exact-match default without touching the planner.
 
 use rustc_hash::FxHashMap as HashMap;
-use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
-use std::sync::{Arc, Mutex};
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering::Relaxed};
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// A similarity between ingredient names in the normal form of `label::normalize_label`.
 pub trait Similarity {
@@ -25,18 +25,18 @@ pub trait Similarity {
     }
 
     /// `rank` over a candidate list that never changes for a given `set` id (the labels of one loaded
-    /// knowledge base): an implementation may remember the answer per (query, set, top). The default
-    /// ranks afresh.
+    /// knowledge base): an implementation may remember the answer per (query, set, top) and share it
+    /// (every plan asks it of each of its ingredients). The default ranks afresh.
     fn rank_in_set(
         &self,
         query: &str,
         set: u64,
         candidates: &[String],
         top: usize,
-    ) -> Vec<(String, f32)> {
+    ) -> Arc<[(String, f32)]> {
         let _ = set;
         let refs: Vec<&str> = candidates.iter().map(String::as_str).collect();
-        self.rank(query, &refs, top)
+        self.rank(query, &refs, top).into()
     }
 
     /// `query` made ready for many comparisons with the members of a candidate list that never changes
@@ -76,36 +76,35 @@ pub trait Similarity {
 
 /// Pairs (sim(name, candidate), sim(candidate, name)) of one similarity, remembered per name and
 /// candidate list (named by a set id that never changes for it, as in `Similarity::rank_in_set`): query
-/// names recur from plan to plan, and so do the candidates goal selection asks of them. The caller fills
-/// the rows with this similarity's answers. Bounded: the memory starts again when it holds
-/// `PAIR_MEMORY_CELLS` pairs.
+/// names recur from plan to plan, and so do the candidates goal selection and g(u) ask of them. The
+/// caller fills the rows with this similarity's answers. Bounded: the memory starts again when its rows
+/// have made `PAIR_MEMORY_CELLS` cells.
 #[derive(Debug, Default)]
 pub struct PairMemory {
-    rows: Mutex<Rows>,
+    /// The rows per set id and name.
+    rows: Mutex<HashMap<u64, HashMap<String, Arc<PairRow>>>>,
+    /// Cells made by the rows (blocks, and their tables as cells too), counted by the rows themselves.
+    cells: Arc<AtomicUsize>,
 }
 
-/// The pairs held (how many), and the rows per set id and name.
-type Rows = (usize, HashMap<u64, HashMap<String, Arc<PairRow>>>);
-
-/// Pairs remembered at most: 16 MB (a goal class of 100 times FOON-111 has a few thousand labels).
+/// Cells made at most: 16 MB.
 const PAIR_MEMORY_CELLS: usize = 1 << 21;
 
 impl PairMemory {
     /// The row of `name` against the `len` candidates of `set`, empty on first ask.
     pub fn row(&self, set: u64, name: &str, len: usize) -> Arc<PairRow> {
-        let Ok(mut guard) = self.rows.lock() else {
+        let Ok(mut rows) = self.rows.lock() else {
             return Arc::new(PairRow::new(len));
         };
-        let (cells, rows) = &mut *guard;
         if let Some(row) = rows.get(&set).and_then(|r| r.get(name)) {
             return Arc::clone(row);
         }
-        if *cells + len > PAIR_MEMORY_CELLS {
-            *cells = 0;
+        if self.cells.load(Relaxed) > PAIR_MEMORY_CELLS {
+            // rows still in use count on, so the next start comes a little early
+            self.cells.store(0, Relaxed);
             rows.clear();
         }
-        *cells += len;
-        let row = Arc::new(PairRow::new(len));
+        let row = Arc::new(PairRow::counted(len, Arc::clone(&self.cells)));
         rows.entry(set)
             .or_default()
             .insert(name.to_string(), Arc::clone(&row));
@@ -114,21 +113,40 @@ impl PairMemory {
 }
 
 /// One name's pairs with a candidate list, by candidate position; each filled once. Atomic cells let
-/// plans share a row without a lock (a pair written twice is written the same).
+/// plans share a row without a lock (a pair written twice is written the same). The cells come in
+/// blocks made on first write: a plan asks g(u) about a few dozen of a knowledge base's labels, so a row
+/// of them all is cheap to make and holds little.
 #[derive(Debug)]
-pub struct PairRow(Box<[AtomicU64]>);
+pub struct PairRow {
+    blocks: Box<[OnceLock<Box<[AtomicU64; BLOCK]>>]>,
+    /// Cells made, of this row and of others counted together.
+    made: Arc<AtomicUsize>,
+}
+
+/// Cells per block of a `PairRow`.
+const BLOCK: usize = 64;
 
 /// A cell not filled yet: two NaNs, never a pair of similarities.
 const UNKNOWN: u64 = u64::MAX;
 
 impl PairRow {
     pub fn new(len: usize) -> PairRow {
-        PairRow((0..len).map(|_| AtomicU64::new(UNKNOWN)).collect())
+        PairRow::counted(len, Arc::default())
+    }
+
+    /// A row whose cells are counted in `made`.
+    fn counted(len: usize, made: Arc<AtomicUsize>) -> PairRow {
+        let blocks = len.div_ceil(BLOCK);
+        made.fetch_add(blocks, Relaxed);
+        PairRow {
+            blocks: (0..blocks).map(|_| OnceLock::new()).collect(),
+            made,
+        }
     }
 
     /// The pair at position `i`, when filled.
     pub fn get(&self, i: usize) -> Option<(f32, f32)> {
-        let bits = self.0[i].load(Relaxed);
+        let bits = self.blocks.get(i / BLOCK)?.get()?[i % BLOCK].load(Relaxed);
         (bits != UNKNOWN).then(|| {
             (
                 f32::from_bits((bits >> 32) as u32),
@@ -137,9 +155,17 @@ impl PairRow {
         })
     }
 
+    /// Fills position `i` (beyond the candidates: nothing).
     pub fn set(&self, i: usize, (to, from): (f32, f32)) {
+        let Some(block) = self.blocks.get(i / BLOCK) else {
+            return;
+        };
+        let block = block.get_or_init(|| {
+            self.made.fetch_add(BLOCK, Relaxed);
+            Box::new(std::array::from_fn(|_| AtomicU64::new(UNKNOWN)))
+        });
         let bits = (u64::from(to.to_bits()) << 32) | u64::from(from.to_bits());
-        self.0[i].store(bits, Relaxed);
+        block[i % BLOCK].store(bits, Relaxed);
     }
 }
 

@@ -438,7 +438,7 @@ pub struct EmbeddingSimilarity {
     profiles: Memo<String, Arc<Profile>, PROFILE_CACHE_LIMIT>,
     /// Answers of `rank_in_set` per (query, candidate set, top): ranking every label of a knowledge base
     /// is the costliest step of planning, and ingredient names recur from query to query.
-    ranked: Memo<RankKey, Vec<(String, f32)>, RANK_CACHE_LIMIT>,
+    ranked: Memo<RankKey, Arc<[(String, f32)]>, RANK_CACHE_LIMIT>,
     /// The profiles of the candidate sets last used by `rank_in_set` and `prepare` (a knowledge base's
     /// labels), most recent last, so that a ranking or a comparison does not look each label up again.
     set_profiles: Mutex<Vec<(u64, SetProfiles)>>,
@@ -1157,14 +1157,15 @@ impl Similarity for EmbeddingSimilarity {
         set: u64,
         candidates: &[String],
         top: usize,
-    ) -> Vec<(String, f32)> {
+    ) -> Arc<[(String, f32)]> {
         if query.len() > MAX_CACHED_NAME {
-            return self.rank_profiles(query, candidates, top);
+            return self.rank_profiles(query, candidates, top).into();
         }
         self.ranked
             .get_or_insert_with((query.to_string(), set, top), || {
                 let profiles = self.set_profiles(set, candidates);
                 self.rank_among(query, candidates, &profiles, top, Some(profiles.search()))
+                    .into()
             })
     }
 

@@ -304,9 +304,9 @@ fn ranking_in_a_remembered_set_is_the_plain_ranking() {
     ] {
         for top in [1, 6] {
             let plain = sim().rank(name, &labels(), top);
-            assert_eq!(sim().rank_in_set(name, 11, &set, top), plain, "{name}");
+            assert_eq!(*sim().rank_in_set(name, 11, &set, top), plain, "{name}");
             assert_eq!(
-                sim().rank_in_set(name, 11, &set, top),
+                *sim().rank_in_set(name, 11, &set, top),
                 plain,
                 "{name}, remembered"
             );
@@ -324,6 +324,6 @@ fn ranking_in_a_remembered_set_is_the_plain_ranking() {
     for (i, name) in set.iter().enumerate().step_by(3) {
         let top = 1 + i % 7;
         let plain = sim().rank(name, &labels(), top);
-        assert_eq!(sim().rank_in_set(name, 11, &set, top), plain, "{name}");
+        assert_eq!(*sim().rank_in_set(name, 11, &set, top), plain, "{name}");
     }
 }

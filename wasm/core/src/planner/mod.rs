@@ -23,7 +23,6 @@ use crate::limits;
 use crate::plan::{DishClassRef, Plan, PlanRequest, Query, QueryIngredient, FORMAT_VERSION};
 use crate::similarity::Similarity;
 use crate::taxonomy::{dish_class_name, dish_class_of};
-use rustc_hash::FxHashSet as HashSet;
 use std::collections::BTreeMap;
 
 /// Plans a query against a knowledge base. `index` must have been built from the same `kb`
@@ -39,15 +38,13 @@ pub fn plan(
     let query = normalize_query(&request.query, &mut notes)?;
     let overrides = normalize_overrides(&request.overrides)?;
     let class = dish_class_of(&query.dish_type);
-    let labels: Vec<String> = {
-        let mut seen = HashSet::default();
-        query
-            .ingredients
-            .iter()
-            .filter(|i| seen.insert(i.object.clone()))
-            .map(|i| i.object.clone())
-            .collect()
-    };
+    // the distinct names (a query has a few; at most `MAX_QUERY_INGREDIENTS`)
+    let mut labels: Vec<String> = Vec::with_capacity(query.ingredients.len());
+    for i in &query.ingredients {
+        if !labels.contains(&i.object) {
+            labels.push(i.object.clone());
+        }
+    }
     let scorer = score::Scorer::new(similarity, index, &labels);
     let chosen =
         goal::select(kb, index, &scorer, class, &mut notes, &query.dish_type).ok_or_else(|| {
@@ -113,10 +110,13 @@ fn bad(message: String) -> FoonError {
     FoonError::new(ErrorCode::BadQuery, message)
 }
 
-fn check_length(what: &str, text: &str) -> Result<()> {
-    if text.chars().count() > limits::MAX_LABEL_CHARS {
+/// `what` is written only for the error (every ingredient is checked; its name is a `format!`).
+fn check_length(text: &str, what: impl FnOnce() -> String) -> Result<()> {
+    // no more characters than bytes: most names are answered without counting
+    if text.len() > limits::MAX_LABEL_CHARS && text.chars().count() > limits::MAX_LABEL_CHARS {
         return Err(bad(format!(
-            "{what} is longer than {} characters",
+            "{} is longer than {} characters",
+            what(),
             limits::MAX_LABEL_CHARS
         )));
     }
@@ -125,7 +125,7 @@ fn check_length(what: &str, text: &str) -> Result<()> {
 
 /// Normal forms of names and states; identical ingredients removed with a note.
 fn normalize_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
-    check_length("the dish type", &q.dish_type)?;
+    check_length(&q.dish_type, || "the dish type".into())?;
     if q.ingredients.is_empty() {
         return Err(bad("the query has no ingredients".into()));
     }
@@ -141,8 +141,8 @@ fn normalize_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
     }
     let mut out: Vec<QueryIngredient> = Vec::with_capacity(q.ingredients.len());
     for (i, ing) in q.ingredients.iter().enumerate() {
-        check_length(&format!("ingredient {} object", i + 1), &ing.object)?;
-        check_length(&format!("ingredient {} state", i + 1), &ing.state)?;
+        check_length(&ing.object, || format!("ingredient {} object", i + 1))?;
+        check_length(&ing.state, || format!("ingredient {} state", i + 1))?;
         let object = normalize_label(&ing.object);
         if object.is_empty() {
             return Err(bad(format!(
@@ -183,8 +183,8 @@ fn normalize_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
 fn normalize_overrides(o: &BTreeMap<String, String>) -> Result<BTreeMap<String, String>> {
     let mut out = BTreeMap::new();
     for (k, v) in o {
-        check_length("an override", k)?;
-        check_length("an override", v)?;
+        check_length(k, || "an override".into())?;
+        check_length(v, || "an override".into())?;
         let (k, v) = (normalize_label(k), normalize_label(v));
         if k.is_empty() || v.is_empty() {
             return Err(bad("an override has an empty name".into()));

@@ -1,6 +1,7 @@
-//! Similarities of one query's ingredients to the knowledge base's labels, remembered for the plan: g(u)
-//! of the retrieval (Alg. 2), once per unit, and the ingredient-set coverage of goal selection (Alg. 1).
-//! Each similarity is computed at most once per plan (not once per unit, goal and retrieval).
+//! Similarities of one query's ingredients to the knowledge base's labels, remembered: g(u) of the
+//! retrieval (Alg. 2), once per unit, and the ingredient-set coverage of goal selection (Alg. 1). Each
+//! similarity is computed at most once per plan (not once per unit, goal and retrieval), and at most once
+//! in all when the similarity has a memory (`Similarity::memory`): query names recur from plan to plan.
 
 use super::index::{GoalClass, PlannerIndex};
 use crate::model::UnitId;
@@ -27,9 +28,10 @@ pub(crate) struct Scorer<'a> {
     prepared: Vec<Box<dyn Prepared + 'a>>,
     /// Label id of each query name, when the knowledge base has it.
     query_ids: Vec<Option<u32>>,
-    /// (sim(name, label), sim(label, name)) per query name and label, computed on first ask. Both
-    /// directions come from one comparison, and goal selection asks both of every pair.
-    pairs: RefCell<PairTable>,
+    /// Per query name, (sim(name, label), sim(label, name)) by label id, computed on first ask (both
+    /// directions come from one comparison, and goal selection asks both of every pair); from the
+    /// similarity's memory when it has one.
+    rows: Vec<Arc<PairRow>>,
     /// Per query name, its best similarity so far (`recall`, `GoalFits::fit`): one buffer for every
     /// unit and goal.
     best_to: RefCell<Vec<f32>>,
@@ -38,6 +40,7 @@ pub(crate) struct Scorer<'a> {
 
 impl<'a> Scorer<'a> {
     pub fn new(sim: &'a dyn Similarity, index: &'a PlannerIndex, query: &'a [String]) -> Self {
+        let labels = index.label_count();
         Scorer {
             sim,
             index,
@@ -47,30 +50,27 @@ impl<'a> Scorer<'a> {
                 .iter()
                 .map(|q| sim.prepare(q, index.label_set, index.label_names()))
                 .collect(),
-            pairs: RefCell::new(PairTable::new(index.label_count(), query.len())),
+            rows: query
+                .iter()
+                .map(|q| match sim.memory() {
+                    Some(memory) => memory.row(index.label_set, q, labels),
+                    None => Arc::new(PairRow::new(labels)),
+                })
+                .collect(),
             best_to: RefCell::new(Vec::with_capacity(query.len())),
-            // a plan scores a few hundred units: sized so that the table does not grow step by step
-            units: RefCell::new(HashMap::with_capacity_and_hasher(512, Default::default())),
+            // a plan scores a few units (9 on average over the dev queries, at most 37)
+            units: RefCell::new(HashMap::with_capacity_and_hasher(32, Default::default())),
         }
     }
 
-    /// sim(query name `q`, label).
-    fn similarity(&self, q: usize, label: u32) -> f32 {
-        self.remembered(&mut self.pairs.borrow_mut(), q, label).0
-    }
-
-    /// The pair of query name `q` and `label` in `pairs`, computed on first ask.
-    fn remembered(&self, pairs: &mut PairTable, q: usize, label: u32) -> (f32, f32) {
-        self.in_slot(pairs.slot(label), q, label)
-    }
-
-    /// The pair of query name `q` and `label`, whose slot is `cells`, computed on first ask.
-    fn in_slot(&self, cells: &mut [(f32, f32)], q: usize, label: u32) -> (f32, f32) {
-        let cell = &mut cells[q];
-        if cell.0.is_nan() {
-            *cell = self.prepared[q].both(label as usize);
-        }
-        *cell
+    /// (sim(query name `q`, label), sim(label, name `q`)), computed on first ask.
+    fn both(&self, q: usize, label: u32) -> (f32, f32) {
+        let row = &self.rows[q];
+        row.get(label as usize).unwrap_or_else(|| {
+            let pair = self.prepared[q].both(label as usize);
+            row.set(label as usize, pair);
+            pair
+        })
     }
 
     /// sim(query name `name`, `label`), remembered when both are known to the scorer (an attachment
@@ -80,7 +80,7 @@ impl<'a> Scorer<'a> {
             self.query.iter().position(|q| q == name),
             self.index.label_id(label),
         ) {
-            (Some(q), Some(id)) => self.similarity(q, id),
+            (Some(q), Some(id)) => self.both(q, id).0,
             _ => self.sim.similarity(name, label),
         }
     }
@@ -111,15 +111,13 @@ impl<'a> Scorer<'a> {
 
     /// Σ over query names of the best similarity to any of `labels` (exact matches count 1).
     fn recall(&self, labels: &[u32]) -> f32 {
-        let mut pairs = self.pairs.borrow_mut();
         // per query name, the best similarity to any of `labels` so far
         let mut best_to = self.best_to.borrow_mut();
         best_to.clear();
         best_to.resize(self.query.len(), 0.0);
         for &l in labels {
-            let cells = pairs.slot(l);
             for (q, to) in best_to.iter_mut().enumerate() {
-                *to = larger(*to, self.in_slot(cells, q, l).0);
+                *to = larger(*to, self.both(q, l).0);
             }
         }
         let exact = |id: &Option<u32>| id.is_some_and(|id| labels.contains(&id));
@@ -182,14 +180,16 @@ impl GoalFits<'_, '_> {
         }
     }
 
-    /// (sim(query name `q`, ingredient at `slot`), the converse), remembered in `q`'s row.
+    /// (sim(query name `q`, ingredient at `slot`), the converse), remembered in `q`'s row only: the
+    /// scorer's rows over every label would fill up with a large knowledge base's goal ingredients.
     fn pair(&self, q: usize, slot: u32) -> (f32, f32) {
         let row = &self.rows[q];
         row.get(slot as usize).unwrap_or_else(|| {
-            let label = self.goals.labels[slot as usize];
-            let pair = self
-                .scorer
-                .remembered(&mut self.scorer.pairs.borrow_mut(), q, label);
+            let label = self.goals.labels[slot as usize] as usize;
+            let scorer = self.scorer;
+            let pair = scorer.rows[q]
+                .get(label)
+                .unwrap_or_else(|| scorer.prepared[q].both(label));
             row.set(slot as usize, pair);
             pair
         })
@@ -202,43 +202,6 @@ fn sum_with_exact<T>(query: &[T], best: &[f32], exact: impl Fn(&T) -> bool) -> f
         .iter()
         .zip(best)
         .fold(0.0, |sum, (q, b)| sum + if exact(q) { 1.0 } else { *b })
-}
-
-/// The remembered pairs of a plan: each label asked about gets a slot of one cell per query name, side
-/// by side (goal selection reads all of a label's cells at once). A row per query name over every label
-/// would be written in full on every plan and read at random, which at 100 times FOON-111 is most of
-/// goal selection's time.
-struct PairTable {
-    /// Query names: the cells of a slot.
-    width: usize,
-    /// Per label id, the index in `cells` of its slot's first cell; `NO_SLOT` until asked.
-    slot_of: Vec<u32>,
-    /// (sim(name, label), sim(label, name)), NaN until computed.
-    cells: Vec<(f32, f32)>,
-}
-
-const NO_SLOT: u32 = u32::MAX;
-
-impl PairTable {
-    fn new(labels: usize, width: usize) -> PairTable {
-        PairTable {
-            width,
-            slot_of: vec![NO_SLOT; labels],
-            cells: Vec::new(),
-        }
-    }
-
-    /// `label`'s slot, made on first ask.
-    fn slot(&mut self, label: u32) -> &mut [(f32, f32)] {
-        let slot = &mut self.slot_of[label as usize];
-        if *slot == NO_SLOT {
-            *slot = self.cells.len() as u32;
-            self.cells
-                .resize(self.cells.len() + self.width, (f32::NAN, f32::NAN));
-        }
-        let at = *slot as usize;
-        &mut self.cells[at..at + self.width]
-    }
 }
 
 /// The larger of two similarities (never NaN): `f32::max` is a libm call in WASM, for its NaN rule.
