@@ -161,7 +161,7 @@ impl<'kb> Tree<'kb> {
         let mut slot_of: HashMap<NodeId, SlotId> =
             HashMap::with_capacity_and_hasher(4 * r.units.len() + 1, Default::default());
         t.goal = t.kb_slot(kb, root, &mut slot_of);
-        t.add_retrieved(kb, r, &mut slot_of, Origin::Reference);
+        t.graft(kb, r, &mut slot_of, Origin::Reference);
         t
     }
 
@@ -187,6 +187,7 @@ impl<'kb> Tree<'kb> {
     }
 
     /// Adds retrieved units; `slot_of` maps knowledge-base nodes to slots that already stand for them.
+    /// Returns the new units' ids.
     pub fn add_retrieved(
         &mut self,
         kb: &'kb KnowledgeBase,
@@ -194,12 +195,33 @@ impl<'kb> Tree<'kb> {
         slot_of: &mut HashMap<NodeId, SlotId>,
         origin: Origin,
     ) -> Vec<TUnitId> {
-        let mut unit_of: HashMap<usize, TUnitId> =
-            HashMap::with_capacity_and_hasher(r.units.len(), Default::default());
-        let mut added = Vec::with_capacity(r.units.len());
+        let first = self.units.len();
+        self.graft(kb, r, slot_of, origin);
+        (first..self.units.len()).collect()
+    }
+
+    /// `add_retrieved` without the list of new units (the reference tree has no use for it).
+    fn graft(
+        &mut self,
+        kb: &'kb KnowledgeBase,
+        r: &Retrieved,
+        slot_of: &mut HashMap<NodeId, SlotId>,
+        origin: Origin,
+    ) {
+        // at most one new slot per object of a unit: the tables grow once, not step by step
+        let objects: usize = r
+            .units
+            .iter()
+            .map(|&u| kb.units[u].inputs.len() + kb.units[u].outputs.len())
+            .sum();
+        self.slots.reserve(objects);
+        self.producer.reserve(objects);
         self.units.reserve(r.units.len());
+        // (node, its slot, the tree unit) for each node and the unit chosen to make it
+        let mut made: Vec<(NodeId, SlotId, TUnitId)> = Vec::with_capacity(r.units.len() + 4);
         for &u in &r.units {
             let unit = &kb.units[u];
+            let tu = self.units.len();
             let inputs = unit
                 .inputs
                 .iter()
@@ -208,7 +230,13 @@ impl<'kb> Tree<'kb> {
             let outputs = unit
                 .outputs
                 .iter()
-                .map(|o| (self.kb_slot(kb, o.node, slot_of), o.moves))
+                .map(|o| {
+                    let s = self.kb_slot(kb, o.node, slot_of);
+                    if r.chosen.get(&o.node) == Some(&u) {
+                        made.push((o.node, s, tu));
+                    }
+                    (s, o.moves)
+                })
                 .collect();
             self.units.push(TUnit {
                 inputs,
@@ -218,19 +246,14 @@ impl<'kb> Tree<'kb> {
                 sources: &kb.provenance[u],
                 alive: true,
             });
-            unit_of.insert(u, self.units.len() - 1);
-            added.push(self.units.len() - 1);
         }
-        let mut chosen: Vec<(&NodeId, &usize)> = r.chosen.iter().collect();
-        chosen.sort();
-        for (n, u) in chosen {
-            if let (Some(&s), Some(&tu)) = (slot_of.get(n), unit_of.get(u)) {
-                if self.producer[s].is_none() {
-                    self.producer[s] = Some(tu);
-                }
+        // in node order: when nodes share a slot, the first node's unit makes it
+        made.sort_unstable();
+        for (_, s, tu) in made {
+            if self.producer[s].is_none() {
+                self.producer[s] = Some(tu);
             }
         }
-        added
     }
 
     pub fn add_unit(
