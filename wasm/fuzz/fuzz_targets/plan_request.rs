@@ -9,7 +9,7 @@ use foon_core::{decode, load, EmbeddingSimilarity, ErrorCode, KnowledgeBase, Pla
 use libfuzzer_sys::fuzz_target;
 use std::collections::HashSet;
 use std::path::PathBuf;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 struct World {
     kb: KnowledgeBase,
@@ -41,7 +41,7 @@ fn world() -> &'static World {
     })
 }
 
-fn key(n: &PlanNode) -> String {
+fn key(n: &Arc<PlanNode>) -> String {
     let mut states = n.states.clone();
     states.sort();
     format!("{} ({})", n.label, states.join(", "))
