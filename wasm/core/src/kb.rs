@@ -11,6 +11,8 @@ use crate::taxonomy::{is_utensil, RAW_STATES};
 use rustc_hash::{FxHashMap, FxHashSet};
 use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::ops::Deref;
+use std::sync::Arc;
 
 /// A goal node of one subgraph: the finished dish that subgraph annotates.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
@@ -22,6 +24,39 @@ pub struct Goal {
     pub subgraph: String,
     /// The dish's ingredients: its `contains {…}` state, else the starting ingredients of its subgraph.
     pub ingredients: Vec<String>,
+}
+
+/// The subgraphs a unit occurs in, sorted. Shared: a plan's unit takes a count, not a copy of the names.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Sources(Arc<[String]>);
+
+impl Sources {
+    /// The names for a plan: the same allocation, one more count.
+    pub fn shared(&self) -> Arc<[String]> {
+        Arc::clone(&self.0)
+    }
+}
+
+impl Deref for Sources {
+    type Target = [String];
+    fn deref(&self) -> &[String] {
+        &self.0
+    }
+}
+
+// read as the list of names it was (`provenance.iter().flatten()`)
+impl<'a> IntoIterator for &'a Sources {
+    type Item = &'a String;
+    type IntoIter = std::slice::Iter<'a, String>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.0.iter()
+    }
+}
+
+impl FromIterator<String> for Sources {
+    fn from_iter<I: IntoIterator<Item = String>>(names: I) -> Sources {
+        Sources(names.into_iter().collect())
+    }
 }
 
 /// Per-file figures, kept for statistics and provenance.
@@ -65,7 +100,7 @@ pub struct KnowledgeBase {
     pub nodes: Vec<ObjectNode>,
     pub units: Vec<FunctionalUnit>,
     /// For each unit, the subgraphs it occurs in (sorted).
-    pub provenance: Vec<Vec<String>>,
+    pub provenance: Vec<Sources>,
     /// For each node, the units that output it.
     pub producers: Vec<Vec<UnitId>>,
     /// For each node, the units that take it as input.
@@ -337,7 +372,7 @@ mod tests {
         assert_eq!(k.units_before_merge, 3);
         assert_eq!(k.units.len(), 2);
         let slice = k.units.iter().position(|u| u.motion == "slice").unwrap();
-        assert_eq!(k.provenance[slice], vec!["a.txt", "b.txt"]);
+        assert_eq!(*k.provenance[slice], ["a.txt", "b.txt"]);
         // the flag is 1 in a.txt and 0 in b.txt: OR-ed
         assert!(k.units[slice]
             .inputs

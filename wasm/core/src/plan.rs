@@ -108,7 +108,7 @@ pub struct PlanUnit {
     pub outputs: Vec<Arc<PlanNode>>,
     pub origin: Origin,
     /// Subgraphs the unit comes from (empty for units the planner made).
-    pub sources: Vec<String>,
+    pub sources: Arc<[String]>,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

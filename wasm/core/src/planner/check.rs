@@ -158,7 +158,7 @@ mod tests {
             motion: motion.into(),
             outputs: outputs.into_iter().map(Arc::new).collect(),
             origin: crate::plan::Origin::Reference,
-            sources: Vec::new(),
+            sources: Arc::default(),
         }
     }
 

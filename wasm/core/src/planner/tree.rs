@@ -3,7 +3,7 @@
 //! connected graph. Each slot has at most one designated producer; ordering follows producers only.
 
 use super::retrieve::Retrieved;
-use crate::kb::KnowledgeBase;
+use crate::kb::{KnowledgeBase, Sources};
 use crate::model::{NodeId, ObjectNode, State, StateArg};
 use crate::plan::Origin;
 use crate::taxonomy::is_utensil;
@@ -41,7 +41,7 @@ pub(crate) struct TUnit<'kb> {
     pub outputs: Vec<(SlotId, bool)>,
     pub origin: Origin,
     /// The knowledge base's subgraphs the unit comes from (none for a unit the planner made).
-    pub sources: &'kb [String],
+    pub sources: Option<&'kb Sources>,
     pub alive: bool,
 }
 
@@ -243,7 +243,7 @@ impl<'kb> Tree<'kb> {
                 motion: Cow::Borrowed(&unit.motion),
                 outputs,
                 origin,
-                sources: &kb.provenance[u],
+                sources: Some(&kb.provenance[u]),
                 alive: true,
             });
         }
@@ -268,7 +268,7 @@ impl<'kb> Tree<'kb> {
             motion: Cow::Owned(motion.to_string()),
             outputs: outputs.clone(),
             origin,
-            sources: &[],
+            sources: None,
             alive: true,
         });
         let id = self.units.len() - 1;
