@@ -567,6 +567,39 @@ impl CandidateSet {
         self.profiles.len()
     }
 
+    /// `may_match` the other way: whether `q` can be an exact match for candidate i.
+    fn may_be_matched(&self, q: &Profile, i: usize) -> bool {
+        self.hashes[i]
+            .iter()
+            .any(|&x| x == q.name.hash || x == q.key.hash)
+    }
+}
+
+/// What a ranking reads of candidate i (in range): from a candidate set's arrays, or from a list of
+/// profiles (a one-off ranking of a few names, where laying them out would cost more than the scan).
+trait Scanned {
+    fn count(&self) -> usize;
+    fn profile(&self, i: usize) -> &Profile;
+    fn composite(&self, i: usize) -> bool;
+    fn utensil(&self, i: usize) -> bool;
+    fn may_match(&self, sim: &EmbeddingSimilarity, q: &Profile, i: usize) -> bool;
+    fn cosine(&self, q: &Profile, i: usize) -> f32;
+    fn traits(&self, i: usize) -> Traits<'_>;
+}
+
+impl Scanned for CandidateSet {
+    fn count(&self) -> usize {
+        self.len()
+    }
+    fn profile(&self, i: usize) -> &Profile {
+        &self.profiles[i]
+    }
+    fn composite(&self, i: usize) -> bool {
+        self.composite[i]
+    }
+    fn utensil(&self, i: usize) -> bool {
+        self.utensil[i]
+    }
     fn traits(&self, i: usize) -> Traits<'_> {
         Traits {
             category: self.category[i],
@@ -574,21 +607,12 @@ impl CandidateSet {
             stems: &self.stems[self.stem_at[i] as usize..self.stem_at[i + 1] as usize],
         }
     }
-
     /// Whether candidate i can be an exact match for `q`, from hashes alone: false is certain, true
     /// must be confirmed with `is_exact(q, candidate)`.
     fn may_match(&self, sim: &EmbeddingSimilarity, q: &Profile, i: usize) -> bool {
         let h = &self.hashes[i];
         sim.exact_rule(q, |x| x.hash == h[0], |x| x.hash == h[2])
     }
-
-    /// `may_match` the other way: whether `q` can be an exact match for candidate i.
-    fn may_be_matched(&self, q: &Profile, i: usize) -> bool {
-        self.hashes[i]
-            .iter()
-            .any(|&x| x == q.name.hash || x == q.key.hash)
-    }
-
     /// `cosine_of(q, candidate i)`, from the laid-out vectors.
     fn cosine(&self, q: &Profile, i: usize) -> f32 {
         match &q.vector {
@@ -597,6 +621,31 @@ impl CandidateSet {
             }
             _ => 0.0,
         }
+    }
+}
+
+impl Scanned for [Arc<Profile>] {
+    fn count(&self) -> usize {
+        self.len()
+    }
+    fn profile(&self, i: usize) -> &Profile {
+        &self[i]
+    }
+    fn composite(&self, i: usize) -> bool {
+        self[i].composite
+    }
+    fn utensil(&self, i: usize) -> bool {
+        self[i].utensil
+    }
+    /// A profile's hashed strings compare by hash first: `is_exact` alone decides.
+    fn may_match(&self, _: &EmbeddingSimilarity, _: &Profile, _: usize) -> bool {
+        true
+    }
+    fn cosine(&self, q: &Profile, i: usize) -> f32 {
+        cosine_of(q, &self[i])
+    }
+    fn traits(&self, i: usize) -> Traits<'_> {
+        self[i].traits()
     }
 }
 
@@ -945,8 +994,7 @@ impl EmbeddingSimilarity {
             .iter()
             .map(|c| self.profile(c.as_ref()))
             .collect();
-        let set = CandidateSet::new(profiles, self.table.dims());
-        self.rank_among(query, candidates, &set, top, None)
+        self.rank_among(query, candidates, profiles.as_slice(), top, None)
     }
 
     /// The `top` best of `candidates` (with their profiles in `set`, same order), best first, ties by
@@ -958,7 +1006,7 @@ impl EmbeddingSimilarity {
         &self,
         query: &str,
         candidates: &'c [S],
-        set: &CandidateSet,
+        set: &(impl Scanned + ?Sized),
         top: usize,
         search: Option<&SetSearch>,
     ) -> Vec<(String, f32)> {
@@ -977,11 +1025,11 @@ impl EmbeddingSimilarity {
                 return;
             };
             // the hashes rule most candidates out without reading their profiles
-            let exact = set.may_match(self, &q, i) && self.is_exact(&q, &set.profiles[i]);
+            let exact = set.may_match(self, &q, i) && self.is_exact(&q, set.profile(i));
             if !exact
                 && (!q.is_known()
-                    || (!keep_composites && set.composite[i])
-                    || (self.options.filter_composites && set.utensil[i]))
+                    || (!keep_composites && set.composite(i))
+                    || (self.options.filter_composites && set.utensil(i)))
             {
                 return;
             }
@@ -1021,7 +1069,7 @@ impl EmbeddingSimilarity {
                 }
             }
         } else {
-            for i in 0..set.len() {
+            for i in 0..set.count() {
                 consider(i, &mut best);
             }
         }
@@ -1164,7 +1212,7 @@ impl Similarity for EmbeddingSimilarity {
         self.ranked
             .get_or_insert_with((query.to_string(), set, top), || {
                 let profiles = self.set_profiles(set, candidates);
-                self.rank_among(query, candidates, &profiles, top, Some(profiles.search()))
+                self.rank_among(query, candidates, &*profiles, top, Some(profiles.search()))
                     .into()
             })
     }
