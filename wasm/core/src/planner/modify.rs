@@ -15,6 +15,7 @@ use smol_str::SmolStr;
 use std::borrow::Cow;
 use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
+use std::fmt::Write;
 
 pub(crate) struct Context<'a> {
     pub kb: &'a KnowledgeBase,
@@ -966,12 +967,19 @@ fn add_branch<'kb>(
         }
     }
     let before = tree.slots.len();
+    // the reason, written into one string as the branch is made
+    let mut how = String::from("not in the reference tree: ");
+    if eq != o {
+        let _ = write!(how, "'{eq}' substituted with '{o}': ");
+    }
     let Some((n, in_state, r)) = picked else {
         // FOON only makes it together with other ingredients (a prepared product such as taco
         // seasoning, whose recipe would bring another dish along): it is bought ready
         let bare = tree.add_slot(ObjectNode::new(eq, Vec::new()));
-        let how =
-            format!("'{eq}' taken as bought (FOON makes it only together with other ingredients)");
+        let _ = write!(
+            how,
+            "'{eq}' taken as bought (FOON makes it only together with other ingredients)"
+        );
         return finish_branch(ctx, tree, eq, o, s, before, bare, String::new(), false, how);
     };
     // most branches are a kitchen item alone: only units retrieved for one share the tree's utensils
@@ -983,15 +991,10 @@ fn add_branch<'kb>(
         (added, slot_of.get(&n).copied())
     };
     let last = made.unwrap_or_else(|| tree.add_slot(ctx.kb.nodes[n].clone()));
-    let how = format!(
-        "'{}' taken from FOON{}",
-        ctx.kb.nodes[n],
-        if added.is_empty() {
-            String::new()
-        } else {
-            format!(" with {} unit(s) making it", added.len())
-        }
-    );
+    let _ = write!(how, "'{}' taken from FOON", ctx.kb.nodes[n]);
+    if !added.is_empty() {
+        let _ = write!(how, " with {} unit(s) making it", added.len());
+    }
     let state = state_text(&ctx.kb.nodes[n]);
     finish_branch(ctx, tree, eq, o, s, before, last, state, in_state, how)
 }
@@ -1042,16 +1045,15 @@ fn finish_branch<'kb>(
                 inputs.push((utensil_slot(ctx.kb, tree, t), false));
             }
             tree.add_unit(inputs, &motion, vec![(x, true)], Origin::Grafted);
-            how.push_str(&format!(", then '{motion}' to make it '{s}'"));
+            let _ = write!(how, ", then '{motion}' to make it '{s}'");
             chosen_state = s.to_string();
             last = x;
         } else {
-            how.push_str(&format!(", no motion in FOON reaches '{s}'"));
+            let _ = write!(how, ", no motion in FOON reaches '{s}'");
         }
     }
     if eq != o {
         tree.rename_in(before..tree.slots.len(), eq, o);
-        how = format!("'{eq}' substituted with '{o}': {how}");
     }
     let order = tree.order();
     let Some(m) = attach_point(ctx, tree, &order, o, c) else {
@@ -1060,11 +1062,8 @@ fn finish_branch<'kb>(
     tree.units[m].inputs.push((last, true));
     tree.add_contents_downstream(m, o, &order);
     tree.units[m].origin = Origin::Attached;
-    let motion = tree.units[m].motion.clone();
-    Ok((
-        chosen_state,
-        format!("not in the reference tree: {how}; added at '{motion}'"),
-    ))
+    let _ = write!(how, "; added at '{}'", tree.units[m].motion);
+    Ok((chosen_state, how))
 }
 
 /// A node without food states given the starting state `s`.
