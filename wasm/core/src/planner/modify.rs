@@ -367,7 +367,7 @@ fn settle_state<'kb>(
                 "kept in the state '{first}' chosen for the same ingredient earlier"
             ));
         } else {
-            match restate(ctx, tree, eq, o, s) {
+            match restate(ctx, tree, eq, o, s, &slots) {
                 Ok(reason) => {
                     restated.insert(o.to_string(), s.to_string());
                     w.reasons.push(reason);
@@ -566,16 +566,17 @@ fn replace_states(node: &ObjectNode, old: &[String], new: &str) -> ObjectNode {
     ObjectNode::new(node.label.clone(), states)
 }
 
-/// Cases 3 and 4: brings the ingredient `o` (already in the tree; `eq` in FOON) to the state `s`.
+/// Cases 3 and 4: brings the ingredient `o` (already in the tree, in `slots`; `eq` in FOON) to the
+/// state `s`.
 fn restate<'kb>(
     ctx: &Context<'kb>,
     tree: &mut Tree<'kb>,
     eq: &str,
     o: &str,
     s: &str,
+    slots: &[SlotId],
 ) -> Result<String, String> {
     let order = tree.order();
-    let slots = tree.slots_with_label(o);
     let first_use = |x: SlotId| {
         order
             .iter()
