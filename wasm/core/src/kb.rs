@@ -11,7 +11,6 @@ use crate::taxonomy::{is_utensil, RAW_STATES};
 use rustc_hash::{FxHashMap, FxHashSet};
 use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
-use std::ops::Deref;
 use std::sync::Arc;
 
 /// A goal node of one subgraph: the finished dish that subgraph annotates.
@@ -24,39 +23,6 @@ pub struct Goal {
     pub subgraph: String,
     /// The dish's ingredients: its `contains {…}` state, else the starting ingredients of its subgraph.
     pub ingredients: Vec<String>,
-}
-
-/// The subgraphs a unit occurs in, sorted. Shared: a plan's unit takes a count, not a copy of the names.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Sources(Arc<[String]>);
-
-impl Sources {
-    /// The names for a plan: the same allocation, one more count.
-    pub fn shared(&self) -> Arc<[String]> {
-        Arc::clone(&self.0)
-    }
-}
-
-impl Deref for Sources {
-    type Target = [String];
-    fn deref(&self) -> &[String] {
-        &self.0
-    }
-}
-
-// read as the list of names it was (`provenance.iter().flatten()`)
-impl<'a> IntoIterator for &'a Sources {
-    type Item = &'a String;
-    type IntoIter = std::slice::Iter<'a, String>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.0.iter()
-    }
-}
-
-impl FromIterator<String> for Sources {
-    fn from_iter<I: IntoIterator<Item = String>>(names: I) -> Sources {
-        Sources(names.into_iter().collect())
-    }
 }
 
 /// Per-file figures, kept for statistics and provenance.
@@ -99,8 +65,9 @@ pub fn title_from_name(name: &str) -> String {
 pub struct KnowledgeBase {
     pub nodes: Vec<ObjectNode>,
     pub units: Vec<FunctionalUnit>,
-    /// For each unit, the subgraphs it occurs in (sorted).
-    pub provenance: Vec<Sources>,
+    /// For each unit, the subgraphs it occurs in (sorted); shared, so that a plan's unit takes a count
+    /// rather than a copy of the names.
+    pub provenance: Vec<Arc<[String]>>,
     /// For each node, the units that output it.
     pub producers: Vec<Vec<UnitId>>,
     /// For each node, the units that take it as input.
@@ -274,7 +241,7 @@ impl KnowledgeBase {
     pub fn units_by_subgraph(&self) -> HashMap<&str, Vec<UnitId>> {
         let mut out: HashMap<&str, Vec<UnitId>> = HashMap::new();
         for (u, files) in self.provenance.iter().enumerate() {
-            for f in files {
+            for f in files.iter() {
                 out.entry(f.as_str()).or_default().push(u);
             }
         }

@@ -26,7 +26,7 @@ pub mod write;
 pub use bundle::load;
 pub use error::{ErrorCode, FoonError, Result};
 pub use export::{foon_text, pddl, progress_json, Pddl};
-pub use kb::{Goal, KnowledgeBase, Sources};
+pub use kb::{Goal, KnowledgeBase};
 pub use model::{FunctionalUnit, NodeId, ObjectNode, State, StateArg, UnitId, UnitObject};
 pub use plan::{Plan, PlanRequest, Query, QueryIngredient};
 pub use planner::{plan, PlannerIndex};

@@ -174,7 +174,7 @@ impl PlannerIndex {
         let mut motion_state: BTreeMap<String, BTreeMap<String, u32>> = BTreeMap::new();
         let mut motion_cat: BTreeMap<Category, BTreeMap<String, u32>> = BTreeMap::new();
         let mut motion_utensil: BTreeMap<String, BTreeMap<NodeId, u32>> = BTreeMap::new();
-        let names: BTreeSet<&String> = kb.provenance.iter().flatten().collect();
+        let names: BTreeSet<&String> = kb.provenance.iter().flat_map(|s| s.iter()).collect();
         let subgraph_ids: HashMap<String, u32> = names
             .into_iter()
             .enumerate()

@@ -3,7 +3,7 @@
 
 use super::modify::food_states;
 use super::tree::{SlotId, TUnitId, Tree};
-use crate::kb::{Goal, KnowledgeBase, Sources};
+use crate::kb::{Goal, KnowledgeBase};
 use crate::model::{ObjectNode, State, StateArg};
 use crate::plan::{
     DishClassRef, GoalInfo, IngredientOutcome, Plan, PlanNode, PlanUnit, ProgressLine,
@@ -55,7 +55,7 @@ pub(crate) fn build(p: Parts) -> Plan {
                 motion: unit.motion.as_ref().into(),
                 outputs: unit.outputs.iter().map(|o| node(o.0)).collect(),
                 origin: unit.origin,
-                sources: unit.sources.map(Sources::shared).unwrap_or_default(),
+                sources: unit.sources.map(Arc::clone).unwrap_or_default(),
             }
         })
         .collect();

@@ -3,13 +3,14 @@
 //! connected graph. Each slot has at most one designated producer; ordering follows producers only.
 
 use super::retrieve::Retrieved;
-use crate::kb::{KnowledgeBase, Sources};
+use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, StateArg};
 use crate::plan::Origin;
 use crate::taxonomy::is_utensil;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::borrow::Cow;
 use std::ops::Range;
+use std::sync::Arc;
 
 pub(crate) type SlotId = usize;
 pub(crate) type TUnitId = usize;
@@ -41,7 +42,7 @@ pub(crate) struct TUnit<'kb> {
     pub outputs: Vec<(SlotId, bool)>,
     pub origin: Origin,
     /// The knowledge base's subgraphs the unit comes from (none for a unit the planner made).
-    pub sources: Option<&'kb Sources>,
+    pub sources: Option<&'kb Arc<[String]>>,
     pub alive: bool,
 }
 
