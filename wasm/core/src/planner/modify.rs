@@ -612,13 +612,13 @@ fn restate<'kb>(
         }
         let mut slot_of: HashMap<NodeId, SlotId> = [(kb_node, leaf)].into_iter().collect();
         let before = tree.slots.len();
-        let added = tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
+        tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
         if eq != o {
             tree.rename_in(before..tree.slots.len(), eq, o);
         }
         return Ok(format!(
             "added {} unit(s) making the tree's '{leaf_state}' {o} from '{s}'",
-            added.len()
+            r.units.len()
         ));
     }
     if !leaf_cat.reaches(c) {
@@ -985,16 +985,16 @@ fn add_branch<'kb>(
     };
     // most branches are a kitchen item alone: only units retrieved for one share the tree's utensils
     let (added, made) = if ctx.kb.kitchen[n] || r.units.is_empty() {
-        (Vec::new(), None)
+        (0, None)
     } else {
         let mut slot_of = starting_utensils(tree, r.units.len());
-        let added = tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
-        (added, slot_of.get(&n).copied())
+        tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
+        (r.units.len(), slot_of.get(&n).copied())
     };
     let last = made.unwrap_or_else(|| tree.add_slot(ctx.kb.nodes[n].clone()));
     let _ = write!(how, "'{}' taken from FOON", ctx.kb.nodes[n]);
-    if !added.is_empty() {
-        let _ = write!(how, " with {} unit(s) making it", added.len());
+    if added > 0 {
+        let _ = write!(how, " with {added} unit(s) making it");
     }
     let state = state_text(&ctx.kb.nodes[n]);
     finish_branch(ctx, tree, eq, o, s, before, last, state, in_state, how)

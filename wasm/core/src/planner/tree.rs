@@ -162,7 +162,7 @@ impl<'kb> Tree<'kb> {
         let mut slot_of: HashMap<NodeId, SlotId> =
             HashMap::with_capacity_and_hasher(4 * r.units.len() + 1, Default::default());
         t.goal = t.kb_slot(kb, root, &mut slot_of);
-        t.graft(kb, r, &mut slot_of, Origin::Reference);
+        t.add_retrieved(kb, r, &mut slot_of, Origin::Reference);
         t
     }
 
@@ -187,22 +187,9 @@ impl<'kb> Tree<'kb> {
         s
     }
 
-    /// Adds retrieved units; `slot_of` maps knowledge-base nodes to slots that already stand for them.
-    /// Returns the new units' ids.
+    /// Adds retrieved units (all of `r.units`, in order); `slot_of` maps knowledge-base nodes to slots
+    /// that already stand for them.
     pub fn add_retrieved(
-        &mut self,
-        kb: &'kb KnowledgeBase,
-        r: &Retrieved,
-        slot_of: &mut HashMap<NodeId, SlotId>,
-        origin: Origin,
-    ) -> Vec<TUnitId> {
-        let first = self.units.len();
-        self.graft(kb, r, slot_of, origin);
-        (first..self.units.len()).collect()
-    }
-
-    /// `add_retrieved` without the list of new units (the reference tree has no use for it).
-    fn graft(
         &mut self,
         kb: &'kb KnowledgeBase,
         r: &Retrieved,
