@@ -44,6 +44,21 @@ function scaled(files: KnowledgeBaseFile[], factor: number): KnowledgeBaseFile[]
   return out;
 }
 
+/** One plan call, timed; a typed error leaves `plan` undefined. */
+function timedPlan(planner: FoonPlanner, request: PlanRequest): { took: number; plan?: Plan } {
+  const started = performance.now();
+  try {
+    const plan = planner.plan(request);
+    return { took: performance.now() - started, plan };
+  } catch {
+    return { took: performance.now() - started };
+  }
+}
+
+/** "median …, p95 …, max …" of ascending times. */
+const spread = (sorted: number[]): string =>
+  `median ${ms(percentile(sorted, 0.5))}, p95 ${ms(percentile(sorted, 0.95))}, max ${ms(sorted[sorted.length - 1] ?? 0)}`;
+
 function bench(name: string, files: KnowledgeBaseFile[], embeddings: Uint8Array, requests: PlanRequest[], rounds = ROUNDS): void {
   const loads: number[] = [];
   let planner: FoonPlanner | undefined;
@@ -64,14 +79,8 @@ function bench(name: string, files: KnowledgeBaseFile[], embeddings: Uint8Array,
   let errors = 0;
   for (let round = 0; round < rounds; round++) {
     for (const [i, request] of requests.entries()) {
-      const started = performance.now();
-      let plan: Plan | undefined;
-      try {
-        plan = planner.plan(request);
-      } catch {
-        errors++;
-      }
-      const took = performance.now() - started;
+      const { took, plan } = timedPlan(planner, request);
+      if (plan === undefined) errors++;
       times.push(took);
       best[i] = Math.min(best[i]!, took);
       // the bench's own record of the plan, outside the timed call
@@ -95,8 +104,8 @@ function bench(name: string, files: KnowledgeBaseFile[], embeddings: Uint8Array,
   loads.sort((a, b) => a - b);
   console.log(`\n${name}: ${stats.subgraphs} subgraphs, ${stats.units} units, ${stats.object_nodes} object nodes`);
   console.log(`  knowledge-base load (parse + merge + index + embeddings): median ${ms(percentile(loads, 0.5))} over ${loads.length}`);
-  console.log(`  plan (${requests.length} dev queries x ${rounds} rounds, JSON in/out): median ${ms(percentile(times, 0.5))}, p95 ${ms(percentile(times, 0.95))}, max ${ms(times[times.length - 1] ?? 0)}, typed errors ${errors / rounds}`);
-  if (rounds > 1) console.log(`  plan, each query's best of ${rounds} rounds: median ${ms(percentile(best, 0.5))}, p95 ${ms(percentile(best, 0.95))}, max ${ms(best[best.length - 1] ?? 0)}`);
+  console.log(`  plan (${requests.length} dev queries x ${rounds} rounds, JSON in/out): ${spread(times)}, typed errors ${errors / rounds}`);
+  if (rounds > 1) console.log(`  plan, each query's best of ${rounds} rounds: ${spread(best)}`);
   console.log(`  of which JSON.parse of the plan (median ${(percentile(bytes, 0.5) / 1024).toFixed(1)} kB): median ${ms(percentile(parses, 0.5))}, p95 ${ms(percentile(parses, 0.95))}`);
   console.log(`  memory: WASM linear memory ${mb(wasmMemoryBytes())}, process peak RSS ${mb(process.resourceUsage().maxRSS * 1024)}`);
   planner.free();
@@ -110,18 +119,11 @@ function bench(name: string, files: KnowledgeBaseFile[], embeddings: Uint8Array,
  */
 function warmUpEngine(files: KnowledgeBaseFile[], embeddings: Uint8Array, requests: PlanRequest[]): void {
   const planner = FoonPlanner.load(files, embeddings);
-  const times = requests.map((request) => {
-    const started = performance.now();
-    try {
-      planner.plan(request);
-    } catch {
-      // typed errors are counted by the bench proper
-    }
-    return performance.now() - started;
-  });
+  // typed errors are counted by the bench proper
+  const times = requests.map((request) => timedPlan(planner, request).took);
   planner.free();
   times.sort((a, b) => a - b);
-  console.log(`engine warm-up (FOON-111, a planner of its own, not counted below): first round median ${ms(percentile(times, 0.5))}, p95 ${ms(percentile(times, 0.95))}, max ${ms(times[times.length - 1] ?? 0)}`);
+  console.log(`engine warm-up (FOON-111, a planner of its own, not counted below): first round ${spread(times)}`);
 }
 
 initPlannerFromDisk();

@@ -12,7 +12,7 @@ use js_sys::JsString;
 use std::cell::RefCell;
 use wasm_bindgen::prelude::*;
 
-// Talc instead of Rust's default dlmalloc: a plan makes and frees about 1,500 small allocations, and
+// Talc instead of Rust's default dlmalloc: a plan makes and frees a thousand or more small allocations, and
 // interleaved runs of the two builds put Talc's plans 3-5 % faster.
 #[cfg(all(not(target_feature = "atomics"), target_family = "wasm"))]
 #[global_allocator]
