@@ -291,6 +291,11 @@ impl EmbeddingTable {
             .into_iter()
             .filter(|w| !is_stop_word(w))
             .collect();
+        self.embed_words(&ws, head_weight)
+    }
+
+    /// `embed_weighted` of a phrase already split into words (`words`, stop words left out).
+    pub fn embed_words(&self, ws: &[String], head_weight: f32) -> PhraseVector {
         let mut sum = vec![0f32; self.dims];
         let mut known = Vec::new();
         let mut unknown = Vec::new();

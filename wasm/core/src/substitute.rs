@@ -310,10 +310,6 @@ impl Taxonomy {
     }
 }
 
-fn is_form_word(word: &str) -> bool {
-    is_form_stem(&stemmer().stem(word))
-}
-
 fn is_form_stem(stem: &str) -> bool {
     // stemmed once: every profile asks this of several words
     static FORM_STEMS: OnceLock<Vec<String>> = OnceLock::new();
@@ -785,45 +781,59 @@ impl EmbeddingSimilarity {
         } else {
             name.clone()
         };
-        let key = stem_key(&name);
-        // "pecan half", "chard leaf": the ingredient is what the form word is of, unless the whole
-        // phrase is a listed name ("bay leaf", "garlic powder").
-        let mut kept: Vec<String> = words(&canonical)
+        // the words of the canonical name with their stems (`stem_key`), each stemmed once
+        let mut kept: Vec<(String, String)> = words(&canonical)
             .into_iter()
             .filter(|w| !is_stop_word(w))
+            .map(|w| {
+                let stem = stemmer().stem(&w).into_owned();
+                (w, stem)
+            })
             .collect();
-        if !self.taxonomy.lists(&stem_key(&canonical)) {
-            let described: Vec<String> = kept
+        let whole_key: Vec<String> = kept.iter().map(|(_, s)| s.clone()).collect();
+        let key = if canonical == name {
+            whole_key.clone()
+        } else {
+            stem_key(&name)
+        };
+        // "pecan half", "chard leaf": the ingredient is what the form word is of, unless the whole
+        // phrase is a listed name ("bay leaf", "garlic powder").
+        let listed_whole = self.taxonomy.lists(&whole_key);
+        if !listed_whole {
+            let described: Vec<(String, String)> = kept
                 .iter()
-                .filter(|w| !DESCRIPTORS.contains(&w.as_str()))
+                .filter(|(w, _)| !DESCRIPTORS.contains(&w.as_str()))
                 .cloned()
                 .collect();
             if !described.is_empty() {
                 kept = described;
             }
         }
-        let whole = self.taxonomy.lookup_key(&stem_key(&canonical));
-        let listed_whole = self.taxonomy.lists(&stem_key(&canonical));
-        while kept.len() > 1 && kept.last().is_some_and(|w| is_form_word(w)) {
-            let shorter = &kept[..kept.len() - 1];
+        let whole = self.taxonomy.lookup_key(&whole_key);
+        while kept.len() > 1 && kept.last().is_some_and(|(_, s)| is_form_stem(s)) {
+            let shorter: Vec<String> = kept[..kept.len() - 1]
+                .iter()
+                .map(|(_, s)| s.clone())
+                .collect();
             // keep "garlic powder" whole (a spice, not an allium); drop "half" of "pecan half"
-            if listed_whole && self.taxonomy.lookup_key(&stem_key(&shorter.join(" "))) != whole {
+            if listed_whole && self.taxonomy.lookup_key(&shorter) != whole {
                 break;
             }
             kept.pop();
         }
-        let core = kept.join(" ");
+        let (kept, kept_stems): (Vec<String>, Vec<String>) = kept.into_iter().unzip();
         // Stems as the table resolves them, so that a plural cut short ("watercres") finds its listing.
         let canonical_key: Vec<String> = kept
             .iter()
-            .map(|w| match self.table.word_stems(w).as_slice() {
+            .zip(kept_stems)
+            .map(|(w, stem)| match self.table.word_stems(w).as_slice() {
                 [one] => one.clone(),
-                _ => stemmer().stem(w).into_owned(),
+                _ => stem,
             })
             .collect();
         let vector = self
             .table
-            .embed_weighted(&core, self.options.head_weight)
+            .embed_words(&kept, self.options.head_weight)
             .vector
             .map(unit);
         let mut category = self.taxonomy.lookup_key(&canonical_key);
