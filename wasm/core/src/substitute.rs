@@ -1030,12 +1030,15 @@ impl EmbeddingSimilarity {
         let cannot_place = |best: &[(&str, f32)], most: f32| {
             best.len() == top && best.last().is_some_and(|w| most + max_bonus < w.1)
         };
-        let consider = |i: usize, best: &mut Vec<(&'c str, f32)>| {
+        // `may_be_exact`: false once every candidate that may be an exact match was considered (a second
+        // look at one changes nothing: it placed, or `top` exact matches outrank it)
+        let consider = |i: usize, may_be_exact: bool, best: &mut Vec<(&'c str, f32)>| {
             let Some(cand) = candidates.get(i).map(AsRef::as_ref) else {
                 return;
             };
             // the hashes rule most candidates out without reading their profiles
-            let exact = set.may_match(self, &q, i) && self.is_exact(&q, set.profile(i));
+            let exact =
+                may_be_exact && set.may_match(self, &q, i) && self.is_exact(&q, set.profile(i));
             if !exact
                 && (!q.is_known()
                     || (!keep_composites && set.composite(i))
@@ -1065,7 +1068,7 @@ impl EmbeddingSimilarity {
         };
         if let Some(search) = search {
             for i in search.exact_candidates(&q) {
-                consider(i, &mut best);
+                consider(i, true, &mut best);
             }
             if q.is_known() {
                 let cones = &search.cones;
@@ -1074,13 +1077,13 @@ impl EmbeddingSimilarity {
                         break; // the cones come nearest first: no later one can place either
                     }
                     for &i in cones.members(k) {
-                        consider(i as usize, &mut best);
+                        consider(i as usize, false, &mut best);
                     }
                 }
             }
         } else {
             for i in 0..set.count() {
-                consider(i, &mut best);
+                consider(i, true, &mut best);
             }
         }
         best.into_iter()
