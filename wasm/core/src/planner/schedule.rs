@@ -7,18 +7,18 @@
 //! it as a product. The goal is never in the kitchen at the start: a unit that needs it before it is made
 //! is dropped. Duplicated units and units whose products nobody uses are dropped.
 
-use super::check::{available_at_start, node_key, NodeKey};
+use super::check::available_at_start;
 use super::output::plan_node;
 use super::tree::{TUnitId, Tree};
 use crate::plan::{IngredientOutcome, PlanNode, Status};
-use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use rustc_hash::FxHashSet as HashSet;
 use std::collections::BinaryHeap;
 use std::ops::Range;
 use std::sync::Arc;
 
 type Value = usize;
 
-/// Values of the slots (interned keys) and which of them a kitchen has at the start.
+/// Values of the slots (ids of distinct nodes) and which of them a kitchen has at the start.
 struct Values {
     of_slot: Vec<Value>,
     start: Vec<bool>,
@@ -31,38 +31,28 @@ pub(crate) struct Schedule {
     pub nodes: Vec<Option<Arc<PlanNode>>>,
 }
 
-/// Each live slot's plan node, made once per distinct node (plan nodes are costly). `value` tells
-/// equal nodes apart by id (`Tree::normalize`), so the nodes need no hashing here.
-fn plan_nodes(tree: &Tree, value: &[usize]) -> Vec<Option<Arc<PlanNode>>> {
+/// Each live slot's plan node, made once per distinct node (plan nodes are costly), and the slots'
+/// values. `value` tells equal nodes apart by id (`Tree::normalize`), so the nodes need no hashing
+/// here: equal as plan nodes (states and contents as sets) is equal as tree nodes, whose states are
+/// sorted and unique. Values are numbered by first slot, from 1: 0 is every slot no live unit uses
+/// (never looked at).
+fn plan_nodes(tree: &Tree, value: &[usize]) -> (Vec<Option<Arc<PlanNode>>>, Values) {
     let mut nodes = vec![None; tree.slots.len()];
-    let mut of_value: Vec<Option<Arc<PlanNode>>> = vec![None; tree.slots.len()];
+    let mut vals = Values {
+        of_slot: vec![0; tree.slots.len()],
+        start: vec![false],
+    };
+    let mut of_value: Vec<Option<(Arc<PlanNode>, Value)>> = vec![None; tree.slots.len()];
     for x in tree.live_slots() {
-        let p = of_value[value[x]].get_or_insert_with(|| Arc::new(plan_node(&tree.slots[x].node)));
+        let (p, v) = of_value[value[x]].get_or_insert_with(|| {
+            let p = Arc::new(plan_node(&tree.slots[x].node));
+            vals.start.push(available_at_start(&p));
+            (p, vals.start.len() - 1)
+        });
         nodes[x] = Some(Arc::clone(p));
+        vals.of_slot[x] = *v;
     }
-    nodes
-}
-
-fn values(nodes: &[Option<Arc<PlanNode>>]) -> Values {
-    let mut ids: HashMap<NodeKey, Value> =
-        HashMap::with_capacity_and_hasher(nodes.len(), Default::default());
-    // one value for every slot no live unit uses (never looked at)
-    let unused = 0;
-    let mut start = vec![false];
-    let of_slot = nodes
-        .iter()
-        .map(|p| {
-            let Some(p) = p else {
-                return unused;
-            };
-            let next = ids.len() + 1;
-            *ids.entry(node_key(p)).or_insert_with(|| {
-                start.push(available_at_start(p));
-                next
-            })
-        })
-        .collect();
-    Values { of_slot, start }
+    (nodes, vals)
 }
 
 /// Per unit: its input values (with repeats, sorted), output values (sorted) and the values it makes
@@ -126,8 +116,7 @@ fn push_sorted(buf: &mut Vec<Value>, values: impl Iterator<Item = Value>) -> Ran
 /// `value` and `order`: the slots' values and the tree's order from `Tree::normalize` (nothing has
 /// changed since).
 pub(crate) fn schedule(tree: &mut Tree, value: &[usize], order: Vec<TUnitId>) -> Schedule {
-    let nodes = plan_nodes(tree, value);
-    let mut vals = values(&nodes);
+    let (nodes, mut vals) = plan_nodes(tree, value);
     let goal = vals.of_slot[tree.goal];
     // the finished dish is never in the kitchen at the start, whatever its states say
     vals.start[goal] = false;
