@@ -232,8 +232,10 @@ fn execution_order(
     let mut order = Vec::with_capacity(chosen.len());
     let mut done = FixedBitSet::with_capacity(kb.units.len());
     let mut seen_nodes = FixedBitSet::with_capacity(kb.nodes.len());
-    // iterative DFS: (node, expanded?)
-    let mut stack: Vec<(NodeId, bool)> = vec![(root, false)];
+    // iterative DFS: (node, expanded?), sized for a unit's handful of inputs so that it does not grow
+    // step by step
+    let mut stack: Vec<(NodeId, bool)> = Vec::with_capacity(8 * chosen.len() + 1);
+    stack.push((root, false));
     while let Some((node, expanded)) = stack.pop() {
         let Some(&u) = chosen.get(&node) else {
             continue;
