@@ -1,15 +1,17 @@
 //! Tables the planner derives once from a knowledge base: nodes per label, state frequencies per dish
 //! class, the motion most used to reach each state, the utensil most used with each motion.
 
+use super::output::plan_node;
 use super::states::{category, is_food_state, Category};
 use crate::kb::KnowledgeBase;
 use crate::memo::Memo;
 use crate::model::NodeId;
+use crate::plan::PlanNode;
 use crate::taxonomy::is_utensil;
 use rustc_hash::FxHashMap as HashMap;
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// Built once per knowledge base (`PlannerIndex::new`) and passed to every `plan` call.
 #[derive(Clone, Debug, Default)]
@@ -51,6 +53,9 @@ pub struct PlannerIndex {
     made_in: Vec<Vec<u32>>,
     /// Per (dish class, label, state), the label's nodes ranked for a case-4 branch (`modify::pick_nodes`).
     pub(crate) picks: Memo<(Option<u32>, String, String), Picks, 4096>,
+    /// Each node as a plan shows it, made the first time a plan has it unchanged: plans share these
+    /// rather than each making its own (most of a plan's nodes are the knowledge base's).
+    plan_nodes: Vec<OnceLock<Arc<PlanNode>>>,
 }
 
 /// Knowledge-base nodes ranked for a case-4 branch, each flagged when it is in the wanted state.
@@ -343,6 +348,18 @@ impl PlannerIndex {
             subgraph_ids,
             unit_sources,
             picks: Memo::default(),
+            plan_nodes: std::iter::repeat_with(OnceLock::new)
+                .take(kb.nodes.len())
+                .collect(),
+        }
+    }
+
+    /// Node `n` as a plan shows it.
+    pub(crate) fn plan_node(&self, kb: &KnowledgeBase, n: NodeId) -> Arc<PlanNode> {
+        let made = || Arc::new(plan_node(&kb.nodes[n]));
+        match self.plan_nodes.get(n) {
+            Some(cell) => Arc::clone(cell.get_or_init(made)),
+            None => made(),
         }
     }
 

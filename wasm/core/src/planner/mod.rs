@@ -79,7 +79,7 @@ pub fn plan(
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
     let (values, order) = tree.normalize();
-    let scheduled = schedule::schedule(&mut tree, &values, order);
+    let scheduled = schedule::schedule(kb, index, &mut tree, &values, order);
     if request.modify {
         schedule::confirm_planned(&tree, &scheduled.order, &mut outcomes);
     }

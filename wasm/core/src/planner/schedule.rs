@@ -8,10 +8,13 @@
 //! is dropped. Duplicated units and units whose products nobody uses are dropped.
 
 use super::check::available_at_start;
+use super::index::PlannerIndex;
 use super::output::plan_node;
-use super::tree::{TUnitId, Tree};
+use super::tree::{Slot, TUnitId, Tree};
+use crate::kb::KnowledgeBase;
 use crate::plan::{IngredientOutcome, PlanNode, Status};
 use rustc_hash::FxHashSet as HashSet;
+use std::borrow::Cow;
 use std::collections::BinaryHeap;
 use std::ops::Range;
 use std::sync::Arc;
@@ -36,7 +39,12 @@ pub(crate) struct Schedule {
 /// here: equal as plan nodes (states and contents as sets) is equal as tree nodes, whose states are
 /// sorted and unique. Values are numbered by first slot, from 1: 0 is every slot no live unit uses
 /// (never looked at).
-fn plan_nodes(tree: &Tree, value: &[usize]) -> (Vec<Option<Arc<PlanNode>>>, Values) {
+fn plan_nodes(
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    tree: &Tree,
+    value: &[usize],
+) -> (Vec<Option<Arc<PlanNode>>>, Values) {
     let mut nodes = vec![None; tree.slots.len()];
     let mut vals = Values {
         of_slot: vec![0; tree.slots.len()],
@@ -45,7 +53,7 @@ fn plan_nodes(tree: &Tree, value: &[usize]) -> (Vec<Option<Arc<PlanNode>>>, Valu
     let mut of_value: Vec<Option<(Arc<PlanNode>, Value)>> = vec![None; tree.slots.len()];
     for x in tree.live_slots() {
         let (p, v) = of_value[value[x]].get_or_insert_with(|| {
-            let p = Arc::new(plan_node(&tree.slots[x].node));
+            let p = plan_node_of(kb, index, &tree.slots[x]);
             vals.start.push(available_at_start(&p));
             (p, vals.start.len() - 1)
         });
@@ -53,6 +61,17 @@ fn plan_nodes(tree: &Tree, value: &[usize]) -> (Vec<Option<Arc<PlanNode>>>, Valu
         vals.of_slot[x] = *v;
     }
     (nodes, vals)
+}
+
+/// The slot's node as the plan shows it: a knowledge-base node the tree left as it is, shared with the
+/// other plans that have it (`PlannerIndex::plan_node`).
+fn plan_node_of(kb: &KnowledgeBase, index: &PlannerIndex, slot: &Slot) -> Arc<PlanNode> {
+    match (&slot.node, slot.kb) {
+        (Cow::Borrowed(node), Some(n)) if std::ptr::eq(*node, &kb.nodes[n]) => {
+            index.plan_node(kb, n)
+        }
+        _ => Arc::new(plan_node(&slot.node)),
+    }
 }
 
 /// Per unit: its input values (with repeats, sorted), output values (sorted) and the values it makes
@@ -115,8 +134,14 @@ fn push_sorted(buf: &mut Vec<Value>, values: impl Iterator<Item = Value>) -> Ran
 /// the order alone cannot (see the module comment). Returns the order; dropped units are marked dead.
 /// `value` and `order`: the slots' values and the tree's order from `Tree::normalize` (nothing has
 /// changed since).
-pub(crate) fn schedule(tree: &mut Tree, value: &[usize], order: Vec<TUnitId>) -> Schedule {
-    let (nodes, mut vals) = plan_nodes(tree, value);
+pub(crate) fn schedule(
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    tree: &mut Tree,
+    value: &[usize],
+    order: Vec<TUnitId>,
+) -> Schedule {
+    let (nodes, mut vals) = plan_nodes(kb, index, tree, value);
     let goal = vals.of_slot[tree.goal];
     // the finished dish is never in the kitchen at the start, whatever its states say
     vals.start[goal] = false;
