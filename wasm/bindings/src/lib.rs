@@ -155,7 +155,7 @@ impl Planner {
         // a call is never re-entered (JS is single-threaded and nothing here calls back into JS)
         let mut text = self.text.borrow_mut();
         text.clear();
-        serde_json::to_writer(&mut *text, &plan).map_err(|e| cannot_serialise(&e))?;
+        foon_core::write_plan_json(&plan, &mut text);
         let json = std::str::from_utf8(&text).map_err(|e| cannot_serialise(&e))?;
         Ok(JsString::from(json))
     }

@@ -3,7 +3,7 @@
 //! `cargo run --release --example plan_timing -- [rounds]` (`FOON_DIR` for another FOON folder); under
 //! `perf record` or `valgrind --tool=callgrind` for a profile.
 
-use foon_core::{plan, EmbeddingSimilarity, PlanRequest, PlannerIndex, Query};
+use foon_core::{plan, write_plan_json, EmbeddingSimilarity, PlanRequest, PlannerIndex, Query};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -58,11 +58,17 @@ fn main() {
     );
     let queries = dev_queries(&shared.join("recipes/dev"));
     let mut times = Vec::new();
+    let mut text = Vec::new();
     for _ in 0..rounds {
         for q in &queries {
             let started = Instant::now();
             let p = plan(&kb, &index, &sim, &PlanRequest::new(q.clone()));
-            let json = p.map(|p| serde_json::to_string(&p).unwrap());
+            // as the WASM layer writes it: into one buffer kept from plan to plan
+            let json = p.map(|p| {
+                text.clear();
+                write_plan_json(&p, &mut text);
+                text.len()
+            });
             times.push(started.elapsed().as_secs_f64() * 1e3);
             std::hint::black_box(json.ok());
         }

@@ -1,0 +1,276 @@
+//! The plan as compact JSON, written directly: byte for byte what `serde_json` writes for the serde
+//! derives of `plan.rs`, which stay the definition of the format (a test holds the two equal on
+//! every dev plan and on texts that need escaping). A plan is about 1,200 short texts and 17 kB;
+//! through serde, every key and text was scanned byte by byte for escapes, and writing took twice
+//! as long.
+
+use crate::plan::{
+    Alternative, DishClassRef, GoalInfo, IngredientOutcome, Match, Origin, Plan, PlanNode,
+    PlanUnit, ProgressLine, ProgressState, Query, QueryIngredient, Status,
+};
+use smol_str::SmolStr;
+use std::sync::Arc;
+
+/// Writes `plan` as compact JSON at the end of `out`.
+pub fn write_plan_json(plan: &Plan, out: &mut Vec<u8>) {
+    // the JSON is a little longer than the texts: one reservation for most plans
+    out.reserve(16 * 1024);
+    plan.write(out);
+}
+
+/// A value as JSON.
+trait Json {
+    fn write(&self, out: &mut Vec<u8>);
+}
+
+/// An object's fields, comma-separated. Each key comes quoted, with its colon (`key!`): the plan's
+/// field names are plain ASCII and need no escape.
+struct Object<'a> {
+    out: &'a mut Vec<u8>,
+    first: bool,
+}
+
+impl<'a> Object<'a> {
+    fn begin(out: &'a mut Vec<u8>) -> Object<'a> {
+        out.push(b'{');
+        Object { out, first: true }
+    }
+
+    fn field(&mut self, key: &[u8], value: &(impl Json + ?Sized)) -> &mut Self {
+        if !self.first {
+            self.out.push(b',');
+        }
+        self.first = false;
+        self.out.extend_from_slice(key);
+        value.write(self.out);
+        self
+    }
+
+    fn end(&mut self) {
+        self.out.push(b'}');
+    }
+}
+
+/// `"name":`, as `Object::field` takes a key.
+macro_rules! key {
+    ($name:literal) => {
+        concat!("\"", $name, "\":").as_bytes()
+    };
+}
+
+/// Whether JSON needs the byte escaped: a quote, a backslash, a control character.
+fn escaped(b: u8) -> bool {
+    b < 0x20 || b == b'"' || b == b'\\'
+}
+
+impl Json for str {
+    fn write(&self, out: &mut Vec<u8>) {
+        let bytes = self.as_bytes();
+        // nearly every text needs no escape: one pass over all of it (no early exit, so that the
+        // compiler compares many bytes at once), then one copy
+        if !bytes.iter().fold(false, |any, &b| any | escaped(b)) {
+            out.reserve(bytes.len() + 2);
+            out.push(b'"');
+            out.extend_from_slice(bytes);
+            out.push(b'"');
+            return;
+        }
+        out.push(b'"');
+        let mut run = 0;
+        for (i, &b) in bytes.iter().enumerate() {
+            let escape: &[u8] = match b {
+                b'"' => b"\\\"",
+                b'\\' => b"\\\\",
+                b'\n' => b"\\n",
+                b'\r' => b"\\r",
+                b'\t' => b"\\t",
+                0x08 => b"\\b",
+                0x0c => b"\\f",
+                0..=0x1f => b"\\u00",
+                _ => continue,
+            };
+            out.extend_from_slice(&bytes[run..i]);
+            out.extend_from_slice(escape);
+            if escape == b"\\u00" {
+                const HEX: &[u8; 16] = b"0123456789abcdef";
+                out.extend_from_slice(&[HEX[usize::from(b >> 4)], HEX[usize::from(b & 15)]]);
+            }
+            run = i + 1;
+        }
+        out.extend_from_slice(&bytes[run..]);
+        out.push(b'"');
+    }
+}
+
+impl Json for String {
+    fn write(&self, out: &mut Vec<u8>) {
+        self.as_str().write(out);
+    }
+}
+
+impl Json for SmolStr {
+    fn write(&self, out: &mut Vec<u8>) {
+        self.as_str().write(out);
+    }
+}
+
+impl Json for bool {
+    fn write(&self, out: &mut Vec<u8>) {
+        out.extend_from_slice(if *self { b"true" } else { b"false" });
+    }
+}
+
+/// Numbers as serde_json writes them (floats have more than one faithful spelling).
+macro_rules! number {
+    ($($t:ty),*) => {$(
+        impl Json for $t {
+            fn write(&self, out: &mut Vec<u8>) {
+                // writing a number into a Vec cannot fail
+                let _ = serde_json::to_writer(&mut *out, self);
+            }
+        }
+    )*};
+}
+number!(u8, u32, f32);
+
+impl<T: Json> Json for Option<T> {
+    fn write(&self, out: &mut Vec<u8>) {
+        match self {
+            Some(x) => x.write(out),
+            None => out.extend_from_slice(b"null"),
+        }
+    }
+}
+
+impl<T: Json + ?Sized> Json for Arc<T> {
+    fn write(&self, out: &mut Vec<u8>) {
+        (**self).write(out);
+    }
+}
+
+impl<T: Json> Json for [T] {
+    fn write(&self, out: &mut Vec<u8>) {
+        out.push(b'[');
+        for (i, x) in self.iter().enumerate() {
+            if i > 0 {
+                out.push(b',');
+            }
+            x.write(out);
+        }
+        out.push(b']');
+    }
+}
+
+impl<T: Json> Json for Vec<T> {
+    fn write(&self, out: &mut Vec<u8>) {
+        self.as_slice().write(out);
+    }
+}
+
+/// Unit enums by their serde name (`snake_case`).
+macro_rules! name {
+    ($t:ty { $($v:ident => $s:literal),* }) => {
+        impl Json for $t {
+            fn write(&self, out: &mut Vec<u8>) {
+                let name = match self {
+                    $(<$t>::$v => concat!("\"", $s, "\""),)*
+                };
+                out.extend_from_slice(name.as_bytes());
+            }
+        }
+    };
+}
+name!(Origin {
+    Reference => "reference",
+    Renamed => "renamed",
+    Grafted => "grafted",
+    Copied => "copied",
+    Attached => "attached"
+});
+name!(Status { Planned => "planned", Unplannable => "unplannable" });
+
+/// Structs field by field, in declaration order and with their serde names.
+macro_rules! fields {
+    ($t:ty { $($key:literal => $f:ident),* }) => {
+        impl Json for $t {
+            fn write(&self, out: &mut Vec<u8>) {
+                Object::begin(out) $(.field(key!($key), &self.$f))* .end();
+            }
+        }
+    };
+}
+fields!(QueryIngredient { "object" => object, "state" => state });
+fields!(DishClassRef { "index" => index, "name" => name });
+fields!(GoalInfo {
+    "label" => label,
+    "states" => states,
+    "ingredients" => ingredients,
+    "subgraph" => subgraph,
+    "score" => score,
+    "dish_class" => dish_class
+});
+fields!(PlanNode {
+    "label" => label,
+    "states" => states,
+    "ingredients" => ingredients,
+    "container" => container
+});
+fields!(PlanUnit {
+    "inputs" => inputs,
+    "motion" => motion,
+    "outputs" => outputs,
+    "origin" => origin,
+    "sources" => sources
+});
+fields!(Match { "label" => label, "state" => state, "similarity" => similarity });
+fields!(Alternative { "label" => label, "similarity" => similarity });
+fields!(ProgressState { "physical_state" => physical_state, "location" => location });
+fields!(ProgressLine {
+    "ingredient" => ingredient,
+    "state" => state,
+    "motion" => motion,
+    "end_product" => end_product
+});
+fields!(Plan {
+    "format_version" => format_version,
+    "query" => query,
+    "dish_class" => dish_class,
+    "notes" => notes,
+    "modified" => modified,
+    "goal" => goal,
+    "units" => units,
+    "ingredients" => ingredients,
+    "removed" => removed,
+    "progress_lines" => progress_lines,
+    "steps" => steps
+});
+
+impl Json for Query {
+    fn write(&self, out: &mut Vec<u8>) {
+        let mut o = Object::begin(out);
+        if let Some(id) = &self.id {
+            o.field(key!("id"), id);
+        }
+        o.field(key!("type"), &self.dish_type)
+            .field(key!("ingredients"), &self.ingredients)
+            .end();
+    }
+}
+
+impl Json for IngredientOutcome {
+    fn write(&self, out: &mut Vec<u8>) {
+        let mut o = Object::begin(out);
+        o.field(key!("object"), &self.object)
+            .field(key!("state"), &self.state)
+            .field(key!("case"), &self.case)
+            .field(key!("match"), &self.matched)
+            .field(key!("alternatives"), &self.alternatives)
+            .field(key!("low_confidence"), &self.low_confidence)
+            .field(key!("overridden"), &self.overridden)
+            .field(key!("status"), &self.status);
+        if let Some(reason) = &self.reason {
+            o.field(key!("reason"), reason);
+        }
+        o.end();
+    }
+}
