@@ -464,14 +464,24 @@ impl<'kb> Tree<'kb> {
             .filter(|(_, n)| *n > 0)
             .collect();
         let longest = with_lists.iter().map(|x| x.1).max().unwrap_or(0);
-        let mut work: Vec<SlotId> = with_lists
+        // each slot to visit goes with where in `order` the units taking it can be: past its maker when
+        // that is its designated producer (an execution order puts producers first), else anywhere
+        let after = |s: SlotId, maker: TUnitId, at: usize| {
+            if self.producer[s] == Some(maker) {
+                at + 1
+            } else {
+                0
+            }
+        };
+        let at = order.iter().position(|&v| v == unit);
+        let mut work: Vec<(SlotId, usize)> = with_lists
             .into_iter()
             .filter(|x| x.1 == longest)
-            .map(|x| x.0)
+            .map(|x| (x.0, at.map_or(0, |at| after(x.0, unit, at))))
             .collect();
         // a handful of slots: a list is cheaper than a hash set
         let mut seen: Vec<SlotId> = Vec::with_capacity(8);
-        while let Some(s) = work.pop() {
+        while let Some((s, from)) = work.pop() {
             if seen.contains(&s) {
                 continue;
             }
@@ -481,14 +491,17 @@ impl<'kb> Tree<'kb> {
                 continue;
             }
             // the nodes taking over its contents, judged before the edit (it changes only `s`)
-            for v in self.consumers(s, order) {
+            for (at, &v) in order.iter().enumerate().skip(from) {
+                if !self.units[v].inputs.iter().any(|i| i.0 == s) {
+                    continue;
+                }
                 for &(o, _) in &self.units[v].outputs {
                     let theirs = &self.slots[o].node;
                     // the contents compared last: the dearest test, and only when it decides
                     let took_over = || node.contents().all(|x| theirs.contents().any(|c| c == x));
                     let same_vessel = theirs.label == node.label;
                     if o != s && theirs.holds_something() && (same_vessel || took_over()) {
-                        work.push(o);
+                        work.push((o, after(o, v, at)));
                     }
                 }
             }
