@@ -179,12 +179,9 @@ impl<'kb> Tree<'kb> {
         n: NodeId,
         slot_of: &mut HashMap<NodeId, SlotId>,
     ) -> SlotId {
-        if let Some(&s) = slot_of.get(&n) {
-            return s;
-        }
-        let s = self.new_slot(Cow::Borrowed(&kb.nodes[n]), Some(n));
-        slot_of.insert(n, s);
-        s
+        *slot_of
+            .entry(n)
+            .or_insert_with(|| self.new_slot(Cow::Borrowed(&kb.nodes[n]), Some(n)))
     }
 
     /// Adds retrieved units (all of `r.units`, in order); `slot_of` maps knowledge-base nodes to slots
