@@ -683,7 +683,7 @@ fn restate<'kb>(
         .collect();
     let new_node = ObjectNode::new(o, vec![State::plain(s)]);
     let consumers: Vec<TUnitId> = tree.consumers(leaf, &order).collect();
-    let new_slot = tree.add_slot(new_node);
+    let new_slot = tree.add_slot(Cow::Owned(new_node));
     let mut inputs = vec![(leaf, true)];
     if let Some(t) = ctx.index.utensil_for(&motion) {
         inputs.push((utensil_slot(ctx.kb, tree, t), false));
@@ -704,7 +704,7 @@ fn restate<'kb>(
 }
 
 /// A slot for a utensil node: the tree's own when it is a starting item there, else a new one.
-fn utensil_slot(kb: &KnowledgeBase, tree: &mut Tree, n: NodeId) -> SlotId {
+fn utensil_slot<'kb>(kb: &'kb KnowledgeBase, tree: &mut Tree<'kb>, n: NodeId) -> SlotId {
     let node = &kb.nodes[n];
     if let Some(x) = tree
         .live_slots()
@@ -712,7 +712,7 @@ fn utensil_slot(kb: &KnowledgeBase, tree: &mut Tree, n: NodeId) -> SlotId {
     {
         return x;
     }
-    tree.add_slot(node.clone())
+    tree.add_slot(Cow::Borrowed(node))
 }
 
 /// Case 2 with the equivalent also requested: copies the branch that prepares `eq` for `o` and feeds the
@@ -767,7 +767,7 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
         if renamed.label == eq {
             renamed.label = o.to_string();
         }
-        let c = tree.add_slot(renamed);
+        let c = tree.add_slot(Cow::Owned(renamed));
         copy_of.insert(s, c);
         c
     };
@@ -976,7 +976,7 @@ fn add_branch<'kb>(
     let Some((n, in_state, r)) = picked else {
         // FOON only makes it together with other ingredients (a prepared product such as taco
         // seasoning, whose recipe would bring another dish along): it is bought ready
-        let bare = tree.add_slot(ObjectNode::new(eq, Vec::new()));
+        let bare = tree.add_slot(Cow::Owned(ObjectNode::new(eq, Vec::new())));
         let _ = write!(
             how,
             "'{eq}' taken as bought (FOON makes it only together with other ingredients)"
@@ -991,7 +991,7 @@ fn add_branch<'kb>(
         tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
         (r.units.len(), slot_of.get(&n).copied())
     };
-    let last = made.unwrap_or_else(|| tree.add_slot(ctx.kb.nodes[n].clone()));
+    let last = made.unwrap_or_else(|| tree.add_slot(Cow::Borrowed(&ctx.kb.nodes[n])));
     let _ = write!(how, "'{}' taken from FOON", ctx.kb.nodes[n]);
     if added > 0 {
         let _ = write!(how, " with {added} unit(s) making it");
@@ -1040,7 +1040,7 @@ fn finish_branch<'kb>(
     if !in_state && !c.is_starting() && c != Category::Other {
         if let Some(motion) = ctx.index.motion_for(s) {
             let node = ObjectNode::new(eq, vec![State::plain(s)]);
-            let x = tree.add_slot(node);
+            let x = tree.add_slot(Cow::Owned(node));
             let mut inputs = vec![(last, true)];
             if let Some(t) = ctx.index.utensil_for(&motion) {
                 inputs.push((utensil_slot(ctx.kb, tree, t), false));

@@ -265,8 +265,10 @@ impl<'kb> Tree<'kb> {
         id
     }
 
-    pub fn add_slot(&mut self, node: ObjectNode) -> SlotId {
-        self.new_slot(Cow::Owned(node), None)
+    /// A slot for a node the planner made, or one it takes from the knowledge base as it is (borrowed
+    /// until the tree changes it, not copied).
+    pub fn add_slot(&mut self, node: Cow<'kb, ObjectNode>) -> SlotId {
+        self.new_slot(node, None)
     }
 
     pub fn produced(&self, s: SlotId) -> bool {
