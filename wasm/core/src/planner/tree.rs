@@ -402,6 +402,8 @@ impl<'kb> Tree<'kb> {
             .map(|s| self.slots[s].node.label.as_str())
             .filter(|&l| l != goal)
             .collect();
+        // an ingredient's slots often follow each other: fewer names to sort
+        labels.dedup();
         labels.sort_unstable();
         labels.dedup();
         labels
