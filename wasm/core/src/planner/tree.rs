@@ -285,14 +285,14 @@ impl<'kb> Tree<'kb> {
     pub fn order(&self) -> Vec<TUnitId> {
         // sized once (the tree's units and slots bound them): order runs many times per plan
         let mut order = Vec::with_capacity(self.units.len());
-        // dense ids: flags by index are cheaper than hashing on this hot path
-        let mut done = vec![false; self.units.len()];
-        let mut seen = vec![false; self.slots.len()];
+        // dense ids: flags by index are cheaper than hashing on this hot path (units done, then slots
+        // seen, in one table)
+        let mut marks = vec![false; self.units.len() + self.slots.len()];
+        let (done, seen) = marks.split_at_mut(self.units.len());
         // deep enough for most trees, and small: a request of a kilobyte or more makes the allocator
         // sweep its free lists
         let mut stack: Vec<(SlotId, bool)> = Vec::with_capacity(self.units.len() + 8);
         stack.push((self.goal, false));
-        let mut inputs: Vec<SlotId> = Vec::with_capacity(16);
         while let Some((slot, expanded)) = stack.pop() {
             let Some(u) = self.producer.get(slot).copied().flatten() else {
                 continue;
@@ -313,18 +313,19 @@ impl<'kb> Tree<'kb> {
             seen[slot] = true;
             stack.push((slot, true));
             // only the inputs a live unit makes, not yet visited, lead anywhere: the others are
-            // neither sorted nor stacked (most units then have one or none to sort)
-            inputs.clear();
-            inputs.extend(
+            // neither sorted nor stacked (most units then have one or none to sort). Sorted where
+            // they are stacked, last first; an input listed twice is passed over once visited.
+            let first = stack.len();
+            stack.extend(
                 self.units[u]
                     .inputs
                     .iter()
-                    .map(|i| i.0)
-                    .filter(|&s| !seen[s] && self.produced(s)),
+                    .filter(|&&(s, _)| !seen[s] && self.produced(s))
+                    .map(|&(s, _)| (s, false)),
             );
-            inputs.sort_by(|a, b| self.slots[*a].node.cmp(&self.slots[*b].node).then(a.cmp(b)));
-            inputs.dedup();
-            stack.extend(inputs.iter().rev().map(|&s| (s, false)));
+            stack[first..].sort_by(|(a, _), (b, _)| {
+                (&self.slots[*b].node, b).cmp(&(&self.slots[*a].node, a))
+            });
         }
         order
     }
