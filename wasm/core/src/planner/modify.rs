@@ -707,7 +707,8 @@ fn restate<'kb>(
 fn utensil_slot<'kb>(kb: &'kb KnowledgeBase, tree: &mut Tree<'kb>, n: NodeId) -> SlotId {
     let node = &kb.nodes[n];
     if let Some(x) = tree
-        .live_slots()
+        .slots_with_label(&node.label)
+        .into_iter()
         .find(|&x| *tree.slots[x].node == *node && !tree.produced(x))
     {
         return x;
