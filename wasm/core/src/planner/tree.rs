@@ -416,10 +416,22 @@ impl<'kb> Tree<'kb> {
         s: SlotId,
         order: &'a [TUnitId],
     ) -> impl Iterator<Item = TUnitId> + 'a {
+        self.consumers_from(s, order, 0).map(|(_, u)| u)
+    }
+
+    /// `consumers` from position `from` of the order on, with their positions.
+    fn consumers_from<'a>(
+        &'a self,
+        s: SlotId,
+        order: &'a [TUnitId],
+        from: usize,
+    ) -> impl Iterator<Item = (usize, TUnitId)> + 'a {
         order
             .iter()
             .copied()
-            .filter(move |&u| self.units[u].inputs.iter().any(|i| i.0 == s))
+            .enumerate()
+            .skip(from)
+            .filter(move |&(_, u)| self.units[u].inputs.iter().any(|i| i.0 == s))
     }
 
     /// Renames an object in the given slots, in their labels and their lists of contents.
@@ -493,10 +505,7 @@ impl<'kb> Tree<'kb> {
                 continue;
             }
             // the nodes taking over its contents, judged before the edit (it changes only `s`)
-            for (at, &v) in order.iter().enumerate().skip(from) {
-                if !self.units[v].inputs.iter().any(|i| i.0 == s) {
-                    continue;
-                }
+            for (at, v) in self.consumers_from(s, order, from) {
                 for &(o, _) in &self.units[v].outputs {
                     let theirs = &self.slots[o].node;
                     // the contents compared last: the dearest test, and only when it decides
