@@ -189,12 +189,14 @@ name!(Origin {
 });
 name!(Status { Planned => "planned", Unplannable => "unplannable" });
 
-/// Structs field by field, in declaration order and with their serde names.
+/// Structs field by field, in declaration order and with their serde names. The struct is taken apart
+/// without `..`, so a field added to `plan.rs` and not here does not compile.
 macro_rules! fields {
-    ($t:ty { $($key:literal => $f:ident),* }) => {
+    ($t:ident { $($key:literal => $f:ident),* }) => {
         impl Json for $t {
             fn write(&self, out: &mut Vec<u8>) {
-                Object::begin(out) $(.field(key!($key), &self.$f))* .end();
+                let $t { $($f),* } = self;
+                Object::begin(out) $(.field(key!($key), $f))* .end();
             }
         }
     };
@@ -245,30 +247,47 @@ fields!(Plan {
     "steps" => steps
 });
 
+// the two with a field left out when empty (`skip_serializing_if`), taken apart like the others
 impl Json for Query {
     fn write(&self, out: &mut Vec<u8>) {
+        let Query {
+            id,
+            dish_type,
+            ingredients,
+        } = self;
         let mut o = Object::begin(out);
-        if let Some(id) = &self.id {
+        if let Some(id) = id {
             o.field(key!("id"), id);
         }
-        o.field(key!("type"), &self.dish_type)
-            .field(key!("ingredients"), &self.ingredients)
+        o.field(key!("type"), dish_type)
+            .field(key!("ingredients"), ingredients)
             .end();
     }
 }
 
 impl Json for IngredientOutcome {
     fn write(&self, out: &mut Vec<u8>) {
+        let IngredientOutcome {
+            object,
+            state,
+            case,
+            matched,
+            alternatives,
+            low_confidence,
+            overridden,
+            status,
+            reason,
+        } = self;
         let mut o = Object::begin(out);
-        o.field(key!("object"), &self.object)
-            .field(key!("state"), &self.state)
-            .field(key!("case"), &self.case)
-            .field(key!("match"), &self.matched)
-            .field(key!("alternatives"), &self.alternatives)
-            .field(key!("low_confidence"), &self.low_confidence)
-            .field(key!("overridden"), &self.overridden)
-            .field(key!("status"), &self.status);
-        if let Some(reason) = &self.reason {
+        o.field(key!("object"), object)
+            .field(key!("state"), state)
+            .field(key!("case"), case)
+            .field(key!("match"), matched)
+            .field(key!("alternatives"), alternatives)
+            .field(key!("low_confidence"), low_confidence)
+            .field(key!("overridden"), overridden)
+            .field(key!("status"), status);
+        if let Some(reason) = reason {
             o.field(key!("reason"), reason);
         }
         o.end();
