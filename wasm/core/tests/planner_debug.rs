@@ -4,7 +4,7 @@
 //! JSON lines (`{"variant","plan"}`). `PLAN_SIM=exact` uses exact matching instead of the embedding table.
 
 mod common;
-use common::{dev_queries, embeddings, foon111, load};
+use common::{dev_plans, dev_queries, embeddings, foon111, load};
 use foon_core::planner::violations;
 use foon_core::similarity::{ExactMatch, Similarity};
 use foon_core::{plan, PlanRequest, PlannerIndex, Query};
@@ -21,21 +21,13 @@ fn dump_dev_plans() {
     let Some(out) = std::env::var_os("PLAN_DUMP") else {
         return;
     };
-    let kb = load(&foon111("plain"));
-    let index = PlannerIndex::new(&kb);
-    let sim = similarity();
     let mut lines = String::new();
-    for (_, q) in dev_queries() {
-        for modify in [true, false] {
-            let mut request = PlanRequest::new(q.clone());
-            request.modify = modify;
-            let p = plan(&kb, &index, sim.as_ref(), &request).unwrap();
-            let variant = if modify { "modified" } else { "unmodified" };
-            lines.push_str(&format!(
-                "{{\"variant\":\"{variant}\",\"plan\":{}}}\n",
-                serde_json::to_string(&p).unwrap()
-            ));
-        }
+    for (modify, p) in dev_plans(similarity().as_ref()) {
+        let variant = if modify { "modified" } else { "unmodified" };
+        lines.push_str(&format!(
+            "{{\"variant\":\"{variant}\",\"plan\":{}}}\n",
+            serde_json::to_string(&p).unwrap()
+        ));
     }
     std::fs::write(out, lines).unwrap();
 }

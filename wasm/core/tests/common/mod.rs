@@ -81,3 +81,20 @@ pub fn dev_queries() -> Vec<(String, foon_core::Query)> {
 pub fn starter_kb_files() -> Vec<(String, Vec<u8>)> {
     read_dir(&PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../public/kb/starter"))
 }
+
+/// Every dev query planned on FOON-111 (plain) with and without modification, in query order:
+/// (modified?, plan).
+pub fn dev_plans(sim: &dyn foon_core::similarity::Similarity) -> Vec<(bool, foon_core::Plan)> {
+    let kb = load(&foon111("plain"));
+    let index = foon_core::PlannerIndex::new(&kb);
+    let mut plans = Vec::new();
+    for (_, q) in dev_queries() {
+        for modify in [true, false] {
+            let mut request = foon_core::PlanRequest::new(q.clone());
+            request.modify = modify;
+            let p = foon_core::plan(&kb, &index, sim, &request).unwrap_or_else(|e| panic!("{e}"));
+            plans.push((modify, p));
+        }
+    }
+    plans
+}
