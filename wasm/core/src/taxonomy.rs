@@ -13,6 +13,8 @@ const UTENSILS_TXT: &str = include_str!("../data/utensils.txt");
 pub struct DishClass {
     pub index: u32,
     pub name: String,
+    /// `name` in normal form, as dish types are compared with it.
+    pub normal_name: String,
     pub keywords: Vec<String>,
 }
 
@@ -40,6 +42,7 @@ pub fn dish_classes() -> &'static [DishClass] {
                     .collect();
                 Some(DishClass {
                     index,
+                    normal_name: normalize_label(&name),
                     name,
                     keywords,
                 })
@@ -55,18 +58,6 @@ pub fn dish_class_name(index: u32) -> Option<&'static str> {
         .map(|c| c.name.as_str())
 }
 
-/// The class names in normal form, in index order (worked out once: every plan compares its dish
-/// type with them).
-fn normal_class_names() -> &'static [String] {
-    static NAMES: OnceLock<Vec<String>> = OnceLock::new();
-    NAMES.get_or_init(|| {
-        dish_classes()
-            .iter()
-            .map(|c| normalize_label(&c.name))
-            .collect()
-    })
-}
-
 /// Maps a dish type or a dish title ("drinks", "Greek salads", "chicken noodle soup") to a class.
 /// An exact class name or keyword wins; otherwise the keyword found last in the title (the head noun
 /// of "chicken noodle soup" is "soup"), longest keyword first at the same place.
@@ -76,8 +67,8 @@ pub fn dish_class_of(text: &str) -> Option<u32> {
         return None;
     }
     let classes = dish_classes();
-    if let Some(at) = normal_class_names().iter().position(|n| *n == wanted) {
-        return Some(classes[at].index);
+    if let Some(c) = classes.iter().find(|c| c.normal_name == wanted) {
+        return Some(c.index);
     }
     if let Some(c) = classes.iter().find(|c| c.keywords.contains(&wanted)) {
         return Some(c.index);
