@@ -6,7 +6,6 @@
 use crate::plan::{Plan, PlanNode, PlanUnit};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
-use std::borrow::Cow;
 
 /// States of things a kitchen has before cooking starts (`START_STATES` of the evaluator).
 pub const START_STATES: &[&str] = &[
@@ -22,32 +21,20 @@ pub const START_STATES: &[&str] = &[
 ];
 
 /// Identity of a node: label, states and contents as sets, container (borrowed from the node).
-pub(crate) type NodeKey<'a> = (
-    &'a str,
-    Cow<'a, [SmolStr]>,
-    Cow<'a, [SmolStr]>,
-    Option<&'a str>,
-);
+pub(crate) type NodeKey<'a> = (&'a str, Vec<&'a str>, Vec<&'a str>, Option<&'a str>);
 
 pub(crate) fn node_key(n: &PlanNode) -> NodeKey<'_> {
+    fn sorted(list: &[SmolStr]) -> Vec<&str> {
+        let mut out: Vec<&str> = list.iter().map(SmolStr::as_str).collect();
+        out.sort_unstable();
+        out
+    }
     (
         &n.label,
         sorted(&n.states),
         sorted(&n.ingredients),
         n.container.as_deref(),
     )
-}
-
-/// The list in order: itself when it is already (as a plan node's lists nearly always are, so keying
-/// a node allocates nothing), else a sorted copy.
-fn sorted(list: &[SmolStr]) -> Cow<'_, [SmolStr]> {
-    if list.is_sorted() {
-        Cow::Borrowed(list)
-    } else {
-        let mut copy = list.to_vec();
-        copy.sort_unstable();
-        Cow::Owned(copy)
-    }
 }
 
 /// A node the kitchen has at the start even when some unit makes it again (an empty bowl, a lid put
