@@ -1,7 +1,7 @@
 //! From the modified tree to the plan: units in execution order, progress lines (section IV-A) and one
 //! plain sentence per unit.
 
-use super::modify::food_states;
+use super::states::is_food_state;
 use super::tree::{SlotId, TUnitId, Tree};
 use crate::kb::{Goal, KnowledgeBase};
 use crate::model::{ObjectNode, State, StateArg};
@@ -60,16 +60,21 @@ pub(crate) fn build(p: Parts) -> Plan {
         })
         .collect();
     let goal_node = &tree.slots[tree.goal].node;
-    let steps = order.iter().map(|&u| sentence(tree, u)).collect();
+    let mut objects = Vec::new();
+    let steps = order
+        .iter()
+        .map(|&u| sentence(tree, u, &mut objects))
+        .collect();
     let uses = Uses::new(tree, order);
     let mut progress_lines = Vec::new();
     let mut done: Vec<&str> = Vec::with_capacity(p.outcomes.len());
+    let mut seen = Vec::new();
     for o in &p.outcomes {
         if o.status != Status::Planned || done.contains(&o.object.as_str()) {
             continue;
         }
         done.push(&o.object);
-        if let Some(line) = progress_line(tree, order, &uses, &o.object) {
+        if let Some(line) = progress_line(tree, order, &uses, &o.object, &mut seen) {
             progress_lines.push(line);
         }
     }
@@ -155,17 +160,34 @@ fn location(n: &ObjectNode) -> SmolStr {
         .unwrap_or_default()
 }
 
+/// The node's food states, or its physical states when it has none (`food_states`, written as they are
+/// found: no list of them, each state looked up once).
 fn physical(n: &ObjectNode) -> SmolStr {
-    let food = food_states(n);
-    if food.is_empty() {
-        joined(n.physical_states(), ", ")
+    let mut food = SmolStrBuilder::new();
+    let mut any = false;
+    for s in n.physical_states().filter(|s| is_food_state(s)) {
+        if any {
+            food.push_str(", ");
+        }
+        food.push_str(s);
+        any = true;
+    }
+    if any {
+        food.finish()
     } else {
-        joined(food.iter().copied(), ", ")
+        joined(n.physical_states(), ", ")
     }
 }
 
 /// The ingredient's states and places from its starting node, the motions between them, and the dish.
-fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Option<ProgressLine> {
+/// `seen`: a buffer for the slots it passes through, reused from line to line.
+fn progress_line(
+    tree: &Tree,
+    order: &[TUnitId],
+    uses: &Uses,
+    label: &str,
+    seen: &mut Vec<SlotId>,
+) -> Option<ProgressLine> {
     // its first slot, and the first used of those no unit makes (one pass over the labels)
     let (mut first, mut start) = (None, None::<SlotId>);
     for &x in &uses.live {
@@ -186,7 +208,7 @@ fn progress_line(tree: &Tree, order: &[TUnitId], uses: &Uses, label: &str) -> Op
     });
     let mut motions = Vec::with_capacity(4);
     let mut at = start;
-    let mut seen: Vec<SlotId> = Vec::with_capacity(4);
+    seen.clear();
     seen.push(start);
     let mut from = 0usize;
     let mut end_product = None;
@@ -322,13 +344,14 @@ fn push_list(out: &mut String, items: &[&str]) {
     }
 }
 
-/// One plain sentence for a unit: "Slice the tomato on the cutting board."
-pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
+/// One plain sentence for a unit: "Slice the tomato on the cutting board." `objects` is a buffer reused
+/// from sentence to sentence (the sentence's objects, then its tools after them).
+fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> String {
     let unit = &tree.units[u];
     let node = |x: SlotId| &tree.slots[x].node;
     // the slot's flag rather than a lookup of its label
     let utensil = |x: SlotId| tree.slots[x].utensil;
-    let mut objects: Vec<&str> = Vec::with_capacity(unit.inputs.len());
+    objects.clear();
     fn push<'n>(objects: &mut Vec<&'n str>, l: &'n str) {
         if !objects.contains(&l) {
             objects.push(l);
@@ -336,26 +359,26 @@ pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
     }
     for &(x, m) in &unit.inputs {
         if m && !utensil(x) {
-            push(&mut objects, &node(x).label);
+            push(objects, &node(x).label);
         }
     }
     if objects.is_empty() {
         for &(x, _) in &unit.inputs {
             if !utensil(x) {
-                push(&mut objects, &node(x).label);
+                push(objects, &node(x).label);
             }
         }
     }
     if objects.is_empty() {
         for &(x, m) in &unit.inputs {
             if m {
-                push(&mut objects, &node(x).label);
+                push(objects, &node(x).label);
             }
         }
     }
     if objects.is_empty() {
         if let Some(&(x, _)) = unit.inputs.first() {
-            push(&mut objects, &node(x).label);
+            push(objects, &node(x).label);
         }
     }
     // where the moved objects end up
@@ -371,23 +394,24 @@ pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
             _ => None,
         })
     });
-    let tools: Vec<&str> = unit
-        .inputs
-        .iter()
-        .filter(|&&(x, m)| {
-            let n = node(x);
-            !m && utensil(x)
-                && n.states.is_empty()
-                && !objects.contains(&n.label.as_str())
-                && place.is_none_or(|p| p.1 != n.label)
-        })
-        .map(|&(x, _)| node(x).label.as_str())
-        .collect();
+    let moved = objects.len();
+    for &(x, m) in &unit.inputs {
+        let n = node(x);
+        if !m
+            && utensil(x)
+            && n.states.is_empty()
+            && !objects[..moved].contains(&n.label.as_str())
+            && place.is_none_or(|p| p.1 != n.label)
+        {
+            objects.push(&n.label);
+        }
+    }
+    let (objects, tools) = objects.split_at(moved);
     // sized for most sentences: one allocation
     let mut text = String::with_capacity(64);
     push_verb(&mut text, &unit.motion);
     text.push(' ');
-    push_list(&mut text, &objects);
+    push_list(&mut text, objects);
     if let Some((rel, c)) = place {
         let into = matches!(
             unit.motion.trim_end_matches('*'),
@@ -410,7 +434,7 @@ pub(crate) fn sentence(tree: &Tree, u: TUnitId) -> String {
     }
     if !tools.is_empty() {
         text.push_str(" with ");
-        push_list(&mut text, &tools);
+        push_list(&mut text, tools);
     }
     text.push('.');
     text
