@@ -159,12 +159,23 @@ impl ObjectNode {
         out
     }
 
-    /// `ingredients` without copying the names.
-    pub fn ingredient_refs(&self) -> Vec<&str> {
-        let mut out: Vec<&str> = self.contents().collect();
-        out.sort_unstable();
-        out.dedup();
-        out
+    /// How many ingredients `ingredients` lists: without making the list when the object has one
+    /// `contains` list (sorted and unique, as every list is), as nearly every object does.
+    pub fn ingredient_count(&self) -> usize {
+        let mut lists = self.states.iter().filter_map(|s| match &s.arg {
+            Some(StateArg::Ingredients(list)) if s.name == "contains" => Some(list),
+            _ => None,
+        });
+        match (lists.next(), lists.next()) {
+            (None, _) => 0,
+            (Some(list), None) => list.len(),
+            _ => {
+                let mut all: Vec<&str> = self.contents().collect();
+                all.sort_unstable();
+                all.dedup();
+                all.len()
+            }
+        }
     }
 
     pub fn has_state(&self, name: &str) -> bool {

@@ -471,13 +471,8 @@ impl<'kb> Tree<'kb> {
         let Some(u) = self.units.get(unit) else {
             return;
         };
-        let with_lists: Vec<(SlotId, usize)> = u
-            .outputs
-            .iter()
-            .map(|o| (o.0, self.slots[o.0].node.ingredient_refs().len()))
-            .filter(|(_, n)| *n > 0)
-            .collect();
-        let longest = with_lists.iter().map(|x| x.1).max().unwrap_or(0);
+        let count = |o: &(SlotId, bool)| self.slots[o.0].node.ingredient_count();
+        let longest = u.outputs.iter().map(count).max().unwrap_or(0);
         // each slot to visit goes with where in `order` the units taking it can be: past its maker when
         // that is its designated producer (an execution order puts producers first), else anywhere
         let after = |s: SlotId, maker: TUnitId, at: usize| {
@@ -488,18 +483,15 @@ impl<'kb> Tree<'kb> {
             }
         };
         let at = order.iter().position(|&v| v == unit);
-        let mut work: Vec<(SlotId, usize)> = with_lists
-            .into_iter()
-            .filter(|x| x.1 == longest)
-            .map(|x| (x.0, at.map_or(0, |at| after(x.0, unit, at))))
+        let mut work: Vec<(SlotId, usize)> = u
+            .outputs
+            .iter()
+            .filter(|o| longest > 0 && count(o) == longest)
+            .map(|o| (o.0, at.map_or(0, |at| after(o.0, unit, at))))
             .collect();
-        // a handful of slots: a list is cheaper than a hash set
-        let mut seen: Vec<SlotId> = Vec::with_capacity(8);
+        // every slot visited holds contents and lists `label` after its visit, so a slot visited again
+        // is passed over here
         while let Some((s, from)) = work.pop() {
-            if seen.contains(&s) {
-                continue;
-            }
-            seen.push(s);
             let node = &self.slots[s].node;
             if node.contents().any(|x| x == label) {
                 continue;
