@@ -397,9 +397,15 @@ struct Profile {
 impl Profile {
     fn traits(&self) -> Traits<'_> {
         Traits {
+            class: self.class(),
+            stems: &self.stems,
+        }
+    }
+
+    fn class(&self) -> Class {
+        Class {
             category: self.category,
             group: self.group,
-            stems: &self.stems,
         }
     }
 
@@ -411,11 +417,17 @@ impl Profile {
 /// What `graded` reads of a name besides its vector: from a profile, or from a candidate set's arrays.
 #[derive(Clone, Copy)]
 struct Traits<'a> {
-    category: Option<usize>,
-    group: Option<usize>,
+    class: Class,
     /// Word hashes (equal words, equal hashes; a bonus, unlike an exact match, is decided on them
     /// alone), the head noun last.
     stems: &'a [u64],
+}
+
+/// A name's category and the category's group.
+#[derive(Clone, Copy)]
+struct Class {
+    category: Option<usize>,
+    group: Option<usize>,
 }
 
 /// Substitution by food-domain word vectors and the project's food knowledge.
@@ -463,8 +475,7 @@ struct CandidateSet {
     composite: Vec<bool>,
     utensil: Vec<bool>,
     known: Vec<bool>,
-    category: Vec<Option<usize>>,
-    group: Vec<Option<usize>>,
+    class: Vec<Class>,
     /// Every candidate's `stems`, one after another; candidate i's are `stems[stem_at[i]..stem_at[i + 1]]`.
     stems: Vec<u64>,
     stem_at: Vec<u32>,
@@ -526,8 +537,7 @@ impl CandidateSet {
             composite: profiles.iter().map(|p| p.composite).collect(),
             utensil: profiles.iter().map(|p| p.utensil).collect(),
             known: profiles.iter().map(|p| p.is_known()).collect(),
-            category: profiles.iter().map(|p| p.category).collect(),
-            group: profiles.iter().map(|p| p.group).collect(),
+            class: profiles.iter().map(|p| p.class()).collect(),
             stems: profiles
                 .iter()
                 .flat_map(|p| p.stems.iter().copied())
@@ -580,6 +590,7 @@ trait Scanned {
     fn utensil(&self, i: usize) -> bool;
     fn may_match(&self, sim: &EmbeddingSimilarity, q: &Profile, i: usize) -> bool;
     fn cosine(&self, q: &Profile, i: usize) -> f32;
+    fn class(&self, i: usize) -> Class;
     fn traits(&self, i: usize) -> Traits<'_>;
 }
 
@@ -596,10 +607,12 @@ impl Scanned for CandidateSet {
     fn utensil(&self, i: usize) -> bool {
         self.utensil[i]
     }
+    fn class(&self, i: usize) -> Class {
+        self.class[i]
+    }
     fn traits(&self, i: usize) -> Traits<'_> {
         Traits {
-            category: self.category[i],
-            group: self.group[i],
+            class: self.class[i],
             stems: &self.stems[self.stem_at[i] as usize..self.stem_at[i + 1] as usize],
         }
     }
@@ -639,6 +652,9 @@ impl Scanned for [Arc<Profile>] {
     }
     fn cosine(&self, q: &Profile, i: usize) -> f32 {
         cosine_of(q, &self[i])
+    }
+    fn class(&self, i: usize) -> Class {
+        self[i].class()
     }
     fn traits(&self, i: usize) -> Traits<'_> {
         self[i].traits()
@@ -959,16 +975,8 @@ impl EmbeddingSimilarity {
     /// The score of a pair that is not exact, from the cosine of their vectors.
     fn graded(&self, q: Traits, c: Traits, cosine: f32) -> f32 {
         let o = &self.options;
-        let mut s = cosine;
-        if let (Some(a), Some(b)) = (q.category, c.category) {
-            if a == b {
-                s += o.same_category;
-            } else if q.group == c.group {
-                s += o.same_group;
-            } else {
-                s -= o.other_group;
-            }
-        }
+        // adding 0 for no category changes nothing: a cosine is never -0
+        let mut s = cosine + self.category_bonus(q.class, c.class);
         let (hq, hc) = (q.stems.last(), c.stems.last());
         if hq.is_some() && hq == hc {
             s += o.same_head;
@@ -983,14 +991,24 @@ impl EmbeddingSimilarity {
         s
     }
 
-    /// The most `graded` can add to a cosine (with a margin for rounding): a candidate whose cosine
-    /// plus this cannot reach the ranking's last place is not scored.
+    /// What `graded` adds for the categories of a pair (0 unless both have one): the largest of its
+    /// bonuses and the cheapest, so that a ranking rules many candidates out by it before it reads their
+    /// words and vectors.
+    fn category_bonus(&self, q: Class, c: Class) -> f32 {
+        let o = &self.options;
+        match (q.category, c.category) {
+            (Some(a), Some(b)) if a == b => o.same_category,
+            (Some(_), Some(_)) if q.group == c.group => o.same_group,
+            (Some(_), Some(_)) => -o.other_group,
+            _ => 0.0,
+        }
+    }
+
+    /// The most `graded` can add to a cosine: a cone whose bound plus this cannot reach the ranking's
+    /// last place is not visited.
     fn max_bonus(&self) -> f32 {
         let o = &self.options;
-        o.same_category.max(o.same_group).max(0.0)
-            + o.same_head.max(0.0)
-            + o.shared_word.max(0.0)
-            + 1e-3
+        o.same_category.max(o.same_group).max(0.0) + o.same_head.max(0.0) + o.shared_word.max(0.0)
     }
 
     /// Ranks candidates for a query; shared by `rank` and the evaluation.
@@ -1023,67 +1041,76 @@ impl EmbeddingSimilarity {
         let q = self.profile(query);
         let keep_composites = !self.options.filter_composites || q.composite;
         let max_bonus = self.max_bonus();
+        let max_words = self.options.same_head.max(0.0) + self.options.shared_word.max(0.0);
         let better = |a: &(&str, f32), b: &(&str, f32)| {
             b.1.total_cmp(&a.1).then_with(|| a.0.cmp(b.0)) == std::cmp::Ordering::Less
         };
         let mut best: Vec<(&'c str, f32)> = Vec::with_capacity(top + 1);
+        // `most`: the most a score can be (with a margin for rounding)
         let cannot_place = |best: &[(&str, f32)], most: f32| {
-            best.len() == top && best.last().is_some_and(|w| most + max_bonus < w.1)
+            best.len() == top && best.last().is_some_and(|w| most + 1e-3 < w.1)
         };
         // `may_be_exact`: false once every candidate that may be an exact match was considered (a second
-        // look at one changes nothing: it placed, or `top` exact matches outrank it)
-        let consider = |i: usize, may_be_exact: bool, best: &mut Vec<(&'c str, f32)>| {
-            let Some(cand) = candidates.get(i).map(AsRef::as_ref) else {
-                return;
-            };
-            // the hashes rule most candidates out without reading their profiles
-            let exact =
-                may_be_exact && set.may_match(self, &q, i) && self.is_exact(&q, set.profile(i));
-            if !exact
-                && (!q.is_known()
-                    || (!keep_composites && set.composite(i))
-                    || (self.options.filter_composites && set.utensil(i)))
-            {
-                return;
-            }
-            let score = if exact {
-                f32::INFINITY
-            } else {
-                let cosine = set.cosine(&q, i);
-                if cannot_place(best, cosine) {
+        // look at one changes nothing: it placed, or `top` exact matches outrank it); `most_cosine`: the
+        // most candidate i's cosine can be
+        let consider =
+            |i: usize, may_be_exact: bool, most_cosine: f32, best: &mut Vec<(&'c str, f32)>| {
+                let Some(cand) = candidates.get(i).map(AsRef::as_ref) else {
+                    return;
+                };
+                // the hashes rule most candidates out without reading their profiles
+                let exact =
+                    may_be_exact && set.may_match(self, &q, i) && self.is_exact(&q, set.profile(i));
+                if !exact
+                    && (!q.is_known()
+                        || (!keep_composites && set.composite(i))
+                        || (self.options.filter_composites && set.utensil(i)))
+                {
                     return;
                 }
-                self.graded(q.traits(), set.traits(i), cosine)
+                let score = if exact {
+                    f32::INFINITY
+                } else {
+                    // many candidates cannot place whatever their cosine and words: neither is read
+                    let most = self.category_bonus(q.class(), set.class(i)) + max_words;
+                    if cannot_place(best, most_cosine + most) {
+                        return;
+                    }
+                    let cosine = set.cosine(&q, i);
+                    if cannot_place(best, cosine + most) {
+                        return;
+                    }
+                    self.graded(q.traits(), set.traits(i), cosine)
+                };
+                let item = (cand, score);
+                if best.len() == top && best.last().is_none_or(|w| !better(&item, w)) {
+                    return;
+                }
+                if best.iter().any(|b| b.0 == cand) {
+                    return; // the same label listed twice scores the same
+                }
+                let at = best.partition_point(|b| better(b, &item));
+                best.insert(at, item);
+                best.truncate(top);
             };
-            let item = (cand, score);
-            if best.len() == top && best.last().is_none_or(|w| !better(&item, w)) {
-                return;
-            }
-            if best.iter().any(|b| b.0 == cand) {
-                return; // the same label listed twice scores the same
-            }
-            let at = best.partition_point(|b| better(b, &item));
-            best.insert(at, item);
-            best.truncate(top);
-        };
         if let Some(search) = search {
             for i in search.exact_candidates(&q) {
-                consider(i, true, &mut best);
+                consider(i, true, f32::INFINITY, &mut best);
             }
             if q.is_known() {
                 let cones = &search.cones;
                 for (most, k) in cones.bounds(q.vector.as_deref()) {
-                    if cannot_place(&best, most) {
+                    if cannot_place(&best, most + max_bonus) {
                         break; // the cones come nearest first: no later one can place either
                     }
                     for &i in cones.members(k) {
-                        consider(i as usize, false, &mut best);
+                        consider(i as usize, false, most, &mut best);
                     }
                 }
             }
         } else {
             for i in 0..set.count() {
-                consider(i, true, &mut best);
+                consider(i, true, f32::INFINITY, &mut best);
             }
         }
         best.into_iter()
