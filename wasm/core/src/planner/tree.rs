@@ -106,15 +106,26 @@ pub(crate) fn dedup_slots(uses: &mut Vec<(SlotId, bool)>) {
 }
 
 /// What a unit does, in values (see `Tree::values`): its motion's id, its inputs' values sorted, a
-/// separator, its outputs' values sorted. Units with equal keys are the same step of a plan.
-fn value_key(unit: &TUnit, motion: usize, value: &[usize]) -> Vec<usize> {
-    let mut key = Vec::with_capacity(unit.inputs.len() + unit.outputs.len() + 2);
-    key.push(motion);
-    key.extend(unit.inputs.iter().map(|i| value[i.0]));
-    key[1..].sort_unstable();
-    key.push(usize::MAX);
-    let outs = key.len();
-    key.extend(unit.outputs.iter().map(|o| value[o.0]));
+/// separator, its outputs' values sorted. Units with equal keys are the same step of a plan. Written
+/// at the start of `free`, which keeps the rest (the keys of a round share one buffer).
+fn value_key<'b>(
+    unit: &TUnit,
+    motion: usize,
+    value: &[usize],
+    free: &mut &'b mut [usize],
+) -> &'b [usize] {
+    let outs = unit.inputs.len() + 2;
+    let (key, rest) = std::mem::take(free).split_at_mut(outs + unit.outputs.len());
+    *free = rest;
+    key[0] = motion;
+    for (k, i) in key[1..].iter_mut().zip(&unit.inputs) {
+        *k = value[i.0];
+    }
+    key[1..outs - 1].sort_unstable();
+    key[outs - 1] = usize::MAX;
+    for (k, o) in key[outs..].iter_mut().zip(&unit.outputs) {
+        *k = value[o.0];
+    }
     key[outs..].sort_unstable();
     key
 }
@@ -248,20 +259,20 @@ impl<'kb> Tree<'kb> {
         outputs: Vec<(SlotId, bool)>,
         origin: Origin,
     ) -> TUnitId {
-        self.units.push(TUnit {
-            inputs,
-            motion: Cow::Owned(motion.to_string()),
-            outputs: outputs.clone(),
-            origin,
-            sources: None,
-            alive: true,
-        });
-        let id = self.units.len() - 1;
-        for (s, _) in outputs {
+        let id = self.units.len();
+        for &(s, _) in &outputs {
             if self.producer[s].is_none() {
                 self.producer[s] = Some(id);
             }
         }
+        self.units.push(TUnit {
+            inputs,
+            motion: Cow::Owned(motion.to_string()),
+            outputs,
+            origin,
+            sources: None,
+            alive: true,
+        });
         id
     }
 
@@ -539,7 +550,14 @@ impl<'kb> Tree<'kb> {
                 }
             }
             let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
-            let mut first: HashMap<Vec<usize>, TUnitId> =
+            // room for every key of the round (inputs only get fewer in it)
+            let room = order
+                .iter()
+                .map(|&u| self.units[u].inputs.len() + self.units[u].outputs.len() + 2)
+                .sum();
+            let mut keys = vec![0; room];
+            let mut free = keys.as_mut_slice();
+            let mut first: HashMap<&[usize], TUnitId> =
                 HashMap::with_capacity_and_hasher(order.len(), Default::default());
             for (pos, &u) in order.iter().enumerate() {
                 {
@@ -556,7 +574,7 @@ impl<'kb> Tree<'kb> {
                 }
                 let unit = &self.units[u];
                 let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
-                let key = value_key(unit, motion[u], &value);
+                let key = value_key(unit, motion[u], &value, &mut free);
                 if !makes_goal {
                     if let Some(&f) = first.get(&key) {
                         let theirs = self.units[f].outputs.clone();
