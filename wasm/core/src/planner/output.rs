@@ -66,7 +66,7 @@ pub(crate) fn build(p: Parts) -> Plan {
         .map(|&u| sentence(tree, u, &mut objects))
         .collect();
     let uses = Uses::new(tree, order);
-    let mut progress_lines = Vec::new();
+    let mut progress_lines = Vec::with_capacity(p.outcomes.len());
     let mut done: Vec<&str> = Vec::with_capacity(p.outcomes.len());
     let mut seen = Vec::new();
     for o in &p.outcomes {
