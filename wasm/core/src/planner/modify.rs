@@ -36,12 +36,20 @@ pub(crate) fn food_states(node: &ObjectNode) -> Vec<&str> {
         .collect()
 }
 
-fn state_text(node: &ObjectNode) -> String {
-    let food = food_states(node);
-    if food.is_empty() {
-        node.physical_states().collect::<Vec<_>>().join(", ")
+/// A node's state as a plan reports it: its food states, else its physical states, comma-separated
+/// (written inline: a state text is nearly always short).
+fn state_text(node: &ObjectNode) -> SmolStr {
+    let comma_separated = |states: &mut dyn Iterator<Item = &str>| -> SmolStr {
+        states.flat_map(|s| [", ", s]).skip(1).collect()
+    };
+    let mut food = node
+        .physical_states()
+        .filter(|s| is_food_state(s))
+        .peekable();
+    if food.peek().is_none() {
+        comma_separated(&mut node.physical_states())
     } else {
-        food.join(", ")
+        comma_separated(&mut food)
     }
 }
 
@@ -200,7 +208,7 @@ pub(crate) fn modify<'kb>(
         // the equivalent is in the tree: substitute (cases 2, 4) or keep (cases 1, 3)
         w.matched = Some(Match {
             label: eq.as_str().into(),
-            state: tree_state(tree, &slots, s).into(),
+            state: tree_state(tree, &slots, s),
             similarity: sim,
         });
         if eq != o {
@@ -268,7 +276,7 @@ pub(crate) fn modify<'kb>(
             if !lost && !slots.is_empty() {
                 // an earlier ingredient of the same name brought it: one branch serves both
                 if let Some(m) = w.matched.as_mut() {
-                    m.state = tree_state(tree, &slots, &s).into();
+                    m.state = tree_state(tree, &slots, &s);
                 }
                 settle_state(ctx, tree, &eq, o, &s, &mut restated, w);
                 continue;
@@ -283,7 +291,7 @@ pub(crate) fn modify<'kb>(
                     } else {
                         w.case = Some(4);
                         if let Some(m) = w.matched.as_mut() {
-                            m.state = state.into();
+                            m.state = state;
                         }
                         w.planned = true;
                         w.reasons.push(reason);
@@ -484,7 +492,7 @@ fn judge_unmodified(
     });
     w.matched = Some(Match {
         label: eq.into(),
-        state: state.into(),
+        state,
         similarity: sim,
     });
     w.planned = true;
@@ -496,7 +504,7 @@ fn judge_unmodified(
 
 /// The state an ingredient has in the tree, given its label's live slots (`Tree::slots_with_label`,
 /// not empty): that of its slot in the state `s` (see `best_state_slot`), else of the first.
-fn tree_state(tree: &Tree, slots: &[SlotId], s: &str) -> String {
+fn tree_state(tree: &Tree, slots: &[SlotId], s: &str) -> SmolStr {
     let slot = best_state_slot(tree, slots, s).unwrap_or(slots[0]);
     state_text(&tree.slots[slot].node)
 }
@@ -520,19 +528,16 @@ fn best_state_slot(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
         return slots.first().copied();
     }
     let mut slots = slots.iter().copied();
+    let categories = |x: SlotId| tree.slots[x].node.physical_states().map(category);
     if c.is_starting() {
         return slots.find(|&x| {
             !tree.produced(x)
-                && food_states(&tree.slots[x].node)
-                    .iter()
-                    .all(|f| category(f).is_starting())
+                && categories(x)
+                    .filter(|&k| k != Category::Other)
+                    .all(Category::is_starting)
         });
     }
-    slots.find(|&x| {
-        food_states(&tree.slots[x].node)
-            .iter()
-            .any(|f| category(f) == c)
-    })
+    slots.find(|&x| categories(x).any(|k| k == c))
 }
 
 /// Live slots of `label` downstream of the given units (through units that pass the object on).
@@ -947,7 +952,7 @@ fn add_branch<'kb>(
     eq: &str,
     o: &str,
     s: &str,
-) -> Result<(String, String), String> {
+) -> Result<(SmolStr, String), String> {
     let mut picked = None;
     let candidates = pick_nodes(ctx, eq, s);
     let count = candidates.len();
@@ -983,7 +988,18 @@ fn add_branch<'kb>(
             how,
             "'{eq}' taken as bought (FOON makes it only together with other ingredients)"
         );
-        return finish_branch(ctx, tree, eq, o, s, before, bare, String::new(), false, how);
+        return finish_branch(
+            ctx,
+            tree,
+            eq,
+            o,
+            s,
+            before,
+            bare,
+            SmolStr::default(),
+            false,
+            how,
+        );
     };
     // most branches are a kitchen item alone: only units retrieved for one share the tree's utensils
     let (added, made) = if ctx.kb.kitchen[n] || r.units.is_empty() {
@@ -1028,16 +1044,16 @@ fn finish_branch<'kb>(
     s: &str,
     before: SlotId,
     mut last: SlotId,
-    mut chosen_state: String,
+    mut chosen_state: SmolStr,
     in_state: bool,
     mut how: String,
-) -> Result<(String, String), String> {
+) -> Result<(SmolStr, String), String> {
     let c = category(s);
     if !in_state && c.is_starting() && chosen_state.is_empty() && !s.is_empty() {
         // an ingredient as bought is in the starting state asked for
         let node = map_states(&tree.slots[last].node, s);
         tree.slots[last].node = Cow::Owned(node);
-        chosen_state = s.to_string();
+        chosen_state = s.into();
     }
     if !in_state && !c.is_starting() && c != Category::Other {
         if let Some(motion) = ctx.index.motion_for(s) {
@@ -1049,7 +1065,7 @@ fn finish_branch<'kb>(
             }
             tree.add_unit(inputs, &motion, vec![(x, true)], Origin::Grafted);
             let _ = write!(how, ", then '{motion}' to make it '{s}'");
-            chosen_state = s.to_string();
+            chosen_state = s.into();
             last = x;
         } else {
             let _ = write!(how, ", no motion in FOON reaches '{s}'");
