@@ -8,7 +8,7 @@
 use crate::error::{ErrorCode, FoonError, Result};
 use rust_stemmers::{Algorithm, Stemmer};
 use rustc_hash::FxHashMap as HashMap;
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 
 pub const MAGIC: &[u8; 8] = b"FOONEMB\0";
 pub const VERSION: u32 = 1;
@@ -29,9 +29,16 @@ pub struct EmbeddingTable {
     /// Row-major, `words.len() * dims`.
     vectors: Vec<f32>,
     stemmer: Stemmer,
-    /// `word_stems` of each word asked so far: labels and taxonomy names repeat their words, and
+    /// `resolve` of each word asked so far: labels and taxonomy names repeat their words, and
     /// stemming (with the plural and compound tries) costs thousands of instructions a word.
-    resolved: Mutex<HashMap<String, Vec<String>>>,
+    resolved: Mutex<HashMap<String, Arc<WordStems>>>,
+}
+
+/// A word's stem, and the stems standing for it in the table (`EmbeddingTable::word_stems`).
+#[derive(Debug)]
+pub struct WordStems {
+    pub stem: String,
+    pub stems: Vec<String>,
 }
 
 impl std::fmt::Debug for EmbeddingTable {
@@ -243,25 +250,33 @@ impl EmbeddingTable {
     /// singularisation); else the word split into two known parts ("gingerroot", "soymilk",
     /// "crabmeat"), longest known first part preferred. Empty when nothing is known.
     pub fn word_stems(&self, word: &str) -> Vec<String> {
-        // a poisoned lock only means another caller panicked mid-insert: the memo is still sound
-        let mut resolved = self.resolved.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(stems) = resolved.get(word) {
-            return stems.clone();
-        }
-        let stems = self.resolve_word(word);
-        resolved.insert(word.to_string(), stems.clone());
-        stems
+        self.resolve(word).stems.clone()
     }
 
-    /// `word_stems` without the memo.
-    fn resolve_word(&self, word: &str) -> Vec<String> {
+    /// The stem of a word with its `word_stems`, worked out once per word.
+    pub fn resolve(&self, word: &str) -> Arc<WordStems> {
+        // a poisoned lock only means another caller panicked mid-insert: the memo is still sound
+        let mut resolved = self.resolved.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(r) = resolved.get(word) {
+            return Arc::clone(r);
+        }
         let stem = self.stem(word);
+        let r = Arc::new(WordStems {
+            stems: self.resolve_word(word, &stem),
+            stem,
+        });
+        resolved.insert(word.to_string(), Arc::clone(&r));
+        r
+    }
+
+    /// `word_stems` without the memo, from the word's stem.
+    fn resolve_word(&self, word: &str, stem: &str) -> Vec<String> {
         // A word and its plural share a stem; when they do not, the word may be a plural cut short
         // ("watercres", "lemongras"): the table's words are in frequency order, the commoner wins.
         let plural = self.stem(&format!("{word}s"));
-        match (self.rank_of(&stem), self.rank_of(&plural)) {
+        match (self.rank_of(stem), self.rank_of(&plural)) {
             (Some(a), Some(b)) if b < a => return vec![plural],
-            (Some(_), _) => return vec![stem],
+            (Some(_), _) => return vec![stem.to_string()],
             _ => {}
         }
         if self.contains_stem(word) {
@@ -301,14 +316,14 @@ impl EmbeddingTable {
         let mut unknown = Vec::new();
         let mut total = 0f32;
         for (i, w) in ws.iter().enumerate() {
-            let stems = self.word_stems(w);
+            let stems = &self.resolve(w).stems;
             if stems.is_empty() {
                 unknown.push(w.clone());
                 continue;
             }
             let weight = if i + 1 == ws.len() { head_weight } else { 1.0 } / stems.len() as f32;
             for s in stems {
-                if let Some(row) = self.row(&s) {
+                if let Some(row) = self.row(s) {
                     let n = norm(row);
                     if n > 0.0 {
                         for (acc, x) in sum.iter_mut().zip(row) {
@@ -317,7 +332,7 @@ impl EmbeddingTable {
                         total += weight;
                     }
                 }
-                known.push(s);
+                known.push(s.clone());
             }
         }
         let vector = if total > 0.0 && norm(&sum) > 0.0 {

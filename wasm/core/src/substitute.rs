@@ -14,7 +14,7 @@
 //! All of it sits behind the `Similarity` trait, so the planner benefits without changes.
 
 use crate::cones::{dot, Cones};
-use crate::embedding::{is_stop_word, words, EmbeddingTable};
+use crate::embedding::{is_stop_word, words, EmbeddingTable, WordStems};
 use crate::error::Result;
 use crate::kb::KnowledgeBase;
 use crate::label::normalize_label;
@@ -797,16 +797,16 @@ impl EmbeddingSimilarity {
         } else {
             name.clone()
         };
-        // the words of the canonical name with their stems (`stem_key`), each stemmed once
-        let mut kept: Vec<(String, String)> = words(&canonical)
+        // the words of the canonical name with their stems (`stem_key`) as the table resolved them
+        let mut kept: Vec<(String, Arc<WordStems>)> = words(&canonical)
             .into_iter()
             .filter(|w| !is_stop_word(w))
             .map(|w| {
-                let stem = stemmer().stem(&w).into_owned();
-                (w, stem)
+                let stems = self.table.resolve(&w);
+                (w, stems)
             })
             .collect();
-        let whole_key: Vec<String> = kept.iter().map(|(_, s)| s.clone()).collect();
+        let whole_key: Vec<String> = kept.iter().map(|(_, r)| r.stem.clone()).collect();
         let key = if canonical == name {
             whole_key.clone()
         } else {
@@ -816,7 +816,7 @@ impl EmbeddingSimilarity {
         // phrase is a listed name ("bay leaf", "garlic powder").
         let listed_whole = self.taxonomy.lists(&whole_key);
         if !listed_whole {
-            let described: Vec<(String, String)> = kept
+            let described: Vec<(String, Arc<WordStems>)> = kept
                 .iter()
                 .filter(|(w, _)| !DESCRIPTORS.contains(&w.as_str()))
                 .cloned()
@@ -826,10 +826,10 @@ impl EmbeddingSimilarity {
             }
         }
         let whole = self.taxonomy.lookup_key(&whole_key);
-        while kept.len() > 1 && kept.last().is_some_and(|(_, s)| is_form_stem(s)) {
+        while kept.len() > 1 && kept.last().is_some_and(|(_, r)| is_form_stem(&r.stem)) {
             let shorter: Vec<String> = kept[..kept.len() - 1]
                 .iter()
-                .map(|(_, s)| s.clone())
+                .map(|(_, r)| r.stem.clone())
                 .collect();
             // keep "garlic powder" whole (a spice, not an allium); drop "half" of "pecan half"
             if listed_whole && self.taxonomy.lookup_key(&shorter) != whole {
@@ -837,16 +837,15 @@ impl EmbeddingSimilarity {
             }
             kept.pop();
         }
-        let (kept, kept_stems): (Vec<String>, Vec<String>) = kept.into_iter().unzip();
         // Stems as the table resolves them, so that a plural cut short ("watercres") finds its listing.
         let canonical_key: Vec<String> = kept
             .iter()
-            .zip(kept_stems)
-            .map(|(w, stem)| match self.table.word_stems(w).as_slice() {
+            .map(|(_, r)| match r.stems.as_slice() {
                 [one] => one.clone(),
-                _ => stem,
+                _ => r.stem.clone(),
             })
             .collect();
+        let kept: Vec<String> = kept.into_iter().map(|(w, _)| w).collect();
         let vector = self
             .table
             .embed_words(&kept, self.options.head_weight)
