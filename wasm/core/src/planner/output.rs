@@ -68,13 +68,13 @@ pub(crate) fn build(p: Parts) -> Plan {
     let uses = Uses::new(tree, order);
     let mut progress_lines = Vec::with_capacity(p.outcomes.len());
     let mut done: Vec<&str> = Vec::with_capacity(p.outcomes.len());
-    let mut seen = Vec::new();
+    let mut slots = Vec::new();
     for o in &p.outcomes {
         if o.status != Status::Planned || done.contains(&o.object.as_str()) {
             continue;
         }
         done.push(&o.object);
-        if let Some(line) = progress_line(tree, order, &uses, &o.object, &mut seen) {
+        if let Some(line) = progress_line(tree, order, &uses, &o.object, &mut slots) {
             progress_lines.push(line);
         }
     }
@@ -180,13 +180,14 @@ fn physical(n: &ObjectNode) -> SmolStr {
 }
 
 /// The ingredient's states and places from its starting node, the motions between them, and the dish.
-/// `seen`: a buffer for the slots it passes through, reused from line to line.
+/// `slots`: a buffer reused from line to line (the slots the line passes through, then the vessels
+/// `product_of` follows).
 fn progress_line(
     tree: &Tree,
     order: &[TUnitId],
     uses: &Uses,
     label: &str,
-    seen: &mut Vec<SlotId>,
+    slots: &mut Vec<SlotId>,
 ) -> Option<ProgressLine> {
     // its first slot, and the first used of those no unit makes (one pass over the labels)
     let (mut first, mut start) = (None, None::<SlotId>);
@@ -208,6 +209,7 @@ fn progress_line(
     });
     let mut motions = Vec::with_capacity(4);
     let mut at = start;
+    let seen = slots;
     seen.clear();
     seen.push(start);
     let mut from = 0usize;
@@ -236,7 +238,7 @@ fn progress_line(
                     .map(|o| o.0)
                     .filter(|&x| tree.slots[x].utensil)
                     .find(|&x| tree.slots[x].node.contents().any(|i| i == label))
-                    .and_then(|x| product_of(tree, order, pos, x, label));
+                    .and_then(|x| product_of(tree, order, pos, x, label, seen));
             }
             break;
         };
@@ -262,7 +264,7 @@ fn progress_line(
                         physical_state: joined(["in", n.label.as_str()].into_iter(), " "),
                         location: location(n),
                     });
-                    end_product = product_of(tree, order, pos, o, label);
+                    end_product = product_of(tree, order, pos, o, label, seen);
                 } else {
                     motions.pop();
                 }
@@ -282,12 +284,14 @@ fn progress_line(
 
 /// The product an ingredient goes into (section IV-A): the first food node listing it among its
 /// contents, following the vessel it was put in (flour in the bowl → the batter mixed in that bowl).
+/// `vessels`: a buffer for the vessels holding it.
 fn product_of<'t>(
     tree: &'t Tree,
     order: &[TUnitId],
     pos: usize,
     entered: SlotId,
     label: &str,
+    vessels: &mut Vec<SlotId>,
 ) -> Option<&'t str> {
     let lists = |x: SlotId| tree.slots[x].node.contents().any(|i| i == label);
     let food = |x: SlotId| !tree.slots[x].utensil;
@@ -295,7 +299,8 @@ fn product_of<'t>(
         return Some(&tree.slots[entered].node.label);
     }
     // a vessel holding it: the first food made from that vessel's contents
-    let mut vessels: Vec<SlotId> = vec![entered];
+    vessels.clear();
+    vessels.push(entered);
     for &u in &order[pos + 1..] {
         let unit = &tree.units[u];
         if !unit.inputs.iter().any(|i| vessels.contains(&i.0)) {
