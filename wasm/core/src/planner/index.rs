@@ -9,6 +9,7 @@ use crate::model::NodeId;
 use crate::plan::PlanNode;
 use crate::taxonomy::is_utensil;
 use rustc_hash::FxHashMap as HashMap;
+use smol_str::SmolStr;
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, OnceLock};
@@ -52,7 +53,7 @@ pub struct PlannerIndex {
     /// it on).
     made_in: Vec<Vec<u32>>,
     /// Per (dish class, label, state), the label's nodes ranked for a case-4 branch (`modify::pick_nodes`).
-    pub(crate) picks: Memo<(Option<u32>, String, String), Picks, 4096>,
+    pub(crate) picks: Memo<(Option<u32>, SmolStr, SmolStr), Picks, 4096>,
     /// Each node as a plan shows it, made the first time a plan has it unchanged: plans share these
     /// rather than each making its own (most of a plan's nodes are the knowledge base's).
     plan_nodes: Vec<OnceLock<Arc<PlanNode>>>,

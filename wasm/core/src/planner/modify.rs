@@ -804,7 +804,8 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
 /// The flag says whether the node is in the wanted state (else it is the ingredient as bought).
 /// Remembered by the index: the ranking follows from the knowledge base alone, the same in every plan.
 fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Picks {
-    let key = (ctx.class, eq.to_string(), s.to_string());
+    // short names are kept inline: no allocation for the look-up
+    let key = (ctx.class, SmolStr::new(eq), SmolStr::new(s));
     ctx.index
         .picks
         .get_or_insert_with(key, || rank_nodes(ctx, eq, s).into())
