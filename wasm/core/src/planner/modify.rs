@@ -976,8 +976,10 @@ fn add_branch<'kb>(
         }
     }
     let before = tree.slots.len();
-    // the reason, written into one string as the branch is made
-    let mut how = String::from("not in the reference tree: ");
+    // the reason, written into one string as the branch is made (sized for nearly every reason: it
+    // does not grow step by step)
+    let mut how = String::with_capacity(128);
+    how.push_str("not in the reference tree: ");
     if eq != o {
         let _ = write!(how, "'{eq}' substituted with '{o}': ");
     }
