@@ -234,7 +234,13 @@ pub(crate) fn modify<'kb>(
             claimed.insert(eq.clone());
         }
         claimed.insert(o.to_string());
-        settle_state(ctx, tree, &eq, o, s, &mut restated, &mut w);
+        // renaming or copying gave `o` its slots; else they are the ones found for `eq`
+        let slots = if eq == o {
+            slots
+        } else {
+            tree.slots_with_label(o)
+        };
+        settle_state(ctx, tree, &eq, o, s, &slots, &mut restated, &mut w);
         w.planned = true;
         works.push(w);
     }
@@ -278,7 +284,7 @@ pub(crate) fn modify<'kb>(
                 if let Some(m) = w.matched.as_mut() {
                     m.state = tree_state(tree, &slots, &s);
                 }
-                settle_state(ctx, tree, &eq, o, &s, &mut restated, w);
+                settle_state(ctx, tree, &eq, o, &s, &slots, &mut restated, w);
                 continue;
             }
             // a case-2 substitute was renamed in the tree already: its branch comes from `eq` again
@@ -340,8 +346,9 @@ pub(crate) fn modify<'kb>(
     (outcomes, removed)
 }
 
-/// Cases 1–4 for an ingredient whose object is in the tree as `o` (`eq` in FOON): its state is there
-/// (exactly or by category), or the tree is changed to reach it (`restate`), once per object.
+/// Cases 1–4 for an ingredient whose object is in the tree as `o` (`eq` in FOON; `slots`: the live
+/// slots of `o`): its state is there (exactly or by category), or the tree is changed to reach it
+/// (`restate`), once per object.
 #[allow(clippy::too_many_arguments)]
 fn settle_state<'kb>(
     ctx: &Context<'kb>,
@@ -349,11 +356,11 @@ fn settle_state<'kb>(
     eq: &str,
     o: &str,
     s: &str,
+    slots: &[SlotId],
     restated: &mut HashMap<String, String>,
     w: &mut Work,
 ) {
-    let slots = tree.slots_with_label(o);
-    let state_ok = best_state_slot(tree, &slots, s).is_some();
+    let state_ok = best_state_slot(tree, slots, s).is_some();
     w.case = Some(match (eq == o, state_ok) {
         (true, true) => 1,
         (false, true) => 2,
@@ -364,7 +371,7 @@ fn settle_state<'kb>(
         w.reasons.push(format!(
             "state '{s}' is not in the state taxonomy: kept the tree's state"
         ));
-    } else if state_ok && best_exact(tree, &slots, s).is_none() {
+    } else if state_ok && best_exact(tree, slots, s).is_none() {
         w.reasons.push(format!(
             "state '{s}' matched by category ({})",
             category(s).name()
@@ -376,7 +383,7 @@ fn settle_state<'kb>(
                 "kept in the state '{first}' chosen for the same ingredient earlier"
             ));
         } else {
-            match restate(ctx, tree, eq, o, s, &slots) {
+            match restate(ctx, tree, eq, o, s, slots) {
                 Ok(reason) => {
                     restated.insert(o.to_string(), s.to_string());
                     w.reasons.push(reason);
