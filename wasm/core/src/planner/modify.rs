@@ -6,7 +6,7 @@ use super::retrieve::{retrieve, retrieve_within};
 use super::states::{category, is_food_state, Category};
 use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
-use crate::model::{NodeId, ObjectNode, State, StateArg, UnitId};
+use crate::model::{NodeId, ObjectNode, State, UnitId};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
 use crate::similarity::Similarity;
 use crate::taxonomy::{dish_class_name, is_utensil};
@@ -14,7 +14,6 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::borrow::Cow;
 use std::cell::RefCell;
-use std::cmp::Ordering;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write;
 
@@ -1102,131 +1101,35 @@ fn map_states(node: &ObjectNode, s: &str) -> ObjectNode {
     ObjectNode::new(node.label.clone(), states)
 }
 
-/// Per slot, whether its node lists any of `labels`: that node loses them (`drop_listed`), and the units
-/// touching it, as they are now, are marked renamed.
-fn mark_listing(tree: &mut Tree, labels: &HashSet<&str>) -> Vec<bool> {
-    let listing: Vec<bool> = tree
-        .slots
-        .iter()
-        .map(|x| x.node.listed().any(|l| labels.contains(l)))
-        .collect();
+/// Removes `labels` from every list of contents; units touching a changed node are marked renamed.
+fn drop_contents(tree: &mut Tree, labels: &HashSet<&str>) {
+    let mut touched = vec![false; tree.slots.len()];
+    for (slot, touched) in tree.slots.iter_mut().zip(touched.iter_mut()) {
+        if !slot.node.listed().any(|x| labels.contains(x)) {
+            continue;
+        }
+        retain_contents(&mut slot.node, &|x| !labels.contains(x));
+        *touched = true;
+    }
     for u in tree.units.iter_mut() {
         if u.alive
             && u.origin == Origin::Reference
             && u.inputs
                 .iter()
                 .chain(u.outputs.iter())
-                .any(|x| listing[x.0])
+                .any(|x| touched[x.0])
         {
             u.origin = Origin::Renamed;
         }
     }
-    listing
 }
 
-/// Removes `labels` from the lists of contents of the live slots `listing` marks. Slots no live unit
-/// uses are left as they are: none is used again, and most of them are knowledge-base nodes that would
-/// be copied for nothing.
-fn drop_listed(tree: &mut Tree, labels: &HashSet<&str>, listing: &[bool]) {
-    let edited: Vec<SlotId> = tree.live_slots().filter(|&x| listing[x]).collect();
-    for x in edited {
-        retain_contents(&mut tree.slots[x].node, &|l| !labels.contains(l));
-    }
-}
-
-/// Whether a drop of names from lists can change the state: it has a list, or it is the `empty` an
-/// emptied `contains` list becomes.
-fn changes_with_lists(s: &State) -> bool {
-    matches!(s.arg, Some(StateArg::Ingredients(_))) || s.name == "empty"
-}
-
-/// A node's states that `changes_with_lists` as they read once `labels` leave the lists (see
-/// `edit_contents`): an emptied `contains` list reads `empty`, any other emptied list goes.
-fn lists_without<'a>(
-    node: &'a ObjectNode,
-    labels: &'a HashSet<&str>,
-) -> impl Iterator<Item = (&'a str, Option<&'a StateArg>)> + 'a {
-    node.states.iter().filter_map(|s| match &s.arg {
-        Some(StateArg::Ingredients(list)) if list.iter().all(|l| labels.contains(l.as_str())) => {
-            (s.name == "contains").then_some(("empty", None))
-        }
-        arg if changes_with_lists(s) => Some((s.name.as_str(), arg.as_ref())),
-        _ => None,
-    })
-}
-
-/// Whether slots `x` and `y` hold equal nodes once `labels` leave the lists `listing` marks, without
-/// editing them (`drop_listed` later edits the ones still used).
-fn same_without(
-    tree: &Tree,
-    x: SlotId,
-    y: SlotId,
-    labels: &HashSet<&str>,
-    listing: &[bool],
-) -> bool {
-    let (a, b) = (&tree.slots[x].node, &tree.slots[y].node);
-    if a.label != b.label {
-        return false;
-    }
-    if !listing[x] && !listing[y] {
-        return a == b;
-    }
-    // the other states stay as they are, in the same order: compared in order, without a lookup
-    let fixed = |s: &&State| !changes_with_lists(s);
-    if !a
-        .states
-        .iter()
-        .filter(fixed)
-        .eq(b.states.iter().filter(fixed))
-    {
-        return false;
-    }
-    // these as sets (an edited node's states are sorted again and made unique)
-    let same_state = |s: (&str, Option<&StateArg>), t: (&str, Option<&StateArg>)| {
-        s.0 == t.0
-            && match (s.1, t.1) {
-                (Some(StateArg::Ingredients(p)), Some(StateArg::Ingredients(q))) => {
-                    same_list_without(p, q, labels)
-                }
-                (p, q) => p == q,
-            }
-    };
-    let covers =
-        |a, b| lists_without(a, labels).all(|s| lists_without(b, labels).any(|t| same_state(s, t)));
-    covers(a, b) && covers(b, a)
-}
-
-/// Whether two lists of contents (sorted and unique) are equal once `labels` leave them: merged in
-/// order, so that only an item one of them lacks is looked up.
-fn same_list_without(p: &[String], q: &[String], labels: &HashSet<&str>) -> bool {
-    let (mut i, mut j) = (0, 0);
-    while i < p.len() || j < q.len() {
-        let order = match (p.get(i), q.get(j)) {
-            (Some(x), Some(y)) => x.cmp(y),
-            (Some(_), None) => Ordering::Less,
-            _ => Ordering::Greater,
-        };
-        match order {
-            Ordering::Equal => (i, j) = (i + 1, j + 1),
-            Ordering::Less if labels.contains(p[i].as_str()) => i += 1,
-            Ordering::Greater if labels.contains(q[j].as_str()) => j += 1,
-            _ => return false,
-        }
-    }
-    true
-}
-
-/// Whether a unit with these inputs handles any ingredient once `labels` leave every list: a non-utensil
-/// input or a listed content (`gone` marks the slots pruned).
-fn handles_any(
-    tree: &Tree,
-    inputs: &[(SlotId, bool)],
-    gone: &[bool],
-    labels: &HashSet<&str>,
-) -> bool {
+/// Whether a unit with these inputs handles any ingredient: a non-utensil input or a listed content
+/// (`gone` marks the slots pruned).
+fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &[bool]) -> bool {
     inputs.iter().any(|&(x, _)| {
         let slot = &tree.slots[x];
-        !gone[x] && (!slot.utensil || slot.node.contents().any(|l| !labels.contains(l)))
+        !gone[x] && (!slot.utensil || slot.node.holds_something())
     })
 }
 
@@ -1258,11 +1161,9 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     // per unit, whether it handled an ingredient before pruning
     let mut had = vec![false; tree.units.len()];
     for &u in &order {
-        had[u] = handles_any(tree, &tree.units[u].inputs, &gone, &HashSet::default());
+        had[u] = handles_any(tree, &tree.units[u].inputs, &gone);
     }
-    // the lists lose the pruned labels once the units that go are known (see `drop_listed`); until
-    // then nodes are compared and read as they will be
-    let listing = mark_listing(tree, &going);
+    drop_contents(tree, &going);
     for &x in &live {
         gone[x] = going.contains(tree.slots[x].node.label.as_str());
     }
@@ -1294,12 +1195,12 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
         outputs.clear();
         outputs.extend(tree.units[u].outputs.iter().filter(|o| !gone[o.0]));
         let makes_goal = outputs.iter().any(|o| o.0 == goal);
-        let lost_all = had[u] && !handles_any(tree, &inputs, &gone, &going);
+        let lost_all = had[u] && !handles_any(tree, &inputs, &gone);
         // nothing new comes out: every output is one of the inputs as they are now
         let no_op = outputs.iter().all(|o| {
             inputs
                 .iter()
-                .any(|i| i.0 == o.0 || same_without(tree, i.0, o.0, &going, &listing))
+                .any(|i| i.0 == o.0 || tree.slots[i.0].node == tree.slots[o.0].node)
         });
         if (lost_all || no_op || outputs.is_empty()) && !makes_goal {
             tree.units[u].alive = false;
@@ -1308,7 +1209,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
                 let node = &tree.slots[x].node;
                 let same = inputs
                     .iter()
-                    .find(|i| same_without(tree, i.0, x, &going, &listing))
+                    .find(|i| tree.slots[i.0].node == *node)
                     .or_else(|| {
                         inputs
                             .iter()
@@ -1335,15 +1236,12 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
         dedup_slots(&mut unit.inputs);
         unit.outputs.clone_from(&outputs);
     }
-    drop_listed(tree, &going, &listing);
     // the goal may have been passed through a removed unit
     // labels made only by removed units leave the lists of contents as well
     let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
     with_units.retain(|l| !still.iter().any(|&x| tree.slots[x].node.label == *l));
     if !with_units.is_empty() {
-        let labels = with_units.iter().map(String::as_str).collect();
-        let listing = mark_listing(tree, &labels);
-        drop_listed(tree, &labels, &listing);
+        drop_contents(tree, &with_units.iter().map(String::as_str).collect());
         pruned.extend(with_units);
     }
     pruned.into_iter().collect()
