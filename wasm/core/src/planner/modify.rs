@@ -3,7 +3,7 @@
 
 use super::index::{Picks, PlannerIndex};
 use super::retrieve::{retrieve, retrieve_within};
-use super::states::{category, is_food_state, Category};
+use super::states::{category, is_food_state, state_text, Category};
 use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
@@ -33,23 +33,6 @@ pub(crate) fn food_states(node: &ObjectNode) -> Vec<&str> {
     node.physical_states()
         .filter(|s| is_food_state(s))
         .collect()
-}
-
-/// A node's state as a plan reports it: its food states, else its physical states, comma-separated
-/// (written inline: a state text is nearly always short).
-fn state_text(node: &ObjectNode) -> SmolStr {
-    let comma_separated = |states: &mut dyn Iterator<Item = &str>| -> SmolStr {
-        states.flat_map(|s| [", ", s]).skip(1).collect()
-    };
-    let mut food = node
-        .physical_states()
-        .filter(|s| is_food_state(s))
-        .peekable();
-    if food.peek().is_none() {
-        comma_separated(&mut node.physical_states())
-    } else {
-        comma_separated(&mut food)
-    }
 }
 
 /// The category a node's food states put it in (the furthest along; whole when it has none).

@@ -1,7 +1,7 @@
 //! From the modified tree to the plan: units in execution order, progress lines (section IV-A) and one
 //! plain sentence per unit.
 
-use super::states::is_food_state;
+use super::states::state_text;
 use super::tree::{SlotId, TUnitId, Tree};
 use crate::kb::{Goal, KnowledgeBase};
 use crate::model::{ObjectNode, State, StateArg};
@@ -160,25 +160,6 @@ fn location(n: &ObjectNode) -> SmolStr {
         .unwrap_or_default()
 }
 
-/// The node's food states, or its physical states when it has none (`food_states`, written as they are
-/// found: no list of them, each state looked up once).
-fn physical(n: &ObjectNode) -> SmolStr {
-    let mut food = SmolStrBuilder::new();
-    let mut any = false;
-    for s in n.physical_states().filter(|s| is_food_state(s)) {
-        if any {
-            food.push_str(", ");
-        }
-        food.push_str(s);
-        any = true;
-    }
-    if any {
-        food.finish()
-    } else {
-        joined(n.physical_states(), ", ")
-    }
-}
-
 /// The ingredient's states and places from its starting node, the motions between them, and the dish.
 /// `slots`: a buffer reused from line to line (the slots the line passes through, then the vessels
 /// `product_of` follows).
@@ -204,7 +185,7 @@ fn progress_line(
     // a line has a few states: one allocation each for them and the motions
     let mut states = Vec::with_capacity(4);
     states.push(ProgressState {
-        physical_state: physical(&tree.slots[start].node),
+        physical_state: state_text(&tree.slots[start].node),
         location: location(&tree.slots[start].node),
     });
     let mut motions = Vec::with_capacity(4);
@@ -248,7 +229,7 @@ fn progress_line(
             Some(o) => {
                 seen.push(o);
                 states.push(ProgressState {
-                    physical_state: physical(&tree.slots[o].node),
+                    physical_state: state_text(&tree.slots[o].node),
                     location: location(&tree.slots[o].node),
                 });
                 at = o;

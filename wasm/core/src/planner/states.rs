@@ -2,7 +2,9 @@
 //! each other, and which category can be reached from which (a chopped onion cannot be made whole again).
 
 use crate::label::normalize_word;
+use crate::model::ObjectNode;
 use rustc_hash::FxHashMap as HashMap;
+use smol_str::{SmolStr, SmolStrBuilder};
 use std::cell::RefCell;
 use std::sync::OnceLock;
 
@@ -156,6 +158,31 @@ fn classify(state: &str) -> Category {
 /// States that describe the food itself (not its place or contents, not an appliance's condition).
 pub fn is_food_state(state: &str) -> bool {
     category(state) != Category::Other
+}
+
+/// A node's state as a plan reports it (its match and its progress lines): its food states, else its
+/// physical states, comma-separated (each state looked up once; inline when short, as nearly all are).
+pub(crate) fn state_text(node: &ObjectNode) -> SmolStr {
+    let mut food = node
+        .physical_states()
+        .filter(|s| is_food_state(s))
+        .peekable();
+    if food.peek().is_some() {
+        comma_separated(food)
+    } else {
+        comma_separated(node.physical_states())
+    }
+}
+
+fn comma_separated<'a>(states: impl Iterator<Item = &'a str>) -> SmolStr {
+    let mut out = SmolStrBuilder::new();
+    for (k, s) in states.enumerate() {
+        if k > 0 {
+            out.push_str(", ");
+        }
+        out.push_str(s);
+    }
+    out.finish()
 }
 
 #[cfg(test)]
