@@ -1,0 +1,696 @@
+//! The planner on small hand-made knowledge bases: one test per case of Table I, pruning, attachment,
+//! cycles, unknown dish types, empty queries, duplicate ingredients, empty names, overrides, the
+//! unmodified reference tree, and the exports.
+
+use foon_core::error::ErrorCode;
+use foon_core::plan::{Origin, Status};
+use foon_core::planner::violations;
+use foon_core::similarity::{ExactMatch, Similarity};
+use foon_core::{
+    decode, foon_text, load, parse::parse_str, pddl, plan, progress_json, Plan, PlannerIndex,
+};
+
+/// A similarity given as a table of pairs (symmetric); 1 for a name with itself, 0 otherwise.
+struct Pairs(&'static [(&'static str, &'static str, f32)]);
+
+impl Similarity for Pairs {
+    fn similarity(&self, a: &str, b: &str) -> f32 {
+        if a == b {
+            return 1.0;
+        }
+        self.0
+            .iter()
+            .find(|(x, y, _)| (*x == a && *y == b) || (*x == b && *y == a))
+            .map_or(0.0, |p| p.2)
+    }
+}
+
+/// A salad (dish class 15): a tomato sliced, and lettuce the recipe starts with chopped, mixed in a bowl.
+const SALAD: &str = "//
+O\tcutting board\t0
+S\tempty
+O\ttomato\t1
+S\twhole
+M\tpick-and-place\t<Assumed>
+O\ttomato\t1
+S\twhole
+S\ton\t[cutting board]
+//
+O\ttomato\t1
+S\twhole
+S\ton\t[cutting board]
+O\tknife\t1
+S\tclean
+M\tslice\t<Assumed>
+O\ttomato\t1
+S\tsliced
+S\ton\t[cutting board]
+//
+O\tsalad bowl\t0
+S\tempty
+O\ttomato\t1
+S\tsliced
+S\ton\t[cutting board]
+O\tlettuce\t1
+S\tchopped
+M\tmix\t<Assumed>
+O\tgarden salad\t1\t15
+S\tmixed
+S\tcontains\t{lettuce,tomato}
+S\tin\t[salad bowl]
+//
+";
+
+/// Another recipe (a soup, class 1): cucumber sliced, lettuce chopped and shredded, boiled in a pot.
+const SOUP: &str = "//
+O\tcucumber\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tslice\t<Assumed>
+O\tcucumber\t1
+S\tsliced
+//
+O\tlettuce\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tchop\t<Assumed>
+O\tlettuce\t1
+S\tchopped
+//
+O\tlettuce\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tshred\t<Assumed>
+O\tlettuce\t1
+S\tshredded
+//
+O\tpot\t0
+S\tempty
+O\tcucumber\t1
+S\tsliced
+O\tlettuce\t1
+S\tshredded
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{cucumber,lettuce}
+//
+O\tpot\t0
+S\tcontains\t{cucumber,lettuce}
+M\tboil\t<Assumed>
+O\tgreen soup\t1\t1
+S\tcooked
+S\tcontains\t{cucumber,lettuce}
+S\tin\t[pot]
+//
+";
+
+fn kb(files: &[(&str, &str)]) -> (foon_core::KnowledgeBase, PlannerIndex) {
+    let files: Vec<(String, Vec<u8>)> = files
+        .iter()
+        .map(|(n, t)| (n.to_string(), t.as_bytes().to_vec()))
+        .collect();
+    let kb = load(&files).unwrap_or_else(|e| panic!("{e}"));
+    let index = PlannerIndex::new(&kb);
+    (kb, index)
+}
+
+fn try_plan(
+    files: &[(&str, &str)],
+    sim: &dyn Similarity,
+    request: &str,
+) -> foon_core::Result<Plan> {
+    let (kb, index) = kb(files);
+    let request = decode::plan_request(request).unwrap_or_else(|e| panic!("{e}"));
+    plan(&kb, &index, sim, &request)
+}
+
+/// A plan that must exist and be sound: no unit twice, none before its inputs, none dead, the goal made.
+fn plan_of(files: &[(&str, &str)], sim: &dyn Similarity, request: &str) -> Plan {
+    let p = try_plan(files, sim, request).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(violations(&p), Vec::<String>::new(), "{:#?}", p.units);
+    p
+}
+
+fn query(dish: &str, items: &[(&str, &str)]) -> String {
+    let items: Vec<String> = items
+        .iter()
+        .map(|(o, s)| format!(r#"{{"object": "{o}", "state": "{s}"}}"#))
+        .collect();
+    format!(
+        r#"{{"query": {{"type": "{dish}", "ingredients": [{}]}}}}"#,
+        items.join(", ")
+    )
+}
+
+const BOTH: &[(&str, &str)] = &[("salad.txt", SALAD), ("soup.txt", SOUP)];
+const SIM: Pairs = Pairs(&[
+    ("cherry tomato", "tomato", 0.9),
+    ("romaine", "lettuce", 0.85),
+    ("zucchini", "cucumber", 0.8),
+]);
+
+/// The plan's units as "motion: input (states) + ... -> output (states) + ...", in order.
+fn units(p: &Plan) -> Vec<String> {
+    let side = |nodes: &[std::sync::Arc<foon_core::plan::PlanNode>]| {
+        let mut names: Vec<String> = nodes
+            .iter()
+            .map(|n| format!("{} ({})", n.label, n.states.join(", ")))
+            .collect();
+        names.sort();
+        names.join(" + ")
+    };
+    p.units
+        .iter()
+        .map(|u| format!("{}: {} -> {}", u.motion, side(&u.inputs), side(&u.outputs)))
+        .collect()
+}
+
+fn outcome<'p>(p: &'p Plan, object: &str) -> &'p foon_core::plan::IngredientOutcome {
+    p.ingredients
+        .iter()
+        .find(|i| i.object == object)
+        .unwrap_or_else(|| panic!("no outcome for {object}: {:#?}", p.ingredients))
+}
+
+/// Whether a unit with `motion` makes `label` in `state`.
+fn makes(p: &Plan, motion: &str, label: &str, state: &str) -> bool {
+    p.units.iter().any(|u| {
+        u.motion == motion
+            && u.outputs
+                .iter()
+                .any(|n| n.label == label && n.states.iter().any(|s| s == state))
+    })
+}
+
+/// The labels every unit of the plan takes or makes.
+fn labels(p: &Plan) -> std::collections::BTreeSet<&str> {
+    p.units
+        .iter()
+        .flat_map(|u| u.inputs.iter().chain(u.outputs.iter()))
+        .map(|n| n.label.as_str())
+        .collect()
+}
+
+/// The goal node as the plan makes it (the last unit's output with the goal's label).
+fn goal_contents(p: &Plan) -> Vec<&str> {
+    let goal = p
+        .units
+        .last()
+        .and_then(|u| u.outputs.iter().find(|n| n.label == p.goal.label))
+        .expect("the last unit makes the goal");
+    goal.ingredients.iter().map(|s| s.as_str()).collect()
+}
+
+#[test]
+fn case_1_object_and_state_in_the_tree_change_nothing() {
+    let p = plan_of(
+        BOTH,
+        &SIM,
+        &query("salad", &[("tomato", "sliced"), ("lettuce", "chopped")]),
+    );
+    assert_eq!(p.goal.label, "garden salad");
+    for (object, state) in [("tomato", "sliced"), ("lettuce", "chopped")] {
+        let o = outcome(&p, object);
+        assert_eq!(o.case, Some(1), "{o:#?}");
+        assert_eq!(o.status, Status::Planned);
+        let m = o.matched.as_ref().unwrap();
+        assert_eq!(
+            (m.label.as_str(), m.state.as_str(), m.similarity),
+            (object, state, 1.0)
+        );
+    }
+    assert!(p.units.iter().all(|u| u.origin == Origin::Reference));
+    assert_eq!(
+        units(&p),
+        [
+            "pick-and-place: cutting board (empty) + tomato (whole) -> tomato (on [cutting board], whole)",
+            "slice: knife (clean) + tomato (on [cutting board], whole) -> tomato (on [cutting board], sliced)",
+            "mix: lettuce (chopped) + salad bowl (empty) + tomato (on [cutting board], sliced) -> garden salad (contains {lettuce,tomato}, in [salad bowl], mixed)",
+        ]
+    );
+    assert!(p.removed.is_empty());
+    assert_eq!(
+        p.steps,
+        [
+            "Place the tomato onto the cutting board.",
+            "Slice the tomato on the cutting board.",
+            "Mix the lettuce and the tomato.",
+        ]
+    );
+}
+
+#[test]
+fn case_2_an_equivalent_in_the_same_state_is_renamed() {
+    let p = plan_of(
+        BOTH,
+        &SIM,
+        &query(
+            "salad",
+            &[("cherry tomato", "sliced"), ("lettuce", "chopped")],
+        ),
+    );
+    let o = outcome(&p, "cherry tomato");
+    assert_eq!(o.case, Some(2));
+    assert_eq!(o.status, Status::Planned);
+    let m = o.matched.as_ref().unwrap();
+    assert_eq!(
+        (m.label.as_str(), m.state.as_str(), m.similarity),
+        ("tomato", "sliced", 0.9)
+    );
+    // the tomato's whole branch now handles the cherry tomato, and the salad contains it
+    assert!(!labels(&p).contains("tomato"), "{:#?}", units(&p));
+    assert!(units(&p).contains(
+        &"slice: cherry tomato (on [cutting board], whole) + knife (clean) -> cherry tomato (on [cutting board], sliced)".to_string()
+    ));
+    assert_eq!(goal_contents(&p), ["cherry tomato", "lettuce"]);
+    assert_eq!(p.units.len(), 3);
+}
+
+#[test]
+fn case_2_copies_the_branch_when_the_equivalent_is_asked_for_too() {
+    let p = plan_of(
+        BOTH,
+        &SIM,
+        &query(
+            "salad",
+            &[
+                ("tomato", "sliced"),
+                ("cherry tomato", "sliced"),
+                ("lettuce", "chopped"),
+            ],
+        ),
+    );
+    assert_eq!(outcome(&p, "tomato").case, Some(1));
+    assert_eq!(outcome(&p, "cherry tomato").case, Some(2));
+    for label in ["tomato", "cherry tomato"] {
+        assert!(
+            makes(&p, "slice", label, "sliced"),
+            "{label}: {:#?}",
+            units(&p)
+        );
+    }
+    assert!(p.units.iter().any(|u| u.origin == Origin::Copied));
+    assert_eq!(goal_contents(&p), ["cherry tomato", "lettuce", "tomato"]);
+}
+
+#[test]
+fn case_3_grafts_the_units_that_make_the_trees_state_from_the_given_one() {
+    // the salad starts from chopped lettuce; the user has a whole one, and the soup recipe chops it
+    let p = plan_of(
+        BOTH,
+        &SIM,
+        &query("salad", &[("tomato", "sliced"), ("lettuce", "whole")]),
+    );
+    let o = outcome(&p, "lettuce");
+    assert_eq!(o.case, Some(3));
+    assert_eq!(o.status, Status::Planned);
+    assert_eq!(o.matched.as_ref().unwrap().state, "chopped");
+    let chop = p
+        .units
+        .iter()
+        .position(|u| u.motion == "chop")
+        .expect("a chop unit");
+    assert_eq!(p.units[chop].origin, Origin::Grafted);
+    assert_eq!(
+        units(&p)[chop],
+        "chop: knife (clean) + lettuce (whole) -> lettuce (chopped)"
+    );
+    // grafted onto the leaf: the chopped lettuce is made before the mix that takes it
+    let mix = p.units.iter().position(|u| u.motion == "mix").unwrap();
+    assert!(chop < mix);
+    assert_eq!(p.steps[chop], "Chop the lettuce.");
+}
+
+#[test]
+fn case_3_says_so_when_the_given_state_cannot_be_reached() {
+    // the salad starts from chopped lettuce: lettuce cut coarser cannot be made from it
+    let p = plan_of(BOTH, &SIM, &query("salad", &[("lettuce", "sliced")]));
+    let o = outcome(&p, "lettuce");
+    assert_eq!(o.case, Some(3));
+    assert_eq!(o.status, Status::Planned);
+    assert_eq!(
+        o.reason.as_deref(),
+        Some("state 'sliced' cannot be reached from the tree's 'chopped' (not reversible); kept 'chopped'")
+    );
+    assert!(makes(&p, "mix", "garden salad", "mixed"));
+    assert!(!p.units.iter().any(|u| u.origin == Origin::Grafted));
+}
+
+#[test]
+fn a_state_of_the_same_category_counts_as_matched() {
+    // shredded and chopped are both finely cut: the tree's chopped lettuce serves, with a reason
+    let p = plan_of(BOTH, &SIM, &query("salad", &[("lettuce", "shredded")]));
+    let o = outcome(&p, "lettuce");
+    assert_eq!(o.case, Some(1));
+    assert_eq!(o.matched.as_ref().unwrap().state, "chopped");
+    assert_eq!(
+        o.reason.as_deref(),
+        Some("state 'shredded' matched by category (finely cut)")
+    );
+}
+
+#[test]
+fn case_4_renames_and_grafts_from_the_tree() {
+    let p = plan_of(
+        BOTH,
+        &SIM,
+        &query("salad", &[("tomato", "sliced"), ("romaine", "whole")]),
+    );
+    let o = outcome(&p, "romaine");
+    assert_eq!(o.case, Some(4));
+    let m = o.matched.as_ref().unwrap();
+    assert_eq!(
+        (m.label.as_str(), m.state.as_str(), m.similarity),
+        ("lettuce", "chopped", 0.85)
+    );
+    assert!(units(&p)
+        .contains(&"chop: knife (clean) + romaine (whole) -> romaine (chopped)".to_string()));
+    assert!(!labels(&p).contains("lettuce"));
+    assert_eq!(goal_contents(&p), ["romaine", "tomato"]);
+}
+
+#[test]
+fn case_4_takes_a_branch_from_elsewhere_in_foon_and_attaches_it_where_ingredients_mix() {
+    // no zucchini anywhere: its equivalent, cucumber, is only in the soup recipe
+    let p = plan_of(
+        BOTH,
+        &SIM,
+        &query(
+            "salad",
+            &[
+                ("tomato", "sliced"),
+                ("lettuce", "chopped"),
+                ("zucchini", "sliced"),
+            ],
+        ),
+    );
+    let o = outcome(&p, "zucchini");
+    assert_eq!(o.case, Some(4));
+    assert_eq!(o.status, Status::Planned);
+    let m = o.matched.as_ref().unwrap();
+    assert_eq!((m.label.as_str(), m.state.as_str()), ("cucumber", "sliced"));
+    assert!(
+        o.reason.as_deref().unwrap().contains("added at 'mix'"),
+        "{o:#?}"
+    );
+    let all = units(&p);
+    let slice = all
+        .iter()
+        .position(|u| u == "slice: knife (clean) + zucchini (whole) -> zucchini (sliced)")
+        .unwrap_or_else(|| panic!("{all:#?}"));
+    assert_eq!(p.units[slice].origin, Origin::Grafted);
+    // attached to the mixing unit, never to a cutting one (a robot cuts one item at a time)
+    let takes = |u: &foon_core::plan::PlanUnit| {
+        u.inputs
+            .iter()
+            .any(|n| n.label == "zucchini" && n.states.iter().any(|s| s == "sliced"))
+    };
+    let users: Vec<&str> = p
+        .units
+        .iter()
+        .filter(|u| takes(u))
+        .map(|u| u.motion.as_str())
+        .collect();
+    assert_eq!(users, ["mix"]);
+    assert!(p
+        .units
+        .iter()
+        .any(|u| u.motion == "mix" && u.origin == Origin::Attached));
+    assert_eq!(goal_contents(&p), ["lettuce", "tomato", "zucchini"]);
+    assert!(!labels(&p).contains("cucumber"));
+}
+
+#[test]
+fn an_exact_foon_label_always_maps_to_itself() {
+    // cucumber is a FOON label (in the soup): it is never replaced by the tree's tomato or lettuce
+    let p = plan_of(
+        BOTH,
+        &SIM,
+        &query("salad", &[("tomato", "sliced"), ("cucumber", "sliced")]),
+    );
+    let o = outcome(&p, "cucumber");
+    let m = o.matched.as_ref().unwrap();
+    assert_eq!((m.label.as_str(), m.similarity), ("cucumber", 1.0));
+    assert_eq!(goal_contents(&p), ["cucumber", "tomato"]);
+}
+
+#[test]
+fn pruning_removes_what_was_not_asked_for_and_keeps_the_tree_connected() {
+    let p = plan_of(BOTH, &SIM, &query("salad", &[("tomato", "sliced")]));
+    assert_eq!(p.removed, ["lettuce"]);
+    assert!(!labels(&p).contains("lettuce"));
+    // the goal and the containers no longer list it
+    assert_eq!(goal_contents(&p), ["tomato"]);
+    assert!(p.units.iter().all(|u| !u.inputs.is_empty()));
+    assert_eq!(p.steps.last().unwrap(), "Mix the tomato.");
+}
+
+#[test]
+fn an_ingredient_without_any_equivalent_is_unplannable_with_a_reason() {
+    let p = plan_of(
+        BOTH,
+        &SIM,
+        &query("salad", &[("tomato", "sliced"), ("plutonium", "whole")]),
+    );
+    let o = outcome(&p, "plutonium");
+    assert_eq!(o.status, Status::Unplannable);
+    assert_eq!(o.case, None);
+    assert!(o.matched.is_none());
+    assert!(o
+        .reason
+        .as_deref()
+        .unwrap()
+        .contains("no equivalent of 'plutonium'"));
+    assert!(!labels(&p).contains("plutonium"));
+    assert_eq!(outcome(&p, "tomato").status, Status::Planned);
+}
+
+/// A dessert whose butter is melted from solid and cooled back to solid in the same recipe: the only
+/// unit making solid butter needs melted butter, which needs solid butter.
+const CYCLE: &str = "//
+O\tbutter\t1
+S\tsolid
+O\tpan\t0
+S\thot
+M\tmelt\t<Assumed>
+O\tbutter\t1
+S\tmelted
+//
+O\tbutter\t1
+S\tmelted
+M\tcool\t<Assumed>
+O\tbutter\t1
+S\tsolid
+//
+O\tbowl\t0
+S\tempty
+O\tbutter\t1
+S\tmelted
+O\tsugar\t1
+S\tgranulated
+M\tmix\t<Assumed>
+O\tbutter cream\t1\t8
+S\tmixed
+S\tcontains\t{butter,sugar}
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn retrieval_terminates_on_a_cycle() {
+    let p = plan_of(
+        &[("cycle.txt", CYCLE)],
+        &ExactMatch,
+        &query("dessert", &[("butter", "melted"), ("sugar", "granulated")]),
+    );
+    assert_eq!(p.goal.label, "butter cream");
+    // each unit once, in an order a robot can follow (checked by plan_of); the recipe had solid butter
+    // from the start, so cooling it back is not part of the plan
+    assert_eq!(
+        units(&p),
+        [
+            "melt: butter (solid) + pan (hot) -> butter (melted)",
+            "mix: bowl (empty) + butter (melted) + sugar (granulated) -> butter cream (contains {butter,sugar}, in [bowl], mixed)",
+        ]
+    );
+}
+
+#[test]
+fn an_unknown_dish_type_searches_all_goals_and_says_so() {
+    let p = plan_of(BOTH, &SIM, &query("spaceship", &[("tomato", "sliced")]));
+    assert!(p.dish_class.is_none());
+    assert!(
+        p.notes
+            .iter()
+            .any(|n| n.contains("unknown dish type 'spaceship'")),
+        "{:#?}",
+        p.notes
+    );
+    assert_eq!(p.goal.label, "garden salad");
+    // a known type with no goal of its class in the knowledge base falls back too
+    let p = plan_of(BOTH, &SIM, &query("pizza", &[("tomato", "sliced")]));
+    assert_eq!(
+        p.notes,
+        ["no recipe of class 'pizza' in the knowledge base: searched all goal nodes"]
+    );
+}
+
+#[test]
+fn the_dish_type_picks_the_reference_goal() {
+    let soup = plan_of(BOTH, &SIM, &query("soup", &[("lettuce", "chopped")]));
+    assert_eq!(soup.goal.label, "green soup");
+    let salad = plan_of(BOTH, &SIM, &query("salad", &[("lettuce", "chopped")]));
+    assert_eq!(salad.goal.label, "garden salad");
+}
+
+#[test]
+fn an_empty_query_is_a_typed_error() {
+    let err = try_plan(
+        BOTH,
+        &SIM,
+        r#"{"query": {"type": "salad", "ingredients": []}}"#,
+    )
+    .unwrap_err();
+    assert_eq!(err.code, ErrorCode::BadQuery);
+    assert!(err.message.contains("no ingredients"), "{err}");
+}
+
+#[test]
+fn duplicate_ingredients_are_planned_once_with_a_note() {
+    let p = plan_of(
+        BOTH,
+        &SIM,
+        &query("salad", &[("tomato", "sliced"), ("Tomato", " Sliced ")]),
+    );
+    assert_eq!(p.query.ingredients.len(), 1);
+    assert_eq!(p.ingredients.len(), 1);
+    assert!(p
+        .notes
+        .iter()
+        .any(|n| n.contains("duplicate ingredient 'tomato (sliced)'")));
+}
+
+#[test]
+fn an_empty_name_is_a_typed_error_naming_the_ingredient() {
+    let err = try_plan(
+        BOTH,
+        &SIM,
+        &query("salad", &[("tomato", "sliced"), ("  ", "whole")]),
+    )
+    .unwrap_err();
+    assert_eq!(err.code, ErrorCode::BadQuery);
+    assert!(
+        err.message
+            .contains("ingredient 2 has an empty object name"),
+        "{err}"
+    );
+}
+
+#[test]
+fn an_override_replaces_the_equivalent_and_is_marked() {
+    // the caller prefers lettuce for zucchini over the planner's cucumber
+    let request = r#"{"query": {"type": "salad", "ingredients": [
+        {"object": "tomato", "state": "sliced"}, {"object": "zucchini", "state": "chopped"}]},
+        "overrides": {"zucchini": "lettuce"}}"#;
+    let p = plan_of(BOTH, &SIM, request);
+    let o = outcome(&p, "zucchini");
+    assert!(o.overridden);
+    let m = o.matched.as_ref().unwrap();
+    assert_eq!((m.label.as_str(), m.state.as_str()), ("lettuce", "chopped"));
+    assert_eq!(goal_contents(&p), ["tomato", "zucchini"]);
+    // an override that is no ingredient of the knowledge base leaves the ingredient unplannable
+    let request = request.replace(r#""zucchini": "lettuce""#, r#""zucchini": "spoon""#);
+    let p = plan_of(BOTH, &SIM, &request);
+    let o = outcome(&p, "zucchini");
+    assert_eq!(o.status, Status::Unplannable);
+    assert!(o.reason.as_deref().unwrap().contains("override 'spoon'"));
+}
+
+#[test]
+fn without_modification_the_reference_tree_is_returned_as_retrieved() {
+    let request = r#"{"query": {"type": "salad", "ingredients": [
+        {"object": "zucchini", "state": "sliced"}, {"object": "tomato", "state": "sliced"}]},
+        "modify": false}"#;
+    let p = plan_of(BOTH, &SIM, request);
+    assert!(!p.modified);
+    assert!(p.units.iter().all(|u| u.origin == Origin::Reference));
+    assert!(labels(&p).contains("lettuce") && !labels(&p).contains("zucchini"));
+    assert!(p.removed.is_empty());
+    assert_eq!(outcome(&p, "tomato").case, Some(1));
+}
+
+#[test]
+fn progress_lines_follow_each_ingredient_to_the_dish() {
+    let p = plan_of(
+        BOTH,
+        &SIM,
+        &query("salad", &[("tomato", "sliced"), ("lettuce", "chopped")]),
+    );
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "tomato")
+        .unwrap();
+    let states: Vec<(&str, &str)> = line
+        .state
+        .iter()
+        .map(|s| (s.physical_state.as_str(), s.location.as_str()))
+        .collect();
+    assert_eq!(
+        states,
+        [
+            ("whole", ""),
+            ("whole", "on cutting board"),
+            ("sliced", "on cutting board"),
+            ("in garden salad", "in salad bowl"),
+        ]
+    );
+    assert_eq!(line.motion, ["pick-and-place", "slice", "mix"]);
+    assert_eq!(line.end_product, "garden salad");
+    // the published visualiser's shape
+    let json = progress_json(&p);
+    let first = &json.as_array().expect("an array of lines")[0];
+    for key in ["ingredient", "state", "motion", "end_product"] {
+        assert!(first.get(key).is_some(), "{key} missing in {first}");
+    }
+}
+
+#[test]
+fn exports_read_back_and_have_one_action_per_unit() {
+    let p = plan_of(
+        BOTH,
+        &SIM,
+        &query("salad", &[("tomato", "sliced"), ("zucchini", "sliced")]),
+    );
+    // FOON text in the plain dialect reads back as the same units
+    let text = foon_text(&p);
+    let parsed = parse_str("plan.txt", &text).unwrap_or_else(|e| panic!("{e}\n{text}"));
+    assert_eq!(parsed.units.len(), p.units.len());
+    // PDDL: one action per functional unit; the goal is the goal node
+    let d = pddl(&p);
+    assert_eq!(
+        d.domain.matches("(:action").count(),
+        p.units.len(),
+        "{}",
+        d.domain
+    );
+    assert!(d.problem.contains("(:goal"), "{}", d.problem);
+}
+
+#[test]
+fn the_plan_does_not_depend_on_the_order_of_the_files() {
+    let q = query(
+        "salad",
+        &[
+            ("tomato", "sliced"),
+            ("zucchini", "sliced"),
+            ("lettuce", "whole"),
+        ],
+    );
+    let forward = plan_of(BOTH, &SIM, &q);
+    let backward = plan_of(&[("soup.txt", SOUP), ("salad.txt", SALAD)], &SIM, &q);
+    assert_eq!(forward, backward);
+}
