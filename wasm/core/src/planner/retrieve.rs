@@ -24,38 +24,73 @@ pub(crate) struct Retrieved {
     pub blocked: Vec<NodeId>,
 }
 
-/// Whether `target` can be reached from `from` following chosen producers (node → unit → inputs).
-/// `scratch` is reused between calls (the search asks this for every input of every candidate unit).
-fn depends_on(
-    kb: &KnowledgeBase,
-    chosen: &HashMap<NodeId, UnitId>,
-    from: NodeId,
-    target: NodeId,
-    scratch: &mut (Vec<NodeId>, HashSet<NodeId>),
-) -> bool {
-    // most inputs are kitchen items nothing chosen makes: answered without the walk
-    if from == target {
-        return true;
+/// The search's tables, kept by the plan's `Scorer` and cleared for each retrieval instead of
+/// allocated: case 4 retrieves for many candidates, and most are rejected at their first unit.
+pub(crate) struct Search {
+    /// The unit chosen to make each node, handed to the result when the search completes.
+    chosen: HashMap<NodeId, UnitId>,
+    /// The nodes `chosen` makes: most inputs asked about are kitchen items nothing chosen makes.
+    made: FixedBitSet,
+    // bit sets over the knowledge base: a few hundred bytes even at 100x FOON-111, cheaper than hashing
+    in_tree: FixedBitSet,
+    visited: FixedBitSet,
+    /// Each node to expand with the unit that needs it (None for the root).
+    queue: VecDeque<(NodeId, Option<UnitId>)>,
+    /// A unit's inputs, sorted.
+    inputs: Vec<NodeId>,
+    /// `depends_on`'s walk.
+    stack: Vec<NodeId>,
+    seen: HashSet<NodeId>,
+    /// `execution_order`'s units placed, nodes reached, and DFS stack.
+    done: FixedBitSet,
+    reached: FixedBitSet,
+    order_stack: Vec<(NodeId, bool)>,
+}
+
+impl Default for Search {
+    /// Sized for a typical recipe's tree, so that the tables do not grow step by step.
+    fn default() -> Self {
+        Search {
+            chosen: HashMap::with_capacity_and_hasher(64, Default::default()),
+            made: FixedBitSet::new(),
+            in_tree: FixedBitSet::new(),
+            visited: FixedBitSet::new(),
+            queue: VecDeque::with_capacity(64),
+            inputs: Vec::with_capacity(8),
+            stack: Vec::with_capacity(64),
+            seen: HashSet::with_capacity_and_hasher(64, Default::default()),
+            done: FixedBitSet::new(),
+            reached: FixedBitSet::new(),
+            order_stack: Vec::with_capacity(512),
+        }
     }
-    if !chosen.contains_key(&from) {
-        return false;
-    }
-    let (stack, seen) = scratch;
-    stack.clear();
-    seen.clear();
-    stack.push(from);
-    while let Some(n) = stack.pop() {
-        if n == target {
+}
+
+impl Search {
+    /// Whether `target` can be reached from `from` following chosen producers (node → unit → inputs).
+    fn depends_on(&mut self, kb: &KnowledgeBase, from: NodeId, target: NodeId) -> bool {
+        if from == target {
             return true;
         }
-        if !seen.insert(n) {
-            continue;
+        if !self.made.contains(from) {
+            return false;
         }
-        if let Some(&u) = chosen.get(&n) {
-            stack.extend(kb.units[u].input_nodes());
+        self.stack.clear();
+        self.seen.clear();
+        self.stack.push(from);
+        while let Some(n) = self.stack.pop() {
+            if n == target {
+                return true;
+            }
+            if !self.seen.insert(n) {
+                continue;
+            }
+            if let Some(&u) = self.chosen.get(&n) {
+                self.stack.extend(kb.units[u].input_nodes());
+            }
         }
+        false
     }
-    false
 }
 
 /// A unit making the node being expanded, as the search weighs it.
@@ -119,24 +154,24 @@ pub(crate) fn retrieve_within(
     prefer: Option<u32>,
     allowed: impl Fn(UnitId) -> bool,
 ) -> Option<Retrieved> {
-    // sized for a typical recipe's tree, so that the tables do not grow step by step
-    let mut chosen: HashMap<NodeId, UnitId> =
-        HashMap::with_capacity_and_hasher(64, Default::default());
-    // bit sets over the knowledge base: a few hundred bytes even at 100x FOON-111, cheaper than hashing
-    let mut in_tree = FixedBitSet::with_capacity(kb.units.len());
+    let mut search = scorer.search.borrow_mut();
+    let s = &mut *search;
+    s.chosen.clear();
+    // the last complete retrieval took the table
+    s.chosen.reserve(64);
+    for (set, len) in [
+        (&mut s.made, kb.nodes.len()),
+        (&mut s.in_tree, kb.units.len()),
+        (&mut s.visited, kb.nodes.len()),
+    ] {
+        set.clear();
+        set.grow(len);
+    }
+    s.queue.clear();
+    s.queue.push_back((root, None));
+    s.visited.insert(root);
     let mut blocked = Vec::new();
-    let mut visited = FixedBitSet::with_capacity(kb.nodes.len());
-    let mut scratch = (
-        Vec::new(),
-        HashSet::with_capacity_and_hasher(64, Default::default()),
-    );
-    // each node with the unit that needs it (None for the root)
-    let mut queue: VecDeque<(NodeId, Option<UnitId>)> = VecDeque::with_capacity(64);
-    queue.push_back((root, None));
-    visited.insert(root);
-    // a chosen unit's inputs, sorted (one buffer for the whole search)
-    let mut inputs: Vec<NodeId> = Vec::with_capacity(8);
-    while let Some((node, parent)) = queue.pop_front() {
+    while let Some((node, parent)) = s.queue.pop_front() {
         if node != root && kb.kitchen.get(node).copied().unwrap_or(true) {
             continue;
         }
@@ -162,17 +197,14 @@ pub(crate) fn retrieve_within(
                 Some(p) => index.share_recipe(u, p),
                 None => prefer.is_some_and(|p| index.sources(u).contains(&p)),
             };
-            if unit
-                .input_nodes()
-                .any(|n| depends_on(kb, &chosen, n, node, &mut scratch))
-            {
+            if unit.input_nodes().any(|n| s.depends_on(kb, n, node)) {
                 cyclic = true;
                 cyclic_in_recipe |= same_recipe;
                 continue; // would close a cycle
             }
             let mut candidate = Candidate {
                 unit: u,
-                reused: in_tree.contains(u),
+                reused: s.in_tree.contains(u),
                 same_recipe,
                 g: None,
             };
@@ -203,61 +235,61 @@ pub(crate) fn retrieve_within(
         if !allowed(u) {
             return None;
         }
-        chosen.insert(node, u);
-        in_tree.insert(u);
-        inputs.clear();
-        inputs.extend(kb.units[u].input_nodes());
-        inputs.sort_unstable();
-        for &n in &inputs {
-            if !visited.put(n) {
-                queue.push_back((n, Some(u)));
+        s.chosen.insert(node, u);
+        s.made.insert(node);
+        s.in_tree.insert(u);
+        s.inputs.clear();
+        s.inputs.extend(kb.units[u].input_nodes());
+        s.inputs.sort_unstable();
+        for &n in &s.inputs {
+            if !s.visited.put(n) {
+                s.queue.push_back((n, Some(u)));
             }
         }
     }
-    let units = execution_order(kb, &chosen, root, &mut inputs);
+    let units = s.execution_order(kb, root);
     Some(Retrieved {
         units,
-        chosen,
+        chosen: std::mem::take(&mut s.chosen),
         blocked,
     })
 }
 
-/// Post-order of the chosen units from `root`: each unit after the units making its inputs.
-fn execution_order(
-    kb: &KnowledgeBase,
-    chosen: &HashMap<NodeId, UnitId>,
-    root: NodeId,
-    inputs: &mut Vec<NodeId>,
-) -> Vec<UnitId> {
-    let mut order = Vec::with_capacity(chosen.len());
-    let mut done = FixedBitSet::with_capacity(kb.units.len());
-    let mut seen_nodes = FixedBitSet::with_capacity(kb.nodes.len());
-    // iterative DFS: (node, expanded?), sized for a unit's handful of inputs so that it does not grow
-    // step by step
-    let mut stack: Vec<(NodeId, bool)> = Vec::with_capacity(8 * chosen.len() + 1);
-    stack.push((root, false));
-    while let Some((node, expanded)) = stack.pop() {
-        let Some(&u) = chosen.get(&node) else {
-            continue;
-        };
-        if expanded {
-            if !done.put(u) {
-                order.push(u);
+impl Search {
+    /// Post-order of the chosen units from `root`: each unit after the units making its inputs.
+    fn execution_order(&mut self, kb: &KnowledgeBase, root: NodeId) -> Vec<UnitId> {
+        let mut order = Vec::with_capacity(self.chosen.len());
+        self.done.clear();
+        self.done.grow(kb.units.len());
+        self.reached.clear();
+        self.reached.grow(kb.nodes.len());
+        // iterative DFS: (node, expanded?)
+        let stack = &mut self.order_stack;
+        stack.clear();
+        stack.push((root, false));
+        while let Some((node, expanded)) = stack.pop() {
+            let Some(&u) = self.chosen.get(&node) else {
+                continue;
+            };
+            if expanded {
+                if !self.done.put(u) {
+                    order.push(u);
+                }
+                continue;
             }
-            continue;
-        }
-        if seen_nodes.put(node) || done.contains(u) {
-            continue;
-        }
-        stack.push((node, true));
-        inputs.clear();
-        inputs.extend(kb.units[u].input_nodes());
-        inputs.sort_unstable();
-        for &n in inputs.iter().rev() {
-            if !seen_nodes.contains(n) {
-                stack.push((n, false));
+            if self.reached.put(node) || self.done.contains(u) {
+                continue;
+            }
+            stack.push((node, true));
+            self.inputs.clear();
+            self.inputs.extend(kb.units[u].input_nodes());
+            self.inputs.sort_unstable();
+            for &n in self.inputs.iter().rev() {
+                if !self.reached.contains(n) {
+                    stack.push((n, false));
+                }
             }
         }
+        order
     }
-    order
 }
