@@ -68,13 +68,15 @@ impl Default for Search {
 
 impl Search {
     /// Whether `target` can be reached from `from` following chosen producers (node → unit → inputs).
+    /// Inlined: the search asks it of every input of every candidate unit, and most are answered
+    /// without the walk.
+    #[inline]
     fn depends_on(&mut self, kb: &KnowledgeBase, from: NodeId, target: NodeId) -> bool {
-        if from == target {
-            return true;
-        }
-        if !self.made.contains(from) {
-            return false;
-        }
+        from == target || (self.made.contains(from) && self.walk_to(kb, from, target))
+    }
+
+    /// `depends_on`'s walk from a made node.
+    fn walk_to(&mut self, kb: &KnowledgeBase, from: NodeId, target: NodeId) -> bool {
         self.stack.clear();
         self.seen.clear();
         self.stack.push(from);
