@@ -676,14 +676,8 @@ fn restate<'kb>(
         .into_iter()
         .map(str::to_string)
         .collect();
-    let new_node = ObjectNode::new(o, vec![State::plain(s)]);
     let consumers: Vec<TUnitId> = tree.consumers(leaf, &order).collect();
-    let new_slot = tree.add_slot(Cow::Owned(new_node));
-    let mut inputs = vec![(leaf, true)];
-    if let Some(t) = ctx.index.utensil_for(&motion) {
-        inputs.push((utensil_slot(ctx.kb, tree, t), false));
-    }
-    tree.add_unit(inputs, &motion, vec![(new_slot, true)], Origin::Grafted);
+    let new_slot = add_state_unit(ctx, tree, leaf, o, s, &motion);
     for &v in &consumers {
         for i in tree.units[v].inputs.iter_mut() {
             if i.0 == leaf {
@@ -696,6 +690,27 @@ fn restate<'kb>(
         tree.slots[x].node = Cow::Owned(node);
     }
     Ok(format!("added '{motion}' to make it '{s}'"))
+}
+
+/// Adds a unit bringing slot `from` to `label` in the state `s` by `motion`, with the utensil FOON uses
+/// most for it; returns the new slot.
+fn add_state_unit<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    from: SlotId,
+    label: &str,
+    s: &str,
+    motion: &str,
+) -> SlotId {
+    let made = tree.add_slot(Cow::Owned(ObjectNode::new(label, vec![State::plain(s)])));
+    // room for the utensil: the list does not grow for it
+    let mut inputs = Vec::with_capacity(2);
+    inputs.push((from, true));
+    if let Some(t) = ctx.index.utensil_for(motion) {
+        inputs.push((utensil_slot(ctx.kb, tree, t), false));
+    }
+    tree.add_unit(inputs, motion, vec![(made, true)], Origin::Grafted);
+    made
 }
 
 /// A slot for a utensil node: the tree's own when it is a starting item there, else a new one.
@@ -896,20 +911,21 @@ fn attach_point(
         if !takes {
             continue;
         }
-        let (more, pref) = motion_fit(ctx.class, &unit.motion);
-        if !more {
-            continue;
-        }
         // a unit that adds an ingredient, not one that only moves the dish itself
         let adds = unit.inputs.iter().any(|i| {
             let x = &tree.slots[i.0];
             i.1 && !x.utensil && x.node.label != goal_label
         });
-        let beats = |kin: bool| {
+        let beats = |kin: bool, pref: usize| {
             let key = (adds, kin, usize::MAX - pref);
             best.as_ref().is_none_or(|(_, b)| key > *b).then_some(key)
         };
-        if beats(true).is_none() {
+        // not even with kin ingredients and the dish's first motion: its motion is not looked up
+        if beats(true, 0).is_none() {
+            continue;
+        }
+        let (more, pref) = motion_fit(ctx.class, &unit.motion);
+        if !more || beats(true, pref).is_none() {
             continue;
         }
         let kin = unit.inputs.iter().any(|i| {
@@ -922,7 +938,7 @@ fn attach_point(
                     ctx.sim.accepts(sim) && sim < 1.0
                 })
         });
-        if let Some(key) = beats(kin) {
+        if let Some(key) = beats(kin, pref) {
             best = Some((u, key));
             // a unit adding ingredients of the same kind with the dish's first motion: none beats it
             if key == (true, true, usize::MAX) {
@@ -1049,13 +1065,7 @@ fn finish_branch<'kb>(
     }
     if !in_state && !c.is_starting() && c != Category::Other {
         if let Some(motion) = ctx.index.motion_for(s) {
-            let node = ObjectNode::new(eq, vec![State::plain(s)]);
-            let x = tree.add_slot(Cow::Owned(node));
-            let mut inputs = vec![(last, true)];
-            if let Some(t) = ctx.index.utensil_for(&motion) {
-                inputs.push((utensil_slot(ctx.kb, tree, t), false));
-            }
-            tree.add_unit(inputs, &motion, vec![(x, true)], Origin::Grafted);
+            let x = add_state_unit(ctx, tree, last, eq, s, &motion);
             let _ = write!(how, ", then '{motion}' to make it '{s}'");
             chosen_state = s.into();
             last = x;

@@ -218,11 +218,13 @@ impl<'kb> Tree<'kb> {
         for &u in &r.units {
             let unit = &kb.units[u];
             let tu = self.units.len();
-            let inputs = unit
-                .inputs
-                .iter()
-                .map(|o| (self.kb_slot(kb, o.node, slot_of), o.moves))
-                .collect();
+            // room for one more: a new ingredient joins one of these units (`modify::finish_branch`)
+            let mut inputs = Vec::with_capacity(unit.inputs.len() + 1);
+            inputs.extend(
+                unit.inputs
+                    .iter()
+                    .map(|o| (self.kb_slot(kb, o.node, slot_of), o.moves)),
+            );
             let outputs = unit
                 .outputs
                 .iter()
