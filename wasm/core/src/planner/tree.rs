@@ -73,8 +73,11 @@ pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<St
         }
         false
     });
-    node.states.sort();
-    node.states.dedup();
+    // an edit seldom reorders states (only among states of one name): sorted and made unique only then
+    if !node.states.is_sorted_by(|a, b| a < b) {
+        node.states.sort();
+        node.states.dedup();
+    }
 }
 
 /// Adds an item to a list of contents (sorted and unique) unless it is there.
