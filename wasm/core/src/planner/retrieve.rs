@@ -44,7 +44,7 @@ pub(crate) struct Search {
     /// `execution_order`'s units placed, nodes reached, and DFS stack.
     done: FixedBitSet,
     reached: FixedBitSet,
-    order_stack: Vec<(NodeId, bool)>,
+    order_stack: Vec<(NodeId, Option<UnitId>)>,
 }
 
 impl Default for Search {
@@ -75,20 +75,22 @@ impl Search {
         from == target || (self.made.contains(from) && self.walk_to(kb, from, target))
     }
 
-    /// `depends_on`'s walk from a made node.
+    /// `depends_on`'s walk from a made node, through made nodes only (the others lead nowhere).
     fn walk_to(&mut self, kb: &KnowledgeBase, from: NodeId, target: NodeId) -> bool {
         self.stack.clear();
         self.seen.clear();
         self.stack.push(from);
         while let Some(n) = self.stack.pop() {
-            if n == target {
-                return true;
-            }
             if !self.seen.insert(n) {
                 continue;
             }
-            if let Some(&u) = self.chosen.get(&n) {
-                self.stack.extend(kb.units[u].input_nodes());
+            for i in kb.units[self.chosen[&n]].input_nodes() {
+                if i == target {
+                    return true;
+                }
+                if self.made.contains(i) {
+                    self.stack.push(i);
+                }
             }
         }
         false
@@ -265,30 +267,32 @@ impl Search {
         self.done.grow(kb.units.len());
         self.reached.clear();
         self.reached.grow(kb.nodes.len());
-        // iterative DFS: (node, expanded?)
+        // iterative DFS over made nodes: (node, its unit once its inputs are pushed)
         let stack = &mut self.order_stack;
         stack.clear();
-        stack.push((root, false));
+        if self.made.contains(root) {
+            stack.push((root, None));
+        }
         while let Some((node, expanded)) = stack.pop() {
-            let Some(&u) = self.chosen.get(&node) else {
-                continue;
-            };
-            if expanded {
+            if let Some(u) = expanded {
                 if !self.done.put(u) {
                     order.push(u);
                 }
                 continue;
             }
+            let u = self.chosen[&node];
             if self.reached.put(node) || self.done.contains(u) {
                 continue;
             }
-            stack.push((node, true));
+            stack.push((node, Some(u)));
             self.inputs.clear();
-            self.inputs.extend(kb.units[u].input_nodes());
+            let made = &self.made;
+            self.inputs
+                .extend(kb.units[u].input_nodes().filter(|&n| made.contains(n)));
             self.inputs.sort_unstable();
             for &n in self.inputs.iter().rev() {
                 if !self.reached.contains(n) {
-                    stack.push((n, false));
+                    stack.push((n, None));
                 }
             }
         }
