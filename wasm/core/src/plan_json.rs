@@ -314,6 +314,9 @@ impl Json for IngredientOutcome {
     }
 }
 
+/// How many of the last nodes written `Units` looks through for a node written before.
+const SHARED_NODE_WINDOW: usize = 64;
+
 /// The plan's units. A node several units share (what one unit makes and the next uses, a bowl) is
 /// written once and then copied from there: about 40 % of a plan's nodes.
 struct Units<'a>(&'a [PlanUnit]);
@@ -329,8 +332,14 @@ impl Json for Units<'_> {
                     out.push(b',');
                 }
                 let at = Arc::as_ptr(node);
-                // a node is mostly used again soon after it was made: looked for from the last
-                match written.iter().rev().find(|w| w.0 == at) {
+                // a node is mostly used again soon after it was made: looked for among the last few
+                // (a bound, so that a plan of thousands of units is not written in quadratic time)
+                match written
+                    .iter()
+                    .rev()
+                    .take(SHARED_NODE_WINDOW)
+                    .find(|w| w.0 == at)
+                {
                     Some((_, range)) => out.extend_from_within(range.clone()),
                     None => {
                         let from = out.len();
