@@ -694,3 +694,36 @@ fn the_plan_does_not_depend_on_the_order_of_the_files() {
     let backward = plan_of(&[("soup.txt", SOUP), ("salad.txt", SALAD)], &SIM, &q);
     assert_eq!(forward, backward);
 }
+
+#[test]
+fn a_state_change_comes_after_the_trees_cut_of_the_ingredient() {
+    // the salad slices its tomato; the user wants it mashed: mashed after slicing, never sliced mash
+    let p = plan_of(BOTH, &SIM, &query("salad", &[("tomato", "mashed")]));
+    let o = outcome(&p, "tomato");
+    assert_eq!(o.case, Some(3));
+    assert_eq!(
+        o.reason.as_deref(),
+        Some("added 'mix' after 'slice' to make it 'mashed'")
+    );
+    let all = units(&p);
+    let slice = all.iter().position(|u| u.starts_with("slice:")).unwrap();
+    let mash = all
+        .iter()
+        .position(|u| u.ends_with("-> tomato (mashed, on [cutting board])"))
+        .unwrap_or_else(|| panic!("{all:#?}"));
+    assert!(slice < mash, "{all:#?}");
+    assert_eq!(p.units[mash].origin, Origin::Grafted);
+    // no node is both sliced and mashed, and the salad takes the mashed tomato
+    for n in p
+        .units
+        .iter()
+        .flat_map(|u| u.inputs.iter().chain(u.outputs.iter()))
+    {
+        let has = |s: &str| n.states.iter().any(|x| x == s);
+        assert!(!(has("sliced") && has("mashed")), "{all:#?}");
+    }
+    assert_eq!(
+        all.last().unwrap(),
+        "mix: salad bowl (empty) + tomato (mashed, on [cutting board]) -> garden salad (contains {tomato}, in [salad bowl], mixed)"
+    );
+}

@@ -629,31 +629,7 @@ fn restate<'kb>(
     if SEPARATION.contains(&c) {
         // swap the tree's own cutting step for one reaching the wanted state
         for &u in &order {
-            let unit = &tree.units[u];
-            let gained: Option<(SlotId, Vec<String>)> = unit.outputs.iter().find_map(|&(x, _)| {
-                let out = &tree.slots[x].node;
-                if out.label != o {
-                    return None;
-                }
-                let before: BTreeSet<&str> = unit
-                    .inputs
-                    .iter()
-                    .map(|i| &tree.slots[i.0].node)
-                    .filter(|n| n.label == o)
-                    .flat_map(|n| n.physical_states())
-                    .collect();
-                if before.is_empty() && !unit.inputs.iter().any(|i| tree.slots[i.0].node.label == o)
-                {
-                    return None;
-                }
-                let g: Vec<String> = food_states(out)
-                    .into_iter()
-                    .filter(|st| !before.contains(st) && SEPARATION.contains(&category(st)))
-                    .map(str::to_string)
-                    .collect();
-                (!g.is_empty()).then_some((x, g))
-            });
-            if let Some((_, old)) = gained {
+            if let Some((_, old)) = cut_in(tree, u, o) {
                 let targets = downstream(tree, vec![u], o, &order);
                 for x in targets {
                     let node = replace_states(&tree.slots[x].node, &old, s);
@@ -671,16 +647,36 @@ fn restate<'kb>(
             }
         }
     }
-    // prepend a unit bringing the starting node to the wanted state
-    let old: Vec<String> = food_states(&leaf_node)
+    // The unit bringing the ingredient to the wanted state comes after the tree's last cut of it (a
+    // lime chopped, then squeezed), so that nothing cuts what is already juice or mashed; when the tree
+    // does not cut it, or the cut piece goes on only as a container's contents through units pruning
+    // may drop (a unit after the cut would then make nothing used), before its first use.
+    let cut = order.iter().rev().find_map(|&u| {
+        let (x, _) = cut_in(tree, u, o)?;
+        let goes_on = tree.consumers(x, &order).any(|v| {
+            tree.units[v]
+                .outputs
+                .iter()
+                .any(|&(y, _)| y == tree.goal || tree.slots[y].node.label == o)
+        });
+        (goes_on && node_category(&tree.slots[x].node).reaches(c)).then_some((x, u))
+    });
+    let from = cut.map_or(leaf, |(x, _)| x);
+    let from_node = tree.slots[from].node.clone();
+    let old: Vec<String> = food_states(&from_node)
         .into_iter()
         .map(str::to_string)
         .collect();
-    let consumers: Vec<TUnitId> = tree.consumers(leaf, &order).collect();
-    let new_slot = add_state_unit(ctx, tree, leaf, o, s, &motion);
+    // after a cut the ingredient stays where it was cut
+    let made = match cut {
+        Some(_) => replace_states(&from_node, &old, s),
+        None => ObjectNode::new(o, vec![State::plain(s)]),
+    };
+    let consumers: Vec<TUnitId> = tree.consumers(from, &order).collect();
+    let new_slot = add_state_unit(ctx, tree, from, made, &motion);
     for &v in &consumers {
         for i in tree.units[v].inputs.iter_mut() {
-            if i.0 == leaf {
+            if i.0 == from {
                 i.0 = new_slot;
             }
         }
@@ -689,20 +685,53 @@ fn restate<'kb>(
         let node = replace_states(&tree.slots[x].node, &old, s);
         tree.slots[x].node = Cow::Owned(node);
     }
-    Ok(format!("added '{motion}' to make it '{s}'"))
+    Ok(match cut {
+        Some((_, u)) => format!(
+            "added '{motion}' after '{}' to make it '{s}'",
+            tree.units[u].motion
+        ),
+        None => format!("added '{motion}' to make it '{s}'"),
+    })
 }
 
-/// Adds a unit bringing slot `from` to `label` in the state `s` by `motion`, with the utensil FOON uses
-/// most for it; returns the new slot.
+/// The output of unit `u` in which `o` gains a cut (a separation state none of its inputs `o` has),
+/// with the states gained.
+fn cut_in(tree: &Tree, u: TUnitId, o: &str) -> Option<(SlotId, Vec<String>)> {
+    let unit = &tree.units[u];
+    unit.outputs.iter().find_map(|&(x, _)| {
+        let out = &tree.slots[x].node;
+        if out.label != o {
+            return None;
+        }
+        let before: BTreeSet<&str> = unit
+            .inputs
+            .iter()
+            .map(|i| &tree.slots[i.0].node)
+            .filter(|n| n.label == o)
+            .flat_map(|n| n.physical_states())
+            .collect();
+        if before.is_empty() && !unit.inputs.iter().any(|i| tree.slots[i.0].node.label == o) {
+            return None;
+        }
+        let g: Vec<String> = food_states(out)
+            .into_iter()
+            .filter(|st| !before.contains(st) && SEPARATION.contains(&category(st)))
+            .map(str::to_string)
+            .collect();
+        (!g.is_empty()).then_some((x, g))
+    })
+}
+
+/// Adds a unit making `made` (the ingredient in a new state) from slot `from` by `motion`, with the
+/// utensil FOON uses most for it; returns the new slot.
 fn add_state_unit<'kb>(
     ctx: &Context<'kb>,
     tree: &mut Tree<'kb>,
     from: SlotId,
-    label: &str,
-    s: &str,
+    made: ObjectNode,
     motion: &str,
 ) -> SlotId {
-    let made = tree.add_slot(Cow::Owned(ObjectNode::new(label, vec![State::plain(s)])));
+    let made = tree.add_slot(Cow::Owned(made));
     // room for the utensil: the list does not grow for it
     let mut inputs = Vec::with_capacity(2);
     inputs.push((from, true));
@@ -1065,7 +1094,8 @@ fn finish_branch<'kb>(
     }
     if !in_state && !c.is_starting() && c != Category::Other {
         if let Some(motion) = ctx.index.motion_for(s) {
-            let x = add_state_unit(ctx, tree, last, eq, s, &motion);
+            let made = ObjectNode::new(eq, vec![State::plain(s)]);
+            let x = add_state_unit(ctx, tree, last, made, &motion);
             let _ = write!(how, ", then '{motion}' to make it '{s}'");
             chosen_state = s.into();
             last = x;
