@@ -145,6 +145,11 @@ fn query(dish: &str, items: &[(&str, &str)]) -> String {
     )
 }
 
+/// A sound plan for a salad of `items` against both recipes.
+fn salad(items: &[(&str, &str)]) -> Plan {
+    plan_of(BOTH, &SIM, &query("salad", items))
+}
+
 const BOTH: &[(&str, &str)] = &[("salad.txt", SALAD), ("soup.txt", SOUP)];
 const SIM: Pairs = Pairs(&[
     ("cherry tomato", "tomato", 0.9),
@@ -206,11 +211,7 @@ fn goal_contents(p: &Plan) -> Vec<&str> {
 
 #[test]
 fn case_1_object_and_state_in_the_tree_change_nothing() {
-    let p = plan_of(
-        BOTH,
-        &SIM,
-        &query("salad", &[("tomato", "sliced"), ("lettuce", "chopped")]),
-    );
+    let p = salad(&[("tomato", "sliced"), ("lettuce", "chopped")]);
     assert_eq!(p.goal.label, "garden salad");
     for (object, state) in [("tomato", "sliced"), ("lettuce", "chopped")] {
         let o = outcome(&p, object);
@@ -244,14 +245,7 @@ fn case_1_object_and_state_in_the_tree_change_nothing() {
 
 #[test]
 fn case_2_an_equivalent_in_the_same_state_is_renamed() {
-    let p = plan_of(
-        BOTH,
-        &SIM,
-        &query(
-            "salad",
-            &[("cherry tomato", "sliced"), ("lettuce", "chopped")],
-        ),
-    );
+    let p = salad(&[("cherry tomato", "sliced"), ("lettuce", "chopped")]);
     let o = outcome(&p, "cherry tomato");
     assert_eq!(o.case, Some(2));
     assert_eq!(o.status, Status::Planned);
@@ -271,18 +265,11 @@ fn case_2_an_equivalent_in_the_same_state_is_renamed() {
 
 #[test]
 fn case_2_copies_the_branch_when_the_equivalent_is_asked_for_too() {
-    let p = plan_of(
-        BOTH,
-        &SIM,
-        &query(
-            "salad",
-            &[
-                ("tomato", "sliced"),
-                ("cherry tomato", "sliced"),
-                ("lettuce", "chopped"),
-            ],
-        ),
-    );
+    let p = salad(&[
+        ("tomato", "sliced"),
+        ("cherry tomato", "sliced"),
+        ("lettuce", "chopped"),
+    ]);
     assert_eq!(outcome(&p, "tomato").case, Some(1));
     assert_eq!(outcome(&p, "cherry tomato").case, Some(2));
     for label in ["tomato", "cherry tomato"] {
@@ -299,11 +286,7 @@ fn case_2_copies_the_branch_when_the_equivalent_is_asked_for_too() {
 #[test]
 fn case_3_grafts_the_units_that_make_the_trees_state_from_the_given_one() {
     // the salad starts from chopped lettuce; the user has a whole one, and the soup recipe chops it
-    let p = plan_of(
-        BOTH,
-        &SIM,
-        &query("salad", &[("tomato", "sliced"), ("lettuce", "whole")]),
-    );
+    let p = salad(&[("tomato", "sliced"), ("lettuce", "whole")]);
     let o = outcome(&p, "lettuce");
     assert_eq!(o.case, Some(3));
     assert_eq!(o.status, Status::Planned);
@@ -327,7 +310,7 @@ fn case_3_grafts_the_units_that_make_the_trees_state_from_the_given_one() {
 #[test]
 fn case_3_says_so_when_the_given_state_cannot_be_reached() {
     // the salad starts from chopped lettuce: lettuce cut coarser cannot be made from it
-    let p = plan_of(BOTH, &SIM, &query("salad", &[("lettuce", "sliced")]));
+    let p = salad(&[("lettuce", "sliced")]);
     let o = outcome(&p, "lettuce");
     assert_eq!(o.case, Some(3));
     assert_eq!(o.status, Status::Planned);
@@ -342,7 +325,7 @@ fn case_3_says_so_when_the_given_state_cannot_be_reached() {
 #[test]
 fn a_state_of_the_same_category_counts_as_matched() {
     // shredded and chopped are both finely cut: the tree's chopped lettuce serves, with a reason
-    let p = plan_of(BOTH, &SIM, &query("salad", &[("lettuce", "shredded")]));
+    let p = salad(&[("lettuce", "shredded")]);
     let o = outcome(&p, "lettuce");
     assert_eq!(o.case, Some(1));
     assert_eq!(o.matched.as_ref().unwrap().state, "chopped");
@@ -354,11 +337,7 @@ fn a_state_of_the_same_category_counts_as_matched() {
 
 #[test]
 fn case_4_renames_and_grafts_from_the_tree() {
-    let p = plan_of(
-        BOTH,
-        &SIM,
-        &query("salad", &[("tomato", "sliced"), ("romaine", "whole")]),
-    );
+    let p = salad(&[("tomato", "sliced"), ("romaine", "whole")]);
     let o = outcome(&p, "romaine");
     assert_eq!(o.case, Some(4));
     let m = o.matched.as_ref().unwrap();
@@ -375,18 +354,11 @@ fn case_4_renames_and_grafts_from_the_tree() {
 #[test]
 fn case_4_takes_a_branch_from_elsewhere_in_foon_and_attaches_it_where_ingredients_mix() {
     // no zucchini anywhere: its equivalent, cucumber, is only in the soup recipe
-    let p = plan_of(
-        BOTH,
-        &SIM,
-        &query(
-            "salad",
-            &[
-                ("tomato", "sliced"),
-                ("lettuce", "chopped"),
-                ("zucchini", "sliced"),
-            ],
-        ),
-    );
+    let p = salad(&[
+        ("tomato", "sliced"),
+        ("lettuce", "chopped"),
+        ("zucchini", "sliced"),
+    ]);
     let o = outcome(&p, "zucchini");
     assert_eq!(o.case, Some(4));
     assert_eq!(o.status, Status::Planned);
@@ -426,11 +398,7 @@ fn case_4_takes_a_branch_from_elsewhere_in_foon_and_attaches_it_where_ingredient
 #[test]
 fn an_exact_foon_label_always_maps_to_itself() {
     // cucumber is a FOON label (in the soup): it is never replaced by the tree's tomato or lettuce
-    let p = plan_of(
-        BOTH,
-        &SIM,
-        &query("salad", &[("tomato", "sliced"), ("cucumber", "sliced")]),
-    );
+    let p = salad(&[("tomato", "sliced"), ("cucumber", "sliced")]);
     let o = outcome(&p, "cucumber");
     let m = o.matched.as_ref().unwrap();
     assert_eq!((m.label.as_str(), m.similarity), ("cucumber", 1.0));
@@ -439,7 +407,7 @@ fn an_exact_foon_label_always_maps_to_itself() {
 
 #[test]
 fn pruning_removes_what_was_not_asked_for_and_keeps_the_tree_connected() {
-    let p = plan_of(BOTH, &SIM, &query("salad", &[("tomato", "sliced")]));
+    let p = salad(&[("tomato", "sliced")]);
     assert_eq!(p.removed, ["lettuce"]);
     assert!(!labels(&p).contains("lettuce"));
     // the goal and the containers no longer list it
@@ -450,11 +418,7 @@ fn pruning_removes_what_was_not_asked_for_and_keeps_the_tree_connected() {
 
 #[test]
 fn an_ingredient_without_any_equivalent_is_unplannable_with_a_reason() {
-    let p = plan_of(
-        BOTH,
-        &SIM,
-        &query("salad", &[("tomato", "sliced"), ("plutonium", "whole")]),
-    );
+    let p = salad(&[("tomato", "sliced"), ("plutonium", "whole")]);
     let o = outcome(&p, "plutonium");
     assert_eq!(o.status, Status::Unplannable);
     assert_eq!(o.case, None);
@@ -542,7 +506,7 @@ fn an_unknown_dish_type_searches_all_goals_and_says_so() {
 fn the_dish_type_picks_the_reference_goal() {
     let soup = plan_of(BOTH, &SIM, &query("soup", &[("lettuce", "chopped")]));
     assert_eq!(soup.goal.label, "green soup");
-    let salad = plan_of(BOTH, &SIM, &query("salad", &[("lettuce", "chopped")]));
+    let salad = salad(&[("lettuce", "chopped")]);
     assert_eq!(salad.goal.label, "garden salad");
 }
 
@@ -560,11 +524,7 @@ fn an_empty_query_is_a_typed_error() {
 
 #[test]
 fn duplicate_ingredients_are_planned_once_with_a_note() {
-    let p = plan_of(
-        BOTH,
-        &SIM,
-        &query("salad", &[("tomato", "sliced"), ("Tomato", " Sliced ")]),
-    );
+    let p = salad(&[("tomato", "sliced"), ("Tomato", " Sliced ")]);
     assert_eq!(p.query.ingredients.len(), 1);
     assert_eq!(p.ingredients.len(), 1);
     assert!(p
@@ -624,11 +584,7 @@ fn without_modification_the_reference_tree_is_returned_as_retrieved() {
 
 #[test]
 fn progress_lines_follow_each_ingredient_to_the_dish() {
-    let p = plan_of(
-        BOTH,
-        &SIM,
-        &query("salad", &[("tomato", "sliced"), ("lettuce", "chopped")]),
-    );
+    let p = salad(&[("tomato", "sliced"), ("lettuce", "chopped")]);
     let line = p
         .progress_lines
         .iter()
@@ -660,11 +616,7 @@ fn progress_lines_follow_each_ingredient_to_the_dish() {
 
 #[test]
 fn exports_read_back_and_have_one_action_per_unit() {
-    let p = plan_of(
-        BOTH,
-        &SIM,
-        &query("salad", &[("tomato", "sliced"), ("zucchini", "sliced")]),
-    );
+    let p = salad(&[("tomato", "sliced"), ("zucchini", "sliced")]);
     // FOON text in the plain dialect reads back as the same units
     let text = foon_text(&p);
     let parsed = parse_str("plan.txt", &text).unwrap_or_else(|e| panic!("{e}\n{text}"));
@@ -698,7 +650,7 @@ fn the_plan_does_not_depend_on_the_order_of_the_files() {
 #[test]
 fn a_state_change_comes_after_the_trees_cut_of_the_ingredient() {
     // the salad slices its tomato; the user wants it mashed: mashed after slicing, never sliced mash
-    let p = plan_of(BOTH, &SIM, &query("salad", &[("tomato", "mashed")]));
+    let p = salad(&[("tomato", "mashed")]);
     let o = outcome(&p, "tomato");
     assert_eq!(o.case, Some(3));
     assert_eq!(
