@@ -158,8 +158,19 @@ pub(crate) fn retrieve_within(
     prefer: Option<u32>,
     allowed: impl Fn(UnitId) -> bool,
 ) -> Option<Retrieved> {
-    let mut search = scorer.search.borrow_mut();
-    let s = &mut *search;
+    // the plan's tables, or tables of its own should a retrieval ever run inside another (a panic
+    // would kill the WASM module)
+    let (mut shared, mut own);
+    let s: &mut Search = match scorer.search.try_borrow_mut() {
+        Ok(tables) => {
+            shared = tables;
+            &mut shared
+        }
+        Err(_) => {
+            own = Search::default();
+            &mut own
+        }
+    };
     s.chosen.clear();
     // the last complete retrieval took the table
     s.chosen.reserve(64);
