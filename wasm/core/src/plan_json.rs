@@ -201,14 +201,17 @@ name!(Status { Planned => "planned", Unplannable => "unplannable" });
 /// Structs field by field, in declaration order and with their serde names. The struct is taken apart
 /// without `..`, so a field added to `plan.rs` and not here does not compile.
 macro_rules! fields {
-    ($t:ident { $($key:literal => $f:ident),* }) => {
+    // `field as Writer`: the field is written through a writer of its own (`Units`)
+    ($t:ident { $($key:literal => $f:ident $(as $writer:ident)?),* }) => {
         impl Json for $t {
             fn write(&self, out: &mut Vec<u8>) {
                 let $t { $($f),* } = self;
-                Object::begin(out) $(.field(key!($key), $f))* .end();
+                Object::begin(out) $(.field(key!($key), fields!(@value $f $($writer)?)))* .end();
             }
         }
     };
+    (@value $f:ident) => { $f };
+    (@value $f:ident $writer:ident) => { &$writer($f) };
 }
 fields!(QueryIngredient { "object" => object, "state" => state });
 fields!(DishClassRef { "index" => index, "name" => name });
@@ -235,39 +238,21 @@ fields!(ProgressLine {
     "motion" => motion,
     "end_product" => end_product
 });
-// taken apart like the others: the plan, whose units share their nodes (`Units`), and the two with a
-// field left out when empty (`skip_serializing_if`)
-impl Json for Plan {
-    fn write(&self, out: &mut Vec<u8>) {
-        let Plan {
-            format_version,
-            query,
-            dish_class,
-            notes,
-            modified,
-            goal,
-            units,
-            ingredients,
-            removed,
-            progress_lines,
-            steps,
-        } = self;
-        Object::begin(out)
-            .field(key!("format_version"), format_version)
-            .field(key!("query"), query)
-            .field(key!("dish_class"), dish_class)
-            .field(key!("notes"), notes)
-            .field(key!("modified"), modified)
-            .field(key!("goal"), goal)
-            .field(key!("units"), &Units(units))
-            .field(key!("ingredients"), ingredients)
-            .field(key!("removed"), removed)
-            .field(key!("progress_lines"), progress_lines)
-            .field(key!("steps"), steps)
-            .end();
-    }
-}
+fields!(Plan {
+    "format_version" => format_version,
+    "query" => query,
+    "dish_class" => dish_class,
+    "notes" => notes,
+    "modified" => modified,
+    "goal" => goal,
+    "units" => units as Units,
+    "ingredients" => ingredients,
+    "removed" => removed,
+    "progress_lines" => progress_lines,
+    "steps" => steps
+});
 
+// the two with a field left out when empty (`skip_serializing_if`), taken apart like the others
 impl Json for Query {
     fn write(&self, out: &mut Vec<u8>) {
         let Query {
