@@ -95,6 +95,45 @@ impl Search {
         }
         false
     }
+
+    /// Post-order of the chosen units from `root`: each unit after the units making its inputs.
+    fn execution_order(&mut self, kb: &KnowledgeBase, root: NodeId) -> Vec<UnitId> {
+        let mut order = Vec::with_capacity(self.chosen.len());
+        self.done.clear();
+        self.done.grow(kb.units.len());
+        self.reached.clear();
+        self.reached.grow(kb.nodes.len());
+        // iterative DFS over made nodes: (node, its unit once its inputs are pushed)
+        let stack = &mut self.order_stack;
+        stack.clear();
+        if self.made.contains(root) {
+            stack.push((root, None));
+        }
+        while let Some((node, expanded)) = stack.pop() {
+            if let Some(u) = expanded {
+                if !self.done.put(u) {
+                    order.push(u);
+                }
+                continue;
+            }
+            let u = self.chosen[&node];
+            if self.reached.put(node) || self.done.contains(u) {
+                continue;
+            }
+            stack.push((node, Some(u)));
+            self.inputs.clear();
+            let made = &self.made;
+            self.inputs
+                .extend(kb.units[u].input_nodes().filter(|&n| made.contains(n)));
+            self.inputs.sort_unstable();
+            for &n in self.inputs.iter().rev() {
+                if !self.reached.contains(n) {
+                    stack.push((n, None));
+                }
+            }
+        }
+        order
+    }
 }
 
 /// A unit making the node being expanded, as the search weighs it.
@@ -268,45 +307,4 @@ pub(crate) fn retrieve_within(
         chosen: std::mem::take(&mut s.chosen),
         blocked,
     })
-}
-
-impl Search {
-    /// Post-order of the chosen units from `root`: each unit after the units making its inputs.
-    fn execution_order(&mut self, kb: &KnowledgeBase, root: NodeId) -> Vec<UnitId> {
-        let mut order = Vec::with_capacity(self.chosen.len());
-        self.done.clear();
-        self.done.grow(kb.units.len());
-        self.reached.clear();
-        self.reached.grow(kb.nodes.len());
-        // iterative DFS over made nodes: (node, its unit once its inputs are pushed)
-        let stack = &mut self.order_stack;
-        stack.clear();
-        if self.made.contains(root) {
-            stack.push((root, None));
-        }
-        while let Some((node, expanded)) = stack.pop() {
-            if let Some(u) = expanded {
-                if !self.done.put(u) {
-                    order.push(u);
-                }
-                continue;
-            }
-            let u = self.chosen[&node];
-            if self.reached.put(node) || self.done.contains(u) {
-                continue;
-            }
-            stack.push((node, Some(u)));
-            self.inputs.clear();
-            let made = &self.made;
-            self.inputs
-                .extend(kb.units[u].input_nodes().filter(|&n| made.contains(n)));
-            self.inputs.sort_unstable();
-            for &n in self.inputs.iter().rev() {
-                if !self.reached.contains(n) {
-                    stack.push((n, None));
-                }
-            }
-        }
-        order
-    }
 }
