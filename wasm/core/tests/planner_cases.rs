@@ -679,3 +679,97 @@ fn a_state_change_comes_after_the_trees_cut_of_the_ingredient() {
         "mix: salad bowl (empty) + tomato (mashed, on [cutting board]) -> garden salad (contains {tomato}, in [salad bowl], mixed)"
     );
 }
+
+/// A salad dressed with vinegar poured from its bottle (the node says nothing of the vinegar's food
+/// state), and a soup whose recipe starts the vinegar in the state `{vinegar}` and squeezes a lime.
+fn dressed(vinegar: &str) -> [(String, String); 2] {
+    let salad = "//
+O\tsalad bowl\t0
+S\tempty
+O\tlettuce\t1
+S\tchopped
+O\tvinegar\t1
+S\tin\t[bottle]
+M\tmix\t<Assumed>
+O\tdressed salad\t1\t15
+S\tmixed
+S\tcontains\t{lettuce,vinegar}
+S\tin\t[salad bowl]
+//
+";
+    let soup = format!(
+        "//
+O\tlime\t1
+S\twhole
+O\tsqueezer\t0
+S\tclean
+M\tsqueeze\t<Assumed>
+O\tlime\t1
+S\tjuice
+//
+O\tpot\t0
+S\tempty
+O\tlime\t1
+S\tjuice
+O\tvinegar\t1
+S\t{vinegar}
+S\tin\t[bottle]
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{{lime,vinegar}}
+//
+O\tpot\t0
+S\tcontains\t{{lime,vinegar}}
+M\tboil\t<Assumed>
+O\tsour soup\t1\t1
+S\tcooked
+S\tcontains\t{{lime,vinegar}}
+S\tin\t[pot]
+//
+"
+    );
+    [
+        ("salad.txt".to_string(), salad.to_string()),
+        ("soup.txt".to_string(), soup),
+    ]
+}
+
+fn dressed_salad(vinegar: &str, modify: bool) -> Plan {
+    let files = dressed(vinegar);
+    let files: Vec<(&str, &str)> = files
+        .iter()
+        .map(|(n, t)| (n.as_str(), t.as_str()))
+        .collect();
+    let mut request = query("salad", &[("lettuce", "chopped"), ("vinegar", "juice")]);
+    if !modify {
+        request = request.replacen('{', r#"{"modify": false, "#, 1);
+    }
+    plan_of(&files, &ExactMatch, &request)
+}
+
+#[test]
+fn an_ingredient_foon_starts_as_a_liquid_is_not_squeezed_to_be_one() {
+    // FOON's recipes start vinegar liquid: the salad's bottled vinegar is the 'juice' asked for
+    let p = dressed_salad("liquid", true);
+    let o = outcome(&p, "vinegar");
+    assert_eq!(o.case, Some(1), "{o:#?}");
+    assert_eq!(
+        o.reason.as_deref(),
+        Some("state 'juice' matched by category (liquid): FOON's recipes start 'vinegar' as a liquid")
+    );
+    assert_eq!(
+        units(&p),
+        ["mix: lettuce (chopped) + salad bowl (empty) + vinegar (in [bottle]) -> dressed salad (contains {lettuce,vinegar}, in [salad bowl], mixed)"]
+    );
+    assert_eq!(dressed_salad("liquid", false).ingredients[1].case, Some(1));
+    // had FOON's recipes started it whole, the state would be made, with FOON's motion for juice
+    let p = dressed_salad("whole", true);
+    let o = outcome(&p, "vinegar");
+    assert_eq!(o.case, Some(3), "{o:#?}");
+    assert_eq!(
+        o.reason.as_deref(),
+        Some("added 'squeeze' to make it 'juice'")
+    );
+    assert!(makes(&p, "squeeze", "vinegar", "juice"), "{:#?}", units(&p));
+    assert_eq!(dressed_salad("whole", false).ingredients[1].case, Some(3));
+}

@@ -8,7 +8,7 @@ use crate::memo::Memo;
 use crate::model::NodeId;
 use crate::plan::PlanNode;
 use crate::taxonomy::is_utensil;
-use rustc_hash::FxHashMap as HashMap;
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -36,6 +36,9 @@ pub struct PlannerIndex {
     motion_for_category: HashMap<Category, String>,
     /// Motion -> the utensil node most used as an input of it.
     utensil_for_motion: HashMap<String, NodeId>,
+    /// Ingredients FOON's recipes start with as liquids (water, milk, an extract): a node of one without
+    /// food states is liquid, not whole.
+    comes_liquid: HashSet<String>,
     /// Every name of an object or of a listed content, by id.
     label_names: Vec<String>,
     label_ids: HashMap<String, u32>,
@@ -154,6 +157,43 @@ fn goal_classes(
         .map(|(c, goals)| (c, GoalClass::new(goals)))
         .collect();
     (classes, GoalClass::new(usable))
+}
+
+/// Labels whose starting nodes (those no unit makes) with food states are mostly in a liquid state:
+/// what a recipe pours from the bottle rather than cuts from the whole.
+fn liquid_at_start(kb: &KnowledgeBase) -> HashSet<String> {
+    let mut made = vec![false; kb.nodes.len()];
+    for u in &kb.units {
+        for o in u.output_nodes() {
+            made[o] = true;
+        }
+    }
+    // label -> (starting nodes in a liquid state, starting nodes in another food state)
+    let mut votes: HashMap<&str, (u32, u32)> = HashMap::default();
+    for (node, _) in kb
+        .nodes
+        .iter()
+        .zip(&made)
+        .filter(|(n, &m)| !m && !is_utensil(&n.label))
+    {
+        let mut food = node
+            .physical_states()
+            .map(category)
+            .filter(|&c| c != Category::Other);
+        let Some(first) = food.next() else { continue };
+        let liquid = first == Category::Liquid || food.any(|c| c == Category::Liquid);
+        let v = votes.entry(node.label.as_str()).or_default();
+        if liquid {
+            v.0 += 1;
+        } else {
+            v.1 += 1;
+        }
+    }
+    votes
+        .into_iter()
+        .filter(|(_, (liquid, other))| liquid > other)
+        .map(|(label, _)| label.to_string())
+        .collect()
 }
 
 impl PlannerIndex {
@@ -311,6 +351,7 @@ impl PlannerIndex {
             intern(&n.label);
         }
         let (class_goals, all_goals) = goal_classes(kb, &goal_ingredients);
+        let comes_liquid = liquid_at_start(kb);
         PlannerIndex {
             class_goals,
             all_goals,
@@ -334,6 +375,7 @@ impl PlannerIndex {
                 .iter()
                 .filter_map(|(c, m)| Some((*c, best(m)?)))
                 .collect(),
+            comes_liquid,
             utensil_for_motion: motion_utensil
                 .iter()
                 .filter_map(|(m, u)| Some((m.clone(), best(u)?)))
@@ -426,6 +468,11 @@ impl PlannerIndex {
 
     pub(crate) fn is_label(&self, label: &str) -> bool {
         self.by_label.contains_key(label)
+    }
+
+    /// Whether FOON's recipes mostly start `label` as a liquid (see `liquid_at_start`).
+    pub(crate) fn comes_liquid(&self, label: &str) -> bool {
+        self.comes_liquid.contains(label)
     }
 
     /// How common the states are for `label`: summed over `states`, how often `label` is in the state

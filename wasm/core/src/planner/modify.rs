@@ -44,6 +44,16 @@ fn node_category(node: &ObjectNode) -> Category {
         .unwrap_or(Category::Whole)
 }
 
+/// `node_category`, except that an ingredient FOON's recipes start as a liquid is liquid when the node
+/// says nothing of its food (milk in a cup).
+fn food_category(ctx: &Context, node: &ObjectNode) -> Category {
+    if ctx.index.comes_liquid(&node.label) && food_states(node).is_empty() {
+        Category::Liquid
+    } else {
+        node_category(node)
+    }
+}
+
 const SEPARATION: &[Category] = &[
     Category::Trimmed,
     Category::Cut,
@@ -170,7 +180,8 @@ pub(crate) fn modify<'kb>(
         w.low_confidence = eq != o && ctx.sim.low_confidence(o, &eq, sim);
         let slots = tree.slots_with_label(&eq);
         if !enabled {
-            judge_unmodified(tree, o, s, &eq, sim, &slots, &mut w);
+            let in_state = best_state_slot(tree, &slots, s, ctx.index.comes_liquid(&eq));
+            judge_unmodified(tree, o, &eq, sim, &slots, in_state, &mut w);
             works.push(w);
             continue;
         }
@@ -190,7 +201,7 @@ pub(crate) fn modify<'kb>(
         // the equivalent is in the tree: substitute (cases 2, 4) or keep (cases 1, 3)
         w.matched = Some(Match {
             label: eq.as_str().into(),
-            state: tree_state(tree, &slots, s),
+            state: tree_state(tree, &slots, s, ctx.index.comes_liquid(&eq)),
             similarity: sim,
         });
         if eq != o {
@@ -264,7 +275,7 @@ pub(crate) fn modify<'kb>(
             if !lost && !slots.is_empty() {
                 // an earlier ingredient of the same name brought it: one branch serves both
                 if let Some(m) = w.matched.as_mut() {
-                    m.state = tree_state(tree, &slots, &s);
+                    m.state = tree_state(tree, &slots, &s, ctx.index.comes_liquid(&eq));
                 }
                 settle_state(ctx, tree, &eq, o, &s, &slots, &mut restated, w);
                 continue;
@@ -342,7 +353,9 @@ fn settle_state<'kb>(
     restated: &mut HashMap<String, String>,
     w: &mut Work,
 ) {
-    let state_ok = best_state_slot(tree, slots, s).is_some();
+    let liquid = ctx.index.comes_liquid(eq);
+    let in_state = best_state_slot(tree, slots, s, liquid);
+    let state_ok = in_state.is_some();
     w.case = Some(match (eq == o, state_ok) {
         (true, true) => 1,
         (false, true) => 2,
@@ -353,10 +366,18 @@ fn settle_state<'kb>(
         w.reasons.push(format!(
             "state '{s}' is not in the state taxonomy: kept the tree's state"
         ));
-    } else if state_ok && best_exact(tree, slots, s).is_none() {
+    } else if let Some(x) = in_state.filter(|_| best_exact(tree, slots, s).is_none()) {
+        let poured = liquid
+            && category(s) == Category::Liquid
+            && food_states(&tree.slots[x].node).is_empty();
         w.reasons.push(format!(
-            "state '{s}' matched by category ({})",
-            category(s).name()
+            "state '{s}' matched by category ({}){}",
+            category(s).name(),
+            if poured {
+                format!(": FOON's recipes start '{eq}' as a liquid")
+            } else {
+                String::new()
+            }
         ));
     }
     if !state_ok {
@@ -455,14 +476,15 @@ fn equivalent(
     }
 }
 
-/// The case and status of an ingredient when modification is off.
+/// The case and status of an ingredient when modification is off (`in_state`: its slot in the state
+/// asked for, see `best_state_slot`).
 fn judge_unmodified(
     tree: &Tree,
     o: &str,
-    s: &str,
     eq: &str,
     sim: f32,
     slots: &[SlotId],
+    in_state: Option<SlotId>,
     w: &mut Work,
 ) {
     if slots.is_empty() {
@@ -471,7 +493,7 @@ fn judge_unmodified(
             .push("not in the reference task tree (modification off)".to_string());
         return;
     }
-    let slot = best_state_slot(tree, slots, s);
+    let slot = in_state;
     let state = state_text(&tree.slots[slot.unwrap_or(slots[0])].node);
     w.case = Some(match (eq == o, slot.is_some()) {
         (true, true) => 1,
@@ -493,8 +515,8 @@ fn judge_unmodified(
 
 /// The state an ingredient has in the tree, given its label's live slots (`Tree::slots_with_label`,
 /// not empty): that of its slot in the state `s` (see `best_state_slot`), else of the first.
-fn tree_state(tree: &Tree, slots: &[SlotId], s: &str) -> SmolStr {
-    let slot = best_state_slot(tree, slots, s).unwrap_or(slots[0]);
+fn tree_state(tree: &Tree, slots: &[SlotId], s: &str, liquid: bool) -> SmolStr {
+    let slot = best_state_slot(tree, slots, s, liquid).unwrap_or(slots[0]);
     state_text(&tree.slots[slot].node)
 }
 
@@ -507,8 +529,9 @@ fn best_exact(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
 }
 
 /// Of a label's live slots, one in the state `s`: exactly, else by category; a starting state matches a
-/// leaf in a starting state; a state outside the taxonomy matches any.
-fn best_state_slot(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
+/// leaf in a starting state; a liquid state matches a node without food states of an ingredient that
+/// comes liquid (`liquid`: milk in a cup is liquid milk); a state outside the taxonomy matches any.
+fn best_state_slot(tree: &Tree, slots: &[SlotId], s: &str, liquid: bool) -> Option<SlotId> {
     if let Some(x) = best_exact(tree, slots, s) {
         return Some(x);
     }
@@ -526,7 +549,12 @@ fn best_state_slot(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
                     .all(Category::is_starting)
         });
     }
-    slots.find(|&x| categories(x).any(|k| k == c))
+    // a node in the state's category before one taken to be in it
+    let unstated = |x: SlotId| categories(x).all(|k| k == Category::Other);
+    slots
+        .clone()
+        .find(|&x| categories(x).any(|k| k == c))
+        .or_else(|| slots.find(|&x| liquid && c == Category::Liquid && unstated(x)))
 }
 
 /// Live slots of `label` downstream of the given units (through units that pass the object on).
@@ -590,7 +618,7 @@ fn restate<'kb>(
     };
     let leaf_node = tree.slots[leaf].node.clone();
     let leaf_state = state_text(&leaf_node);
-    let leaf_cat = node_category(&leaf_node);
+    let leaf_cat = food_category(ctx, &leaf_node);
     let c = category(s);
     if c.is_starting() {
         // Table I, case 3: the tree starts from a processed leaf; add the units making it from raw
@@ -659,7 +687,7 @@ fn restate<'kb>(
                 .iter()
                 .any(|&(y, _)| y == tree.goal || tree.slots[y].node.label == o)
         });
-        (goes_on && node_category(&tree.slots[x].node).reaches(c)).then_some((x, u))
+        (goes_on && food_category(ctx, &tree.slots[x].node).reaches(c)).then_some((x, u))
     });
     let from = cut.map_or(leaf, |(x, _)| x);
     let from_node = tree.slots[from].node.clone();
@@ -962,10 +990,11 @@ fn attach_point(
             let n = &x.node;
             !x.utensil
                 && n.label != o
-                && ((!matches!(c, Category::Whole | Category::Other) && node_category(n) == c) || {
-                    let sim = ctx.scorer.pair(o, &n.label);
-                    ctx.sim.accepts(sim) && sim < 1.0
-                })
+                && ((!matches!(c, Category::Whole | Category::Other) && food_category(ctx, n) == c)
+                    || {
+                        let sim = ctx.scorer.pair(o, &n.label);
+                        ctx.sim.accepts(sim) && sim < 1.0
+                    })
         });
         if let Some(key) = beats(kin, pref) {
             best = Some((u, key));
@@ -1092,7 +1121,11 @@ fn finish_branch<'kb>(
         tree.slots[last].node = Cow::Owned(node);
         chosen_state = s.into();
     }
-    if !in_state && !c.is_starting() && c != Category::Other {
+    // milk taken in a cup is liquid milk already
+    let poured = c == Category::Liquid
+        && ctx.index.comes_liquid(eq)
+        && food_states(&tree.slots[last].node).is_empty();
+    if !in_state && !poured && !c.is_starting() && c != Category::Other {
         if let Some(motion) = ctx.index.motion_for(s) {
             let made = ObjectNode::new(eq, vec![State::plain(s)]);
             let x = add_state_unit(ctx, tree, last, made, &motion);
