@@ -430,6 +430,23 @@ fn an_ingredient_without_any_equivalent_is_unplannable_with_a_reason() {
         .contains("no equivalent of 'plutonium'"));
     assert!(!labels(&p).contains("plutonium"));
     assert_eq!(outcome(&p, "tomato").status, Status::Planned);
+    // nothing is like it at all: no name is offered as an alternative or as the closest one
+    assert_eq!(
+        o.reason.as_deref(),
+        Some("no equivalent of 'plutonium' in the knowledge base")
+    );
+    assert!(o.alternatives.is_empty(), "{:#?}", o.alternatives);
+    // a name like some labels is offered those, and only those, besides its equivalent
+    const KALE: Pairs = Pairs(&[("kale", "lettuce", 0.6), ("kale", "cucumber", 0.4)]);
+    let p = plan_of(BOTH, &KALE, &query("salad", &[("kale", "chopped")]));
+    let o = outcome(&p, "kale");
+    assert_eq!(o.matched.as_ref().unwrap().label, "lettuce");
+    let offered: Vec<(&str, f32)> = o
+        .alternatives
+        .iter()
+        .map(|a| (a.label.as_str(), a.similarity))
+        .collect();
+    assert_eq!(offered, [("cucumber", 0.4)]);
 }
 
 /// A dessert whose butter is melted from solid and cooled back to solid in the same recipe: the only

@@ -409,10 +409,12 @@ fn equivalent(
     let ranked = ctx
         .sim
         .rank_in_set(o, ctx.index.id, &ctx.index.ingredient_labels, 6);
+    // a name with no likeness at all (similarity 0, as exact matching gives every other name) is no
+    // alternative and no closest name
     let alternatives = |eq: &str| -> Vec<Alternative> {
         ranked
             .iter()
-            .filter(|(l, _)| l != eq && l != o)
+            .filter(|(l, s)| l != eq && l != o && *s > 0.0)
             .take(5)
             .map(|(l, s)| Alternative {
                 label: l.as_str().into(),
@@ -468,6 +470,7 @@ fn equivalent(
                 "no equivalent of '{o}' in the knowledge base{}",
                 ranked
                     .first()
+                    .filter(|(_, s)| *s > 0.0)
                     .map(|(l, s)| format!(" (closest: '{l}', {s:.2})"))
                     .unwrap_or_default()
             ));
