@@ -698,8 +698,10 @@ fn a_state_change_comes_after_the_trees_cut_of_the_ingredient() {
 }
 
 /// A salad dressed with vinegar poured from its bottle (the node says nothing of the vinegar's food
-/// state), and a soup whose recipe starts the vinegar in the state `{vinegar}` and squeezes a lime.
-fn dressed(vinegar: &str) -> [(String, String); 2] {
+/// state), and a soup whose recipe starts the vinegar in the state `vinegar` (in none when `None`) and
+/// squeezes a lime.
+fn dressed(vinegar: Option<&str>) -> [(String, String); 2] {
+    let vinegar = vinegar.map_or(String::new(), |s| format!("S\t{s}\n"));
     let salad = "//
 O\tsalad bowl\t0
 S\tempty
@@ -729,8 +731,7 @@ S\tempty
 O\tlime\t1
 S\tjuice
 O\tvinegar\t1
-S\t{vinegar}
-S\tin\t[bottle]
+{vinegar}S\tin\t[bottle]
 M\tpour\t<Assumed>
 O\tpot\t0
 S\tcontains\t{{lime,vinegar}}
@@ -751,7 +752,7 @@ S\tin\t[pot]
     ]
 }
 
-fn dressed_salad(vinegar: &str, modify: bool) -> Plan {
+fn dressed_salad(vinegar: Option<&str>, modify: bool) -> Plan {
     let files = dressed(vinegar);
     let files: Vec<(&str, &str)> = files
         .iter()
@@ -767,20 +768,23 @@ fn dressed_salad(vinegar: &str, modify: bool) -> Plan {
 #[test]
 fn an_ingredient_foon_starts_as_a_liquid_is_not_squeezed_to_be_one() {
     // FOON's recipes start vinegar liquid: the salad's bottled vinegar is the 'juice' asked for
-    let p = dressed_salad("liquid", true);
+    let p = dressed_salad(Some("liquid"), true);
     let o = outcome(&p, "vinegar");
     assert_eq!(o.case, Some(1), "{o:#?}");
     assert_eq!(
         o.reason.as_deref(),
-        Some("state 'juice' matched by category (liquid): FOON's recipes start 'vinegar' as a liquid")
+        Some("state 'juice' matched by category (liquid): 'vinegar' comes as a liquid")
     );
     assert_eq!(
         units(&p),
         ["mix: lettuce (chopped) + salad bowl (empty) + vinegar (in [bottle]) -> dressed salad (contains {lettuce,vinegar}, in [salad bowl], mixed)"]
     );
-    assert_eq!(dressed_salad("liquid", false).ingredients[1].case, Some(1));
+    assert_eq!(
+        dressed_salad(Some("liquid"), false).ingredients[1].case,
+        Some(1)
+    );
     // had FOON's recipes started it whole, the state would be made, with FOON's motion for juice
-    let p = dressed_salad("whole", true);
+    let p = dressed_salad(Some("whole"), true);
     let o = outcome(&p, "vinegar");
     assert_eq!(o.case, Some(3), "{o:#?}");
     assert_eq!(
@@ -788,5 +792,11 @@ fn an_ingredient_foon_starts_as_a_liquid_is_not_squeezed_to_be_one() {
         Some("added 'squeeze' to make it 'juice'")
     );
     assert!(makes(&p, "squeeze", "vinegar", "juice"), "{:#?}", units(&p));
-    assert_eq!(dressed_salad("whole", false).ingredients[1].case, Some(3));
+    assert_eq!(
+        dressed_salad(Some("whole"), false).ingredients[1].case,
+        Some(3)
+    );
+    // had FOON's recipes never said, the food taxonomy would: vinegar is sold as a liquid
+    let o = outcome(&dressed_salad(None, true), "vinegar").clone();
+    assert_eq!(o.case, Some(1), "{o:#?}");
 }

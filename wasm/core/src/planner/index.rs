@@ -7,6 +7,7 @@ use crate::kb::KnowledgeBase;
 use crate::memo::Memo;
 use crate::model::NodeId;
 use crate::plan::PlanNode;
+use crate::substitute::Taxonomy;
 use crate::taxonomy::is_utensil;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
@@ -159,9 +160,27 @@ fn goal_classes(
     (classes, GoalClass::new(usable))
 }
 
+/// Food taxonomy categories (`data/food_taxonomy.tsv`) of ingredients sold as liquids.
+const LIQUID_FOODS: &[&str] = &[
+    "beverage",
+    "beer",
+    "dressing",
+    "juice",
+    "milk",
+    "oil",
+    "plant milk",
+    "sauce",
+    "spirit",
+    "stock",
+    "syrup",
+    "vinegar",
+    "wine",
+];
+
 /// Labels whose starting nodes (those no unit makes) with food states are mostly in a liquid state:
-/// what a recipe pours from the bottle rather than cuts from the whole.
-fn liquid_at_start(kb: &KnowledgeBase) -> HashSet<String> {
+/// what a recipe pours from the bottle rather than cuts from the whole. A label FOON never starts in a
+/// food state is one when the food taxonomy puts it among the liquids (oil, stock, maple syrup).
+fn liquid_at_start(kb: &KnowledgeBase, ingredient_labels: &[String]) -> HashSet<String> {
     let mut made = vec![false; kb.nodes.len()];
     for u in &kb.units {
         for o in u.output_nodes() {
@@ -189,10 +208,19 @@ fn liquid_at_start(kb: &KnowledgeBase) -> HashSet<String> {
             v.1 += 1;
         }
     }
-    votes
-        .into_iter()
-        .filter(|(_, (liquid, other))| liquid > other)
-        .map(|(label, _)| label.to_string())
+    let taxonomy = Taxonomy::builtin();
+    let sold_liquid = |label: &str| {
+        taxonomy
+            .lookup(label)
+            .is_some_and(|c| LIQUID_FOODS.contains(&taxonomy.category(c).name.as_str()))
+    };
+    ingredient_labels
+        .iter()
+        .filter(|label| match votes.get(label.as_str()) {
+            Some((liquid, other)) => liquid > other,
+            None => sold_liquid(label),
+        })
+        .cloned()
         .collect()
 }
 
@@ -351,7 +379,7 @@ impl PlannerIndex {
             intern(&n.label);
         }
         let (class_goals, all_goals) = goal_classes(kb, &goal_ingredients);
-        let comes_liquid = liquid_at_start(kb);
+        let comes_liquid = liquid_at_start(kb, &ingredient_labels);
         PlannerIndex {
             class_goals,
             all_goals,

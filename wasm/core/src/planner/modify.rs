@@ -374,7 +374,7 @@ fn settle_state<'kb>(
             "state '{s}' matched by category ({}){}",
             category(s).name(),
             if poured {
-                format!(": FOON's recipes start '{eq}' as a liquid")
+                format!(": '{eq}' comes as a liquid")
             } else {
                 String::new()
             }
