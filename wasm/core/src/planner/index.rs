@@ -160,11 +160,13 @@ fn goal_classes(
     (classes, GoalClass::new(usable))
 }
 
-/// Food taxonomy categories (`data/food_taxonomy.tsv`) of ingredients sold as liquids.
+/// Food taxonomy categories (`data/food_taxonomy.tsv`) of ingredients sold as liquids (flavorings are
+/// extracts and essences, but for the rare vanilla bean).
 const LIQUID_FOODS: &[&str] = &[
     "beverage",
     "beer",
     "dressing",
+    "flavoring",
     "juice",
     "milk",
     "oil",
