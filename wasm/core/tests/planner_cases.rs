@@ -698,8 +698,9 @@ fn a_state_change_comes_after_the_trees_cut_of_the_ingredient() {
 }
 
 /// A salad dressed with vinegar poured from its bottle (the node says nothing of the vinegar's food
-/// state), and a soup whose recipe starts the vinegar in the state `vinegar` (in none when `None`) and
-/// squeezes a lime.
+/// state), and a soup whose recipe starts the vinegar in the state `vinegar` (in none when `None`),
+/// squeezes a lime, adds chili powder from its jar, and grinds peppercorns and slices a lime for garnish
+/// (FOON's motions for 'ground' and 'sliced').
 fn dressed(vinegar: Option<&str>) -> [(String, String); 2] {
     let vinegar = vinegar.map_or(String::new(), |s| format!("S\t{s}\n"));
     let salad = "//
@@ -718,6 +719,18 @@ S\tin\t[salad bowl]
 ";
     let soup = format!(
         "//
+O\tpeppercorn\t1
+S\twhole
+M\tgrind\t<Assumed>
+O\tpeppercorn\t1
+S\tground
+//
+O\tlime\t1
+S\twhole
+M\tslice\t<Assumed>
+O\tlime\t1
+S\tsliced
+//
 O\tlime\t1
 S\twhole
 O\tsqueezer\t0
@@ -732,16 +745,18 @@ O\tlime\t1
 S\tjuice
 O\tvinegar\t1
 {vinegar}S\tin\t[bottle]
+O\tchili powder\t1
+S\tin\t[jar]
 M\tpour\t<Assumed>
 O\tpot\t0
-S\tcontains\t{{lime,vinegar}}
+S\tcontains\t{{chili powder,lime,vinegar}}
 //
 O\tpot\t0
-S\tcontains\t{{lime,vinegar}}
+S\tcontains\t{{chili powder,lime,vinegar}}
 M\tboil\t<Assumed>
 O\tsour soup\t1\t1
 S\tcooked
-S\tcontains\t{{lime,vinegar}}
+S\tcontains\t{{chili powder,lime,vinegar}}
 S\tin\t[pot]
 //
 "
@@ -753,12 +768,20 @@ S\tin\t[pot]
 }
 
 fn dressed_salad(vinegar: Option<&str>, modify: bool) -> Plan {
+    dressed_with(
+        vinegar,
+        modify,
+        &[("lettuce", "chopped"), ("vinegar", "juice")],
+    )
+}
+
+fn dressed_with(vinegar: Option<&str>, modify: bool, items: &[(&str, &str)]) -> Plan {
     let files = dressed(vinegar);
     let files: Vec<(&str, &str)> = files
         .iter()
         .map(|(n, t)| (n.as_str(), t.as_str()))
         .collect();
-    let mut request = query("salad", &[("lettuce", "chopped"), ("vinegar", "juice")]);
+    let mut request = query("salad", items);
     if !modify {
         request = request.replacen('{', r#"{"modify": false, "#, 1);
     }
@@ -799,4 +822,62 @@ fn an_ingredient_foon_starts_as_a_liquid_is_not_squeezed_to_be_one() {
     // had FOON's recipes never said, the food taxonomy would: vinegar is sold as a liquid
     let o = outcome(&dressed_salad(None, true), "vinegar").clone();
     assert_eq!(o.case, Some(1), "{o:#?}");
+}
+
+#[test]
+fn an_ingredient_sold_ground_is_not_ground_again_and_a_liquid_is_never_sliced() {
+    // chili powder, named so, comes ground: the soup's branch brings it as it is
+    let p = dressed_with(
+        Some("liquid"),
+        true,
+        &[("lettuce", "chopped"), ("chili powder", "ground")],
+    );
+    let o = outcome(&p, "chili powder");
+    assert_eq!(o.case, Some(4), "{o:#?}");
+    assert_eq!(o.status, Status::Planned);
+    assert!(
+        !p.units.iter().any(|u| u.motion == "grind"),
+        "{:#?}",
+        units(&p)
+    );
+    assert!(
+        goal_contents(&p).contains(&"chili powder"),
+        "{:#?}",
+        units(&p)
+    );
+    // where the name says nothing, the recipe's whole peppercorn is ground
+    let p = dressed_with(
+        Some("liquid"),
+        true,
+        &[("lettuce", "chopped"), ("peppercorn", "ground")],
+    );
+    assert!(
+        makes(&p, "grind", "peppercorn", "ground"),
+        "{:#?}",
+        units(&p)
+    );
+    // nothing makes liquid vinegar or ground chili powder sliced, from the tree or from FOON
+    let p = dressed_with(
+        Some("liquid"),
+        true,
+        &[
+            ("lettuce", "chopped"),
+            ("vinegar", "sliced"),
+            ("chili powder", "sliced"),
+        ],
+    );
+    assert_eq!(
+        outcome(&p, "vinegar").reason.as_deref(),
+        Some("state 'sliced' cannot be reached from the tree's 'liquid' (not reversible); kept 'liquid'")
+    );
+    let reason = outcome(&p, "chili powder").reason.clone().unwrap();
+    assert!(
+        reason.contains("state 'sliced' cannot be reached from ground (not reversible)"),
+        "{reason}"
+    );
+    assert!(
+        !p.units.iter().any(|u| u.motion == "slice"),
+        "{:#?}",
+        units(&p)
+    );
 }

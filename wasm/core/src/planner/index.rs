@@ -2,14 +2,14 @@
 //! class, the motion most used to reach each state, the utensil most used with each motion.
 
 use super::output::plan_node;
-use super::states::{category, is_food_state, Category};
+use super::states::{category, is_food_state, node_category, Category};
 use crate::kb::KnowledgeBase;
 use crate::memo::Memo;
 use crate::model::NodeId;
 use crate::plan::PlanNode;
 use crate::substitute::Taxonomy;
 use crate::taxonomy::is_utensil;
-use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use rustc_hash::FxHashMap as HashMap;
 use smol_str::SmolStr;
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -37,9 +37,9 @@ pub struct PlannerIndex {
     motion_for_category: HashMap<Category, String>,
     /// Motion -> the utensil node most used as an input of it.
     utensil_for_motion: HashMap<String, NodeId>,
-    /// Ingredients FOON's recipes start with as liquids (water, milk, an extract): a node of one without
-    /// food states is liquid, not whole.
-    comes_liquid: HashSet<String>,
+    /// Ingredients sold liquid or ground rather than whole (`sold_as`): a node of one without food
+    /// states is in that category.
+    sold_as: HashMap<String, Category>,
     /// Every name of an object or of a listed content, by id.
     label_names: Vec<String>,
     label_ids: HashMap<String, u32>,
@@ -161,68 +161,81 @@ fn goal_classes(
 }
 
 /// Food taxonomy categories (`data/food_taxonomy.tsv`) of ingredients sold as liquids (flavorings are
-/// extracts and essences, but for the rare vanilla bean).
-const LIQUID_FOODS: &[&str] = &[
-    "beverage",
-    "beer",
-    "dressing",
-    "flavoring",
-    "juice",
-    "milk",
-    "oil",
-    "plant milk",
-    "sauce",
-    "spirit",
-    "stock",
-    "syrup",
-    "vinegar",
-    "wine",
+/// extracts and essences, but for the rare vanilla bean) or ground.
+const SOLD_AS: &[(&str, Category)] = &[
+    ("beverage", Category::Liquid),
+    ("beer", Category::Liquid),
+    ("dressing", Category::Liquid),
+    ("flavoring", Category::Liquid),
+    ("juice", Category::Liquid),
+    ("milk", Category::Liquid),
+    ("oil", Category::Liquid),
+    ("plant milk", Category::Liquid),
+    ("sauce", Category::Liquid),
+    ("spirit", Category::Liquid),
+    ("stock", Category::Liquid),
+    ("syrup", Category::Liquid),
+    ("vinegar", Category::Liquid),
+    ("wine", Category::Liquid),
+    ("flour", Category::Ground),
+    ("leavener", Category::Ground),
+    ("spice blend", Category::Ground),
+    ("starch", Category::Ground),
 ];
 
-/// Labels whose starting nodes (those no unit makes) with food states are mostly in a liquid state:
-/// what a recipe pours from the bottle rather than cuts from the whole. A label FOON never starts in a
-/// food state is one when the food taxonomy puts it among the liquids (oil, stock, maple syrup).
-fn liquid_at_start(kb: &KnowledgeBase, ingredient_labels: &[String]) -> HashSet<String> {
+/// The ingredients sold liquid or ground rather than whole (water, oil, flour, a spice blend), with that
+/// category: a node of one without food states is in it. Decided by the label's starting nodes (those no
+/// unit makes) with food states, when FOON has some; else by a state word of the name ("turmeric
+/// powder", "lemon juice"); else by the food taxonomy.
+fn sold_as(kb: &KnowledgeBase, ingredient_labels: &[String]) -> HashMap<String, Category> {
     let mut made = vec![false; kb.nodes.len()];
     for u in &kb.units {
         for o in u.output_nodes() {
             made[o] = true;
         }
     }
-    // label -> (starting nodes in a liquid state, starting nodes in another food state)
-    let mut votes: HashMap<&str, (u32, u32)> = HashMap::default();
+    // label -> (starting nodes in a liquid state, in a ground one, in another food state)
+    let mut votes: HashMap<&str, [u32; 3]> = HashMap::default();
     for (node, _) in kb
         .nodes
         .iter()
         .zip(&made)
         .filter(|(n, &m)| !m && !is_utensil(&n.label))
     {
-        let mut food = node
-            .physical_states()
-            .map(category)
-            .filter(|&c| c != Category::Other);
-        let Some(first) = food.next() else { continue };
-        let liquid = first == Category::Liquid || food.any(|c| c == Category::Liquid);
+        if !node.physical_states().any(is_food_state) {
+            continue;
+        }
         let v = votes.entry(node.label.as_str()).or_default();
-        if liquid {
-            v.0 += 1;
-        } else {
-            v.1 += 1;
+        match node_category(node) {
+            Category::Liquid => v[0] += 1,
+            Category::Ground => v[1] += 1,
+            _ => v[2] += 1,
         }
     }
     let taxonomy = Taxonomy::builtin();
-    let sold_liquid = |label: &str| {
-        taxonomy
-            .lookup(label)
-            .is_some_and(|c| LIQUID_FOODS.contains(&taxonomy.category(c).name.as_str()))
+    let sold = |label: &str| -> Option<Category> {
+        if let Some(&[liquid, ground, other]) = votes.get(label) {
+            return if 2 * liquid > liquid + ground + other {
+                Some(Category::Liquid)
+            } else if 2 * ground > liquid + ground + other {
+                Some(Category::Ground)
+            } else {
+                None
+            };
+        }
+        // the last state word of the name decides, as in `category`
+        let named = label
+            .rsplit(' ')
+            .map(category)
+            .find(|&c| matches!(c, Category::Liquid | Category::Ground));
+        named.or_else(|| {
+            let name = &taxonomy.category(taxonomy.lookup(label)?).name;
+            SOLD_AS.iter().find(|(n, _)| n == name).map(|&(_, c)| c)
+        })
     };
     ingredient_labels
         .iter()
-        .filter(|label| match votes.get(label.as_str()) {
-            Some((liquid, other)) => liquid > other,
-            None => sold_liquid(label),
-        })
-        .cloned()
+        .filter_map(|label| Some((label.clone(), sold(label)?)))
         .collect()
 }
 
@@ -381,7 +394,7 @@ impl PlannerIndex {
             intern(&n.label);
         }
         let (class_goals, all_goals) = goal_classes(kb, &goal_ingredients);
-        let comes_liquid = liquid_at_start(kb, &ingredient_labels);
+        let sold_as = sold_as(kb, &ingredient_labels);
         PlannerIndex {
             class_goals,
             all_goals,
@@ -405,7 +418,7 @@ impl PlannerIndex {
                 .iter()
                 .filter_map(|(c, m)| Some((*c, best(m)?)))
                 .collect(),
-            comes_liquid,
+            sold_as,
             utensil_for_motion: motion_utensil
                 .iter()
                 .filter_map(|(m, u)| Some((m.clone(), best(u)?)))
@@ -500,9 +513,9 @@ impl PlannerIndex {
         self.by_label.contains_key(label)
     }
 
-    /// Whether FOON's recipes mostly start `label` as a liquid (see `liquid_at_start`).
-    pub(crate) fn comes_liquid(&self, label: &str) -> bool {
-        self.comes_liquid.contains(label)
+    /// The category `label` is sold in when not whole (see `sold_as`).
+    pub(crate) fn sold_as(&self, label: &str) -> Option<Category> {
+        self.sold_as.get(label).copied()
     }
 
     /// How common the states are for `label`: summed over `states`, how often `label` is in the state

@@ -3,7 +3,7 @@
 
 use super::index::{Picks, PlannerIndex};
 use super::retrieve::{retrieve, retrieve_within};
-use super::states::{category, is_food_state, state_text, Category};
+use super::states::{category, is_food_state, node_category, state_text, Category};
 use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
@@ -35,22 +35,21 @@ pub(crate) fn food_states(node: &ObjectNode) -> Vec<&str> {
         .collect()
 }
 
-/// The category a node's food states put it in (the furthest along; whole when it has none).
-fn node_category(node: &ObjectNode) -> Category {
-    node.physical_states()
-        .map(category)
-        .filter(|&c| c != Category::Other)
-        .max_by_key(|c| if c.is_starting() { 0 } else { 1 + *c as u8 })
-        .unwrap_or(Category::Whole)
+/// `node_category`, except that a node saying nothing of its food is in the category its ingredient is
+/// sold in (`PlannerIndex::sold_as`: milk in a cup is liquid, flour in a bag ground).
+fn food_category(ctx: &Context, node: &ObjectNode) -> Category {
+    match ctx.index.sold_as(&node.label) {
+        Some(c) if food_states(node).is_empty() => c,
+        _ => node_category(node),
+    }
 }
 
-/// `node_category`, except that an ingredient FOON's recipes start as a liquid is liquid when the node
-/// says nothing of its food (milk in a cup).
-fn food_category(ctx: &Context, node: &ObjectNode) -> Category {
-    if ctx.index.comes_liquid(&node.label) && food_states(node).is_empty() {
-        Category::Liquid
+/// "as a liquid", "ground": how an ingredient sold in category `c` comes.
+fn sold_words(c: Category) -> &'static str {
+    if c == Category::Liquid {
+        "as a liquid"
     } else {
-        node_category(node)
+        c.name()
     }
 }
 
@@ -180,7 +179,7 @@ pub(crate) fn modify<'kb>(
         w.low_confidence = eq != o && ctx.sim.low_confidence(o, &eq, sim);
         let slots = tree.slots_with_label(&eq);
         if !enabled {
-            let in_state = best_state_slot(tree, &slots, s, ctx.index.comes_liquid(&eq));
+            let in_state = best_state_slot(tree, &slots, s, ctx.index.sold_as(&eq));
             judge_unmodified(tree, o, &eq, sim, &slots, in_state, &mut w);
             works.push(w);
             continue;
@@ -201,7 +200,7 @@ pub(crate) fn modify<'kb>(
         // the equivalent is in the tree: substitute (cases 2, 4) or keep (cases 1, 3)
         w.matched = Some(Match {
             label: eq.as_str().into(),
-            state: tree_state(tree, &slots, s, ctx.index.comes_liquid(&eq)),
+            state: tree_state(tree, &slots, s, ctx.index.sold_as(&eq)),
             similarity: sim,
         });
         if eq != o {
@@ -275,7 +274,7 @@ pub(crate) fn modify<'kb>(
             if !lost && !slots.is_empty() {
                 // an earlier ingredient of the same name brought it: one branch serves both
                 if let Some(m) = w.matched.as_mut() {
-                    m.state = tree_state(tree, &slots, &s, ctx.index.comes_liquid(&eq));
+                    m.state = tree_state(tree, &slots, &s, ctx.index.sold_as(&eq));
                 }
                 settle_state(ctx, tree, &eq, o, &s, &slots, &mut restated, w);
                 continue;
@@ -353,8 +352,8 @@ fn settle_state<'kb>(
     restated: &mut HashMap<String, String>,
     w: &mut Work,
 ) {
-    let liquid = ctx.index.comes_liquid(eq);
-    let in_state = best_state_slot(tree, slots, s, liquid);
+    let sold = ctx.index.sold_as(eq);
+    let in_state = best_state_slot(tree, slots, s, sold);
     let state_ok = in_state.is_some();
     w.case = Some(match (eq == o, state_ok) {
         (true, true) => 1,
@@ -367,14 +366,13 @@ fn settle_state<'kb>(
             "state '{s}' is not in the state taxonomy: kept the tree's state"
         ));
     } else if let Some(x) = in_state.filter(|_| best_exact(tree, slots, s).is_none()) {
-        let poured = liquid
-            && category(s) == Category::Liquid
-            && food_states(&tree.slots[x].node).is_empty();
+        let c = category(s);
+        let as_sold = sold == Some(c) && food_states(&tree.slots[x].node).is_empty();
         w.reasons.push(format!(
             "state '{s}' matched by category ({}){}",
-            category(s).name(),
-            if poured {
-                format!(": '{eq}' comes as a liquid")
+            c.name(),
+            if as_sold {
+                format!(": '{eq}' comes {}", sold_words(c))
             } else {
                 String::new()
             }
@@ -518,8 +516,8 @@ fn judge_unmodified(
 
 /// The state an ingredient has in the tree, given its label's live slots (`Tree::slots_with_label`,
 /// not empty): that of its slot in the state `s` (see `best_state_slot`), else of the first.
-fn tree_state(tree: &Tree, slots: &[SlotId], s: &str, liquid: bool) -> SmolStr {
-    let slot = best_state_slot(tree, slots, s, liquid).unwrap_or(slots[0]);
+fn tree_state(tree: &Tree, slots: &[SlotId], s: &str, sold: Option<Category>) -> SmolStr {
+    let slot = best_state_slot(tree, slots, s, sold).unwrap_or(slots[0]);
     state_text(&tree.slots[slot].node)
 }
 
@@ -532,9 +530,14 @@ fn best_exact(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
 }
 
 /// Of a label's live slots, one in the state `s`: exactly, else by category; a starting state matches a
-/// leaf in a starting state; a liquid state matches a node without food states of an ingredient that
-/// comes liquid (`liquid`: milk in a cup is liquid milk); a state outside the taxonomy matches any.
-fn best_state_slot(tree: &Tree, slots: &[SlotId], s: &str, liquid: bool) -> Option<SlotId> {
+/// leaf in a starting state; a node without food states matches a state of the category its ingredient is
+/// sold in (`sold`: milk in a cup is liquid milk); a state outside the taxonomy matches any.
+fn best_state_slot(
+    tree: &Tree,
+    slots: &[SlotId],
+    s: &str,
+    sold: Option<Category>,
+) -> Option<SlotId> {
     if let Some(x) = best_exact(tree, slots, s) {
         return Some(x);
     }
@@ -557,7 +560,7 @@ fn best_state_slot(tree: &Tree, slots: &[SlotId], s: &str, liquid: bool) -> Opti
     slots
         .clone()
         .find(|&x| categories(x).any(|k| k == c))
-        .or_else(|| slots.find(|&x| liquid && c == Category::Liquid && unstated(x)))
+        .or_else(|| slots.find(|&x| sold == Some(c) && unstated(x)))
 }
 
 /// Live slots of `label` downstream of the given units (through units that pass the object on).
@@ -648,8 +651,14 @@ fn restate<'kb>(
         ));
     }
     if !leaf_cat.reaches(c) {
+        // a node without food states is in the category its ingredient is sold in
+        let kept = if leaf_state.is_empty() {
+            leaf_cat.name().into()
+        } else {
+            leaf_state
+        };
         return Err(format!(
-            "state '{s}' cannot be reached from the tree's '{leaf_state}' (not reversible); kept '{leaf_state}'"
+            "state '{s}' cannot be reached from the tree's '{kept}' (not reversible); kept '{kept}'"
         ));
     }
     let Some(motion) = ctx.index.motion_for(s) else {
@@ -1124,12 +1133,18 @@ fn finish_branch<'kb>(
         tree.slots[last].node = Cow::Owned(node);
         chosen_state = s.into();
     }
-    // milk taken in a cup is liquid milk already
-    let poured = c == Category::Liquid
-        && ctx.index.comes_liquid(eq)
-        && food_states(&tree.slots[last].node).is_empty();
-    if !in_state && !poured && !c.is_starting() && c != Category::Other {
-        if let Some(motion) = ctx.index.motion_for(s) {
+    // milk taken in a cup is liquid milk already; liquid milk cannot be sliced
+    let from = food_category(ctx, &tree.slots[last].node);
+    let as_sold =
+        ctx.index.sold_as(eq) == Some(c) && food_states(&tree.slots[last].node).is_empty();
+    if !in_state && !as_sold && !c.is_starting() && c != Category::Other {
+        if !from.reaches(c) {
+            let _ = write!(
+                how,
+                ", state '{s}' cannot be reached from {} (not reversible)",
+                from.name()
+            );
+        } else if let Some(motion) = ctx.index.motion_for(s) {
             let made = ObjectNode::new(eq, vec![State::plain(s)]);
             let x = add_state_unit(ctx, tree, last, made, &motion);
             let _ = write!(how, ", then '{motion}' to make it '{s}'");

@@ -86,10 +86,12 @@ impl Category {
     }
 
     /// Whether food in category `self` can be brought into category `to` (states are not reversible:
-    /// a liquid cannot be sliced, a minced clove cannot be made whole).
+    /// a liquid cannot be sliced, a minced clove cannot be made whole; but a solid that was cooked,
+    /// shaped or coated can still be cut: a roast sliced, toasted nuts chopped).
     pub fn reaches(self, to: Category) -> bool {
+        let solid = matches!(self, Category::Cooked | Category::Shaped | Category::Coated);
         match (self.rank(), to.rank()) {
-            (Some(a), Some(b)) => a <= b || b == 5,
+            (Some(a), Some(b)) => a <= b || b == 5 || solid,
             _ => true,
         }
     }
@@ -155,6 +157,15 @@ fn classify(state: &str) -> Category {
     found.unwrap_or(Category::Other)
 }
 
+/// The category a node's food states put it in (the furthest along; whole when it has none).
+pub(crate) fn node_category(node: &ObjectNode) -> Category {
+    node.physical_states()
+        .map(category)
+        .filter(|&c| c != Category::Other)
+        .max_by_key(|c| if c.is_starting() { 0 } else { 1 + *c as u8 })
+        .unwrap_or(Category::Whole)
+}
+
 /// States that describe the food itself (not its place or contents, not an appliance's condition).
 pub fn is_food_state(state: &str) -> bool {
     category(state) != Category::Other
@@ -208,6 +219,9 @@ mod tests {
         assert!(!Category::Liquid.reaches(Category::Cut));
         assert!(Category::Cut.reaches(Category::Cooked));
         assert!(Category::Liquid.reaches(Category::Mixed));
+        assert!(Category::Cooked.reaches(Category::Cut));
+        assert!(!Category::Mixed.reaches(Category::Cut));
+        assert!(!Category::Ground.reaches(Category::FinelyCut));
     }
 
     #[test]
