@@ -881,3 +881,77 @@ fn an_ingredient_sold_ground_is_not_ground_again_and_a_liquid_is_never_sliced() 
         units(&p)
     );
 }
+
+/// A custard (class 8): egg and milk poured into a bowl and whisked, the batter poured into a pot, which
+/// is covered and cooked.
+const CUSTARD: &str = "//
+O\tbowl\t0
+S\tempty
+O\tegg\t1
+S\tcracked
+O\tmilk\t1
+S\tliquid
+M\tpour\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{egg,milk}
+//
+O\tbowl\t0
+S\tcontains\t{egg,milk}
+O\twhisk\t1
+M\tmix\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{custard batter}
+O\tcustard batter\t1
+S\tmixed
+S\tcontains\t{egg,milk}
+S\tin\t[bowl]
+//
+O\tpot\t0
+S\tempty
+O\tcustard batter\t1
+S\tmixed
+S\tcontains\t{egg,milk}
+S\tin\t[bowl]
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{custard batter}
+//
+O\tpot\t0
+S\tcontains\t{custard batter}
+O\tpot lid\t1
+M\tcover\t<Assumed>
+O\tpot\t0
+S\tcontains\t{custard batter}
+S\tcovered\t[pot lid]
+//
+O\tpot\t0
+S\tcontains\t{custard batter}
+S\tcovered\t[pot lid]
+M\tcook\t<Assumed>
+O\tcustard\t1\t8
+S\tcooked
+S\tcontains\t{egg,milk}
+S\tin\t[pot]
+//
+";
+
+#[test]
+fn a_step_names_the_food_a_tool_works_on_or_the_container_it_closes() {
+    let p = plan_of(
+        &[("custard.txt", CUSTARD)],
+        &ExactMatch,
+        &query("dessert", &[("egg", "cracked"), ("milk", "liquid")]),
+    );
+    assert_eq!(
+        p.steps,
+        [
+            "Pour the egg and the milk.",
+            "Mix the egg and the milk in the bowl with the whisk.",
+            "Pour the custard batter.",
+            "Cover the pot with the pot lid.",
+            "Cook the pot.",
+        ],
+        "{:#?}",
+        units(&p)
+    );
+}

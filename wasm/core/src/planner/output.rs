@@ -332,6 +332,10 @@ fn push_list(out: &mut String, items: &[&str]) {
 
 /// One plain sentence for a unit: "Slice the tomato on the cutting board." `objects` is a buffer reused
 /// from sentence to sentence (the sentence's objects, then its tools after them).
+/// Motions that put their object somewhere, and those that open or close a container.
+const PUTS: &[&str] = &["pick-and-place", "place", "put inside", "insert"];
+const CLOSES: &[&str] = &["open", "close", "cover", "uncover"];
+
 fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> String {
     let unit = &tree.units[u];
     let node = |x: SlotId| &tree.slots[x].node;
@@ -355,6 +359,33 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
             }
         }
     }
+    // no food among the inputs, and only tools move (a whisk, a lid): the unit works on a container that
+    // stays put ("Cover the pot with the pot lid"), or on what it holds ("Mix the egg and the milk in the
+    // bowl with the whisk"), not on the tool ("Mix the whisk"); a tool put somewhere stays the object
+    let mut holder = None;
+    let mut closed = false;
+    let tool = |x: SlotId| utensil(x) && node(x).states.is_empty();
+    let motion = unit.motion.trim_end_matches('*');
+    let tools_only = unit.inputs.iter().any(|&(x, m)| m && tool(x))
+        && unit.inputs.iter().all(|&(x, m)| !m || tool(x))
+        && !PUTS.contains(&motion);
+    if objects.is_empty() && tools_only {
+        if let Some(&(x, _)) = unit
+            .inputs
+            .iter()
+            .find(|&&(x, _)| node(x).holds_something())
+        {
+            if CLOSES.contains(&motion) {
+                push(objects, &node(x).label);
+                closed = true;
+            } else {
+                for l in node(x).contents() {
+                    push(objects, l);
+                }
+                holder = Some(("in", node(x).label.as_str()));
+            }
+        }
+    }
     if objects.is_empty() {
         for &(x, m) in &unit.inputs {
             if m {
@@ -368,22 +399,28 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
         }
     }
     // where the moved objects end up
-    let place = unit.outputs.iter().find_map(|&(x, _)| {
-        let n = node(x);
-        if !objects.contains(&n.label.as_str()) {
+    let place = holder.or_else(|| {
+        // a container opened or closed where it stands
+        if closed {
             return None;
         }
-        n.states.iter().find_map(|s| match &s.arg {
-            Some(StateArg::Container(c)) if !objects.contains(&c.as_str()) => {
-                Some((s.name.as_str(), c.as_str()))
+        unit.outputs.iter().find_map(|&(x, _)| {
+            let n = node(x);
+            if !objects.contains(&n.label.as_str()) {
+                return None;
             }
-            _ => None,
+            n.states.iter().find_map(|s| match &s.arg {
+                Some(StateArg::Container(c)) if !objects.contains(&c.as_str()) => {
+                    Some((s.name.as_str(), c.as_str()))
+                }
+                _ => None,
+            })
         })
     });
     let moved = objects.len();
     for &(x, m) in &unit.inputs {
         let n = node(x);
-        if !m
+        if (!m || holder.is_some() || closed)
             && utensil(x)
             && n.states.is_empty()
             && !objects[..moved].contains(&n.label.as_str())
