@@ -1127,14 +1127,21 @@ fn finish_branch<'kb>(
     mut how: String,
 ) -> Result<(SmolStr, String), String> {
     let c = category(s);
+    // milk taken in a cup is liquid milk already; liquid milk cannot be sliced, diced pineapple not made
+    // whole
+    let from = food_category(ctx, &tree.slots[last].node);
     if !in_state && c.is_starting() && chosen_state.is_empty() && !s.is_empty() {
         // an ingredient as bought is in the starting state asked for
         let node = map_states(&tree.slots[last].node, s);
         tree.slots[last].node = Cow::Owned(node);
         chosen_state = s.into();
+    } else if !in_state && c == Category::Whole && !from.reaches(c) {
+        let _ = write!(
+            how,
+            ", state '{s}' cannot be reached from {} (not reversible)",
+            from.name()
+        );
     }
-    // milk taken in a cup is liquid milk already; liquid milk cannot be sliced
-    let from = food_category(ctx, &tree.slots[last].node);
     let as_sold =
         ctx.index.sold_as(eq) == Some(c) && food_states(&tree.slots[last].node).is_empty();
     if !in_state && !as_sold && !c.is_starting() && c != Category::Other {
