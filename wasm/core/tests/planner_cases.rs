@@ -880,6 +880,17 @@ fn an_ingredient_sold_ground_is_not_ground_again_and_a_liquid_is_never_sliced() 
         "{:#?}",
         units(&p)
     );
+    // nor made whole again
+    let p = dressed_with(
+        Some("liquid"),
+        true,
+        &[("lettuce", "chopped"), ("chili powder", "whole")],
+    );
+    let reason = outcome(&p, "chili powder").reason.clone().unwrap();
+    assert!(
+        reason.contains("state 'whole' cannot be reached from ground (not reversible)"),
+        "{reason}"
+    );
 }
 
 /// A custard (class 8): egg and milk poured into a bowl and whisked, the batter poured into a pot, which

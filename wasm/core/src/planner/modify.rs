@@ -914,7 +914,11 @@ fn rank_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
         }
         let exact = food.contains(&s);
         let cat = c != Category::Other && cats.contains(&c);
-        let raw = c.is_starting() && ctx.kb.kitchen[n] && cats.iter().all(|k| k.is_starting());
+        // a node saying nothing of its food is as bought: whole, unless its ingredient is sold otherwise
+        let raw = c.is_starting()
+            && ctx.kb.kitchen[n]
+            && cats.iter().all(|k| k.is_starting())
+            && (!cats.is_empty() || ctx.index.sold_as(eq).is_none());
         if !(exact || cat || raw) {
             continue;
         }
@@ -1130,7 +1134,7 @@ fn finish_branch<'kb>(
     // milk taken in a cup is liquid milk already; liquid milk cannot be sliced, diced pineapple not made
     // whole
     let from = food_category(ctx, &tree.slots[last].node);
-    if !in_state && c.is_starting() && chosen_state.is_empty() && !s.is_empty() {
+    if !in_state && c.is_starting() && chosen_state.is_empty() && !s.is_empty() && from.reaches(c) {
         // an ingredient as bought is in the starting state asked for
         let node = map_states(&tree.slots[last].node, s);
         tree.slots[last].node = Cow::Owned(node);
