@@ -2,7 +2,7 @@
 //! class, the motion most used to reach each state, the utensil most used with each motion.
 
 use super::output::plan_node;
-use super::states::{category, is_food_state, node_category, Category};
+use super::states::{category, has_food_state, is_food_state, node_category, Category};
 use crate::kb::KnowledgeBase;
 use crate::memo::Memo;
 use crate::model::NodeId;
@@ -188,23 +188,14 @@ const SOLD_AS: &[(&str, Category)] = &[
 /// unit makes) with food states, when FOON has some; else by a state word of the name ("turmeric
 /// powder", "lemon juice"); else by the food taxonomy.
 fn sold_as(kb: &KnowledgeBase, ingredient_labels: &[String]) -> HashMap<String, Category> {
-    let mut made = vec![false; kb.nodes.len()];
-    for u in &kb.units {
-        for o in u.output_nodes() {
-            made[o] = true;
-        }
-    }
     // label -> (starting nodes in a liquid state, in a ground one, in another food state)
     let mut votes: HashMap<&str, [u32; 3]> = HashMap::default();
     for (node, _) in kb
         .nodes
         .iter()
-        .zip(&made)
-        .filter(|(n, &m)| !m && !is_utensil(&n.label))
+        .zip(&kb.producers)
+        .filter(|(n, made_by)| made_by.is_empty() && !is_utensil(&n.label) && has_food_state(n))
     {
-        if !node.physical_states().any(is_food_state) {
-            continue;
-        }
         let v = votes.entry(node.label.as_str()).or_default();
         match node_category(node) {
             Category::Liquid => v[0] += 1,

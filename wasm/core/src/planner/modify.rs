@@ -3,7 +3,7 @@
 
 use super::index::{Picks, PlannerIndex};
 use super::retrieve::{retrieve, retrieve_within};
-use super::states::{category, is_food_state, node_category, state_text, Category};
+use super::states::{category, has_food_state, is_food_state, node_category, state_text, Category};
 use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
@@ -38,9 +38,10 @@ pub(crate) fn food_states(node: &ObjectNode) -> Vec<&str> {
 /// `node_category`, except that a node saying nothing of its food is in the category its ingredient is
 /// sold in (`PlannerIndex::sold_as`: milk in a cup is liquid, flour in a bag ground).
 fn food_category(ctx: &Context, node: &ObjectNode) -> Category {
-    match ctx.index.sold_as(&node.label) {
-        Some(c) if food_states(node).is_empty() => c,
-        _ => node_category(node),
+    if has_food_state(node) {
+        node_category(node)
+    } else {
+        ctx.index.sold_as(&node.label).unwrap_or(Category::Whole)
     }
 }
 
@@ -367,7 +368,7 @@ fn settle_state<'kb>(
         ));
     } else if let Some(x) = in_state.filter(|_| best_exact(tree, slots, s).is_none()) {
         let c = category(s);
-        let as_sold = sold == Some(c) && food_states(&tree.slots[x].node).is_empty();
+        let as_sold = sold == Some(c) && !has_food_state(&tree.slots[x].node);
         w.reasons.push(format!(
             "state '{s}' matched by category ({}){}",
             c.name(),
@@ -556,11 +557,10 @@ fn best_state_slot(
         });
     }
     // a node in the state's category before one taken to be in it
-    let unstated = |x: SlotId| categories(x).all(|k| k == Category::Other);
     slots
         .clone()
         .find(|&x| categories(x).any(|k| k == c))
-        .or_else(|| slots.find(|&x| sold == Some(c) && unstated(x)))
+        .or_else(|| slots.find(|&x| sold == Some(c) && !has_food_state(&tree.slots[x].node)))
 }
 
 /// Live slots of `label` downstream of the given units (through units that pass the object on).
@@ -1132,29 +1132,24 @@ fn finish_branch<'kb>(
 ) -> Result<(SmolStr, String), String> {
     let c = category(s);
     // milk taken in a cup is liquid milk already; liquid milk cannot be sliced, diced pineapple not made
-    // whole
-    let from = food_category(ctx, &tree.slots[last].node);
-    if !in_state && c.is_starting() && chosen_state.is_empty() && !s.is_empty() && from.reaches(c) {
-        // an ingredient as bought is in the starting state asked for
-        let node = map_states(&tree.slots[last].node, s);
-        tree.slots[last].node = Cow::Owned(node);
-        chosen_state = s.into();
-    } else if !in_state && c == Category::Whole && !from.reaches(c) {
-        let _ = write!(
-            how,
-            ", state '{s}' cannot be reached from {} (not reversible)",
-            from.name()
-        );
-    }
-    let as_sold =
-        ctx.index.sold_as(eq) == Some(c) && food_states(&tree.slots[last].node).is_empty();
-    if !in_state && !as_sold && !c.is_starting() && c != Category::Other {
-        if !from.reaches(c) {
+    // whole (of the starting states only 'whole' speaks of the cut: dried fruit may well be diced)
+    let node = &tree.slots[last].node;
+    let from = food_category(ctx, node);
+    let as_sold = ctx.index.sold_as(eq) == Some(c) && !has_food_state(node);
+    if !(in_state || as_sold || c == Category::Other) {
+        if !from.reaches(c) && (c == Category::Whole || !c.is_starting()) {
             let _ = write!(
                 how,
                 ", state '{s}' cannot be reached from {} (not reversible)",
                 from.name()
             );
+        } else if c.is_starting() {
+            if chosen_state.is_empty() && !s.is_empty() && from.reaches(c) {
+                // an ingredient as bought is in the starting state asked for
+                let node = map_states(node, s);
+                tree.slots[last].node = Cow::Owned(node);
+                chosen_state = s.into();
+            }
         } else if let Some(motion) = ctx.index.motion_for(s) {
             let made = ObjectNode::new(eq, vec![State::plain(s)]);
             let x = add_state_unit(ctx, tree, last, made, &motion);

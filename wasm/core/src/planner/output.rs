@@ -330,12 +330,13 @@ fn push_list(out: &mut String, items: &[&str]) {
     }
 }
 
-/// One plain sentence for a unit: "Slice the tomato on the cutting board." `objects` is a buffer reused
-/// from sentence to sentence (the sentence's objects, then its tools after them).
-/// Motions that put their object somewhere, and those that open or close a container.
+/// Motions that put their object somewhere.
 const PUTS: &[&str] = &["pick-and-place", "place", "put inside", "insert"];
+/// Motions that open or close a container.
 const CLOSES: &[&str] = &["open", "close", "cover", "uncover"];
 
+/// One plain sentence for a unit: "Slice the tomato on the cutting board." `objects` is a buffer reused
+/// from sentence to sentence (the sentence's objects, then its tools after them).
 fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> String {
     let unit = &tree.units[u];
     let node = |x: SlotId| &tree.slots[x].node;

@@ -166,6 +166,11 @@ pub(crate) fn node_category(node: &ObjectNode) -> Category {
         .unwrap_or(Category::Whole)
 }
 
+/// Whether a node says anything of its food (has a food state), without listing its states.
+pub(crate) fn has_food_state(node: &ObjectNode) -> bool {
+    node.physical_states().any(is_food_state)
+}
+
 /// States that describe the food itself (not its place or contents, not an appliance's condition).
 pub fn is_food_state(state: &str) -> bool {
     category(state) != Category::Other
