@@ -966,3 +966,136 @@ fn a_step_names_the_food_a_tool_works_on_or_the_container_it_closes() {
         units(&p)
     );
 }
+
+/// A salad (class 15) of buttered bread: the bread goes into a pan, is mixed with butter there, and only
+/// the bread goes on to be toasted; the pan, listing everything, is left behind. With `buttered`, the
+/// mixing also lists the butter on the bread; without, only the pan holds anything after it.
+fn toast_salad(buttered: bool) -> String {
+    let bread_after = if buttered {
+        "O\tbread\t1\nS\tcontains\t{butter}\nS\tin\t[pan]\n"
+    } else {
+        "O\tbread\t1\nS\tin\t[pan]\nS\tsoftened\n"
+    };
+    format!(
+        "//
+O\tpan\t0
+S\tempty
+O\tbread\t1
+S\tsliced
+M\tpick-and-place\t<Assumed>
+O\tpan\t0
+S\tcontains\t{{bread}}
+O\tbread\t1
+S\tsliced
+S\tin\t[pan]
+//
+O\tpan\t0
+S\tcontains\t{{bread}}
+O\tbread\t1
+S\tsliced
+S\tin\t[pan]
+O\tbutter\t1
+S\tsoftened
+M\tmix\t<Assumed>
+O\tpan\t0
+S\tcontains\t{{bread,butter}}
+{bread_after}//
+{bread_after}M\ttoast\t<Assumed>
+O\ttoast salad\t1\t15
+S\ttoasted
+S\tcontains\t{{bread,butter}}
+//
+"
+    )
+}
+
+/// Salt, in the kitchen as bought, in a recipe of its own.
+const SALTED: &str = "//
+O\tpot\t0
+S\tempty
+O\tsalt\t1
+S\tgranulated
+M\tsprinkle\t<Assumed>
+O\tpot\t0
+S\tcontains\t{salt}
+//
+";
+
+/// The salad of buttered bread with salt added.
+fn salted_toast(buttered: bool) -> Plan {
+    let recipe = toast_salad(buttered);
+    plan_of(
+        &[("toast.txt", &recipe), ("salt.txt", SALTED)],
+        &ExactMatch,
+        &query(
+            "salad",
+            &[
+                ("bread", "sliced"),
+                ("butter", "softened"),
+                ("salt", "granulated"),
+            ],
+        ),
+    )
+}
+
+#[test]
+fn an_added_ingredient_goes_with_what_reaches_the_dish_not_the_pan_left_behind() {
+    // the mixing unit is where salads take ingredients: the salt joins it, and goes onto the bread,
+    // which the toasting takes on, rather than into the pan, which holds more but goes nowhere
+    let p = salted_toast(true);
+    let salt = outcome(&p, "salt");
+    assert_eq!((salt.case, salt.status), (Some(4), Status::Planned));
+    assert!(
+        salt.reason.as_deref().unwrap().ends_with("added at 'mix'"),
+        "{salt:#?}"
+    );
+    assert_eq!(
+        goal_contents(&p),
+        ["bread", "butter", "salt"],
+        "{:#?}",
+        units(&p)
+    );
+    // where nothing the mixing makes goes on to the dish, the salt joins the toasting instead
+    let p = salted_toast(false);
+    let salt = outcome(&p, "salt");
+    assert!(
+        salt.reason
+            .as_deref()
+            .unwrap()
+            .ends_with("added at 'toast'"),
+        "{salt:#?}"
+    );
+    assert_eq!(
+        goal_contents(&p),
+        ["bread", "butter", "salt"],
+        "{:#?}",
+        units(&p)
+    );
+}
+
+#[test]
+fn a_dish_listing_nothing_takes_the_added_ingredient_rather_than_the_plate() {
+    // the dish is plated and lists no contents; the plate lists the dish
+    let plated = "//
+O\tplate\t0
+S\tempty
+O\tbread\t1
+S\tsliced
+M\tpick-and-place\t<Assumed>
+O\tplate\t0
+S\tcontains\t{toast salad}
+O\ttoast salad\t1\t15
+S\tempty
+S\ton\t[plate]
+//
+";
+    let p = plan_of(
+        &[("plated.txt", plated), ("salt.txt", SALTED)],
+        &ExactMatch,
+        &query("salad", &[("bread", "sliced"), ("salt", "granulated")]),
+    );
+    assert_eq!(goal_contents(&p), ["salt"], "{:#?}", units(&p));
+    let goal = &p.units.last().unwrap().outputs;
+    let dish = goal.iter().find(|n| n.label == "toast salad").unwrap();
+    assert_eq!(dish.states, ["contains {salt}", "on [plate]"]);
+}

@@ -867,7 +867,8 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
     }
     let new_x = copy(tree, x, &mut copy_of);
     tree.units[entry].inputs.push((new_x, true));
-    tree.add_contents_downstream(entry, o, &order);
+    let carries = tree.carriers(&order);
+    tree.add_contents_downstream(entry, o, &order, &carries);
     tree.units[entry].origin = Origin::Attached;
     Some(new_x)
 }
@@ -962,35 +963,40 @@ fn private_unit(kb: &KnowledgeBase, u: UnitId, eq: &str) -> bool {
     })
 }
 
-/// The unit a new ingredient joins: one that can take more ingredients, where ingredients of the same
-/// kind go in (salt where the pepper is sprinkled), else with the dish's usual motion, closest to the goal.
+/// The unit a new ingredient joins: one that can take more ingredients, into an output whose contents
+/// reach the goal (`carries`: the tree's `carriers`), where ingredients of the same kind go in (salt
+/// where the pepper is sprinkled), else with the dish's usual motion, closest to the goal.
 fn attach_point(
     ctx: &Context,
     tree: &Tree,
     order: &[TUnitId],
+    carries: &[bool],
     o: &str,
     c: Category,
 ) -> Option<TUnitId> {
     let goal_label = tree.slots[tree.goal].node.label.as_str();
     // closest to the goal first: a unit further from it must do strictly better, so its kin
     // ingredients are worked out only when they could make it
-    let mut best: Option<(TUnitId, (bool, bool, usize))> = None;
+    let mut best: Option<(TUnitId, (bool, bool, bool, usize))> = None;
     for &u in order.iter().rev() {
         let unit = &tree.units[u];
-        let takes = unit
+        let mut holding = unit
             .outputs
             .iter()
-            .any(|x| tree.slots[x.0].node.holds_something());
-        if !takes {
+            .filter(|x| tree.slots[x.0].node.holds_something())
+            .peekable();
+        if holding.peek().is_none() {
             continue;
         }
+        let reaches =
+            holding.any(|x| carries[x.0]) || unit.outputs.iter().any(|x| x.0 == tree.goal);
         // a unit that adds an ingredient, not one that only moves the dish itself
         let adds = unit.inputs.iter().any(|i| {
             let x = &tree.slots[i.0];
             i.1 && !x.utensil && x.node.label != goal_label
         });
         let beats = |kin: bool, pref: usize| {
-            let key = (adds, kin, usize::MAX - pref);
+            let key = (reaches, adds, kin, usize::MAX - pref);
             best.as_ref().is_none_or(|(_, b)| key > *b).then_some(key)
         };
         // not even with kin ingredients and the dish's first motion: its motion is not looked up
@@ -1014,8 +1020,9 @@ fn attach_point(
         });
         if let Some(key) = beats(kin, pref) {
             best = Some((u, key));
-            // a unit adding ingredients of the same kind with the dish's first motion: none beats it
-            if key == (true, true, usize::MAX) {
+            // a unit adding ingredients of the same kind with the dish's first motion into the dish: none
+            // beats it
+            if key == (true, true, true, usize::MAX) {
                 break;
             }
         }
@@ -1164,11 +1171,12 @@ fn finish_branch<'kb>(
         tree.rename_in(before..tree.slots.len(), eq, o);
     }
     let order = tree.order();
-    let Some(m) = attach_point(ctx, tree, &order, o, c) else {
+    let carries = tree.carriers(&order);
+    let Some(m) = attach_point(ctx, tree, &order, &carries, o, c) else {
         return Err(format!("no unit of the tree can take '{o}'"));
     };
     tree.units[m].inputs.push((last, true));
-    tree.add_contents_downstream(m, o, &order);
+    tree.add_contents_downstream(m, o, &order, &carries);
     tree.units[m].origin = Origin::Attached;
     let _ = write!(how, "; added at '{}'", tree.units[m].motion);
     Ok((chosen_state, how))

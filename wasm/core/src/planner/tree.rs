@@ -80,6 +80,17 @@ pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<St
     }
 }
 
+/// Starts a node's `contains` list, in place of `empty`, with one item (for a node holding nothing).
+fn start_contents(node: &mut ObjectNode, item: &str) {
+    node.states
+        .retain(|s| !(s.name == "empty" && s.arg.is_none()));
+    node.states.push(State {
+        name: "contains".to_string(),
+        arg: Some(StateArg::Ingredients(vec![item.to_string()])),
+    });
+    node.states.sort();
+}
+
 /// Adds an item to a list of contents (sorted and unique) unless it is there.
 pub(crate) fn add_item(list: &mut Vec<String>, item: &str) {
     if let Err(at) = list.binary_search_by(|x| x.as_str().cmp(item)) {
@@ -131,6 +142,21 @@ fn value_key<'b>(
     }
     key[outs..].sort_unstable();
     key
+}
+
+/// Whether what `node` holds goes on into `theirs`, made by a unit taking it: a food made from a food
+/// carries it (a batter baked into a cake, whose list may name the batter's ingredients, or nothing);
+/// a container or tool passes its contents on to a node that holds something and is the same vessel
+/// or lists all of them.
+fn passes_on(node: &Slot, theirs: &Slot) -> bool {
+    if !node.utensil && !theirs.utensil {
+        return true;
+    }
+    let (node, theirs) = (&node.node, &theirs.node);
+    // the contents compared last: the dearest test, and only when it decides
+    theirs.holds_something()
+        && (theirs.label == node.label
+            || node.contents().all(|x| theirs.contents().any(|c| c == x)))
 }
 
 /// Keeps in a slot's lists of contents only the items `keep` accepts (see `edit_contents`). A node
@@ -480,15 +506,62 @@ impl<'kb> Tree<'kb> {
         self.rename_in(0..self.slots.len(), from, to);
     }
 
-    /// Adds `label` to the contents of the unit's receiving outputs (those with the longest `contains`
-    /// list) and, downstream, to every node that took over those contents. `order` is the tree's
-    /// order before the new ingredient's branch joined `unit` (the branch consumes none of those nodes).
-    pub fn add_contents_downstream(&mut self, unit: TUnitId, label: &str, order: &[TUnitId]) {
+    /// Per slot, whether contents added to it reach the goal: it is the goal, or a unit of `order`
+    /// takes it and passes its contents on (see `passes_on`) to a slot that reaches the goal. Where an
+    /// ingredient joins a unit, only such an output keeps it in the dish (a blender jar emptied of its
+    /// oats alone, or a pan the toast leaves, would lose it).
+    pub fn carriers(&self, order: &[TUnitId]) -> Vec<bool> {
+        let mut carries = vec![false; self.slots.len()];
+        carries[self.goal] = true;
+        // consumers come after producers in an execution order: walked backwards, a unit's outputs are
+        // settled before its inputs are judged
+        for &v in order.iter().rev() {
+            let unit = &self.units[v];
+            for &(s, _) in &unit.inputs {
+                if !carries[s] {
+                    let node = &self.slots[s];
+                    carries[s] = unit
+                        .outputs
+                        .iter()
+                        .any(|&(o, _)| o != s && carries[o] && passes_on(node, &self.slots[o]));
+                }
+            }
+        }
+        carries
+    }
+
+    /// Adds `label` to the contents of the unit's receiving outputs (of those holding something, the
+    /// ones with the longest `contains` list among those that reach the goal, else among all) and,
+    /// downstream, to every node that took over those contents. `order` is the tree's order before the
+    /// new ingredient's branch joined `unit` (the branch consumes none of those nodes), `carries` its
+    /// `carriers`.
+    pub fn add_contents_downstream(
+        &mut self,
+        unit: TUnitId,
+        label: &str,
+        order: &[TUnitId],
+        carries: &[bool],
+    ) {
         let Some(u) = self.units.get(unit) else {
             return;
         };
         let count = |o: &(SlotId, bool)| self.slots[o.0].node.ingredient_count();
-        let longest = u.outputs.iter().map(count).max().unwrap_or(0);
+        let reaching = u.outputs.iter().any(|o| carries[o.0] && count(o) > 0);
+        let goal = &self.slots[self.goal].node;
+        if !reaching && goal.label != label && u.outputs.iter().any(|o| o.0 == self.goal) {
+            // the dish itself lists nothing yet (a tree pruned down to its last unit): it takes the
+            // ingredient (never itself) rather than the plate beside it
+            start_contents(self.slots[self.goal].node.to_mut(), label);
+            return;
+        }
+        let receives = |o: &(SlotId, bool)| {
+            if reaching && !carries[o.0] {
+                0
+            } else {
+                count(o)
+            }
+        };
+        let longest = u.outputs.iter().map(receives).max().unwrap_or(0);
         // each slot to visit goes with where in `order` the units taking it can be: past its maker when
         // that is its designated producer (an execution order puts producers first), else anywhere
         let after = |s: SlotId, maker: TUnitId, at: usize| {
@@ -502,7 +575,7 @@ impl<'kb> Tree<'kb> {
         let mut work: Vec<(SlotId, usize)> = u
             .outputs
             .iter()
-            .filter(|o| longest > 0 && count(o) == longest)
+            .filter(|o| longest > 0 && receives(o) == longest)
             .map(|o| (o.0, at.map_or(0, |at| after(o.0, unit, at))))
             .collect();
         // every slot visited holds contents and lists `label` after its visit, so a slot visited again
@@ -515,11 +588,9 @@ impl<'kb> Tree<'kb> {
             // the nodes taking over its contents, judged before the edit (it changes only `s`)
             for (at, v) in self.consumers_from(s, order, from) {
                 for &(o, _) in &self.units[v].outputs {
-                    let theirs = &self.slots[o].node;
-                    // the contents compared last: the dearest test, and only when it decides
-                    let took_over = || node.contents().all(|x| theirs.contents().any(|c| c == x));
-                    let same_vessel = theirs.label == node.label;
-                    if o != s && theirs.holds_something() && (same_vessel || took_over()) {
+                    // a list to add to: a food listing nothing is where the walk ends
+                    let (mine, theirs) = (&self.slots[s], &self.slots[o]);
+                    if o != s && theirs.node.holds_something() && passes_on(mine, theirs) {
                         work.push((o, after(o, v, at)));
                     }
                 }
