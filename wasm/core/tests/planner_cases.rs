@@ -947,7 +947,7 @@ S\tin\t[pot]
 ";
 
 #[test]
-fn a_step_names_the_food_a_tool_works_on_or_the_container_it_closes() {
+fn a_step_names_the_food_a_tool_works_on_the_container_it_closes_and_where_food_goes() {
     let p = plan_of(
         &[("custard.txt", CUSTARD)],
         &ExactMatch,
@@ -956,9 +956,10 @@ fn a_step_names_the_food_a_tool_works_on_or_the_container_it_closes() {
     assert_eq!(
         p.steps,
         [
-            "Pour the egg and the milk.",
+            // the moved food says nothing of where it goes: the bowl that now lists it does
+            "Pour the egg and the milk into the bowl.",
             "Mix the egg and the milk in the bowl with the whisk.",
-            "Pour the custard batter.",
+            "Pour the custard batter into the pot.",
             "Cover the pot with the pot lid.",
             "Cook the pot.",
         ],
@@ -1098,4 +1099,38 @@ S\ton\t[plate]
     let goal = &p.units.last().unwrap().outputs;
     let dish = goal.iter().find(|n| n.label == "toast salad").unwrap();
     assert_eq!(dish.states, ["contains {salt}", "on [plate]"]);
+}
+
+#[test]
+fn a_step_puts_food_on_what_the_recipe_puts_things_on() {
+    // the bread's node says nothing of where it goes; the plate that lists it does, and the recipe
+    // puts things on a plate rather than in it
+    let served = "//
+O\tplate\t0
+S\tempty
+O\tbread\t1
+S\tsliced
+M\tpick-and-place\t<Assumed>
+O\tplate\t0
+S\tcontains\t{bread}
+//
+O\tplate\t0
+S\tcontains\t{bread}
+O\tfork\t1
+M\tarrange\t<Assumed>
+O\tbread salad\t1\t15
+S\tcontains\t{bread}
+S\ton\t[plate]
+//
+";
+    let p = plan_of(
+        &[("served.txt", served)],
+        &ExactMatch,
+        &query("salad", &[("bread", "sliced")]),
+    );
+    assert_eq!(
+        p.steps[0], "Place the bread onto the plate.",
+        "{:#?}",
+        p.steps
+    );
 }

@@ -335,6 +335,22 @@ const PUTS: &[&str] = &["pick-and-place", "place", "put inside", "insert"];
 /// Motions that open or close a container.
 const CLOSES: &[&str] = &["open", "close", "cover", "uncover"];
 
+/// How things are put in `container`, as the tree's nodes say ("on" a plate, "in" a bowl), else "in".
+fn relation_to<'t>(tree: &'t Tree, container: &str) -> &'t str {
+    tree.slots
+        .iter()
+        .flat_map(|slot| &slot.node.states)
+        .find_map(|s| match &s.arg {
+            Some(StateArg::Container(c))
+                if c == container && (s.name == "in" || s.name == "on") =>
+            {
+                Some(s.name.as_str())
+            }
+            _ => None,
+        })
+        .unwrap_or("in")
+}
+
 /// One plain sentence for a unit: "Slice the tomato on the cutting board." `objects` is a buffer reused
 /// from sentence to sentence (the sentence's objects, then its tools after them).
 fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> String {
@@ -405,18 +421,31 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
         if closed {
             return None;
         }
-        unit.outputs.iter().find_map(|&(x, _)| {
-            let n = node(x);
-            if !objects.contains(&n.label.as_str()) {
-                return None;
-            }
-            n.states.iter().find_map(|s| match &s.arg {
-                Some(StateArg::Container(c)) if !objects.contains(&c.as_str()) => {
-                    Some((s.name.as_str(), c.as_str()))
+        unit.outputs
+            .iter()
+            .find_map(|&(x, _)| {
+                let n = node(x);
+                if !objects.contains(&n.label.as_str()) {
+                    return None;
                 }
-                _ => None,
+                n.states.iter().find_map(|s| match &s.arg {
+                    Some(StateArg::Container(c)) if !objects.contains(&c.as_str()) => {
+                        Some((s.name.as_str(), c.as_str()))
+                    }
+                    _ => None,
+                })
             })
-        })
+            // no moved object says where it is (ingredients that joined the unit, whose lists alone
+            // record them): the container that now holds one of them
+            .or_else(|| {
+                unit.outputs.iter().find_map(|&(x, _)| {
+                    let n = node(x);
+                    let holds = utensil(x)
+                        && !objects.contains(&n.label.as_str())
+                        && n.contents().any(|c| objects.contains(&c));
+                    holds.then(|| (relation_to(tree, &n.label), n.label.as_str()))
+                })
+            })
     });
     let moved = objects.len();
     for &(x, m) in &unit.inputs {
@@ -437,16 +466,11 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     text.push(' ');
     push_list(&mut text, objects);
     if let Some((rel, c)) = place {
-        let into = matches!(
-            unit.motion.trim_end_matches('*'),
-            "pour"
-                | "pick-and-place"
-                | "put inside"
-                | "insert"
-                | "add"
-                | "scoop and pour"
-                | "place"
-        );
+        let into = motion.contains("pour")
+            || matches!(
+                motion,
+                "add" | "pick-and-place" | "put inside" | "insert" | "place"
+            );
         let rel = match (rel, into) {
             ("in", true) => "into",
             ("on", true) => "onto",
