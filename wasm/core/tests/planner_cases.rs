@@ -238,7 +238,7 @@ fn case_1_object_and_state_in_the_tree_change_nothing() {
         [
             "Place the tomato onto the cutting board.",
             "Slice the tomato on the cutting board.",
-            "Mix the lettuce and the tomato.",
+            "Mix the lettuce and the tomato in the salad bowl.",
         ]
     );
 }
@@ -413,7 +413,7 @@ fn pruning_removes_what_was_not_asked_for_and_keeps_the_tree_connected() {
     // the goal and the containers no longer list it
     assert_eq!(goal_contents(&p), ["tomato"]);
     assert!(p.units.iter().all(|u| !u.inputs.is_empty()));
-    assert_eq!(p.steps.last().unwrap(), "Mix the tomato.");
+    assert_eq!(p.steps.last().unwrap(), "Mix the tomato in the salad bowl.");
 }
 
 #[test]

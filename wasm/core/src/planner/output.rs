@@ -335,6 +335,16 @@ const PUTS: &[&str] = &["pick-and-place", "place", "put inside", "insert"];
 /// Motions that open or close a container.
 const CLOSES: &[&str] = &["open", "close", "cover", "uncover"];
 
+/// Where a node is (`in [bowl]` as ("in", "bowl")), unless that is one of the `objects` moved.
+fn container_of<'n>(n: &'n ObjectNode, objects: &[&str]) -> Option<(&'n str, &'n str)> {
+    n.states.iter().find_map(|s| match &s.arg {
+        Some(StateArg::Container(c)) if !objects.contains(&c.as_str()) => {
+            Some((s.name.as_str(), c.as_str()))
+        }
+        _ => None,
+    })
+}
+
 /// How things are put in `container`, as the tree's nodes say ("on" a plate, "in" a bowl), else "in".
 fn relation_to<'t>(tree: &'t Tree, container: &str) -> &'t str {
     tree.slots
@@ -428,22 +438,22 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
                 if !objects.contains(&n.label.as_str()) {
                     return None;
                 }
-                n.states.iter().find_map(|s| match &s.arg {
-                    Some(StateArg::Container(c)) if !objects.contains(&c.as_str()) => {
-                        Some((s.name.as_str(), c.as_str()))
-                    }
-                    _ => None,
-                })
+                container_of(n, objects)
             })
             // no moved object says where it is (ingredients that joined the unit, whose lists alone
-            // record them): the container that now holds one of them
+            // record them): where what now holds one of them is, or that container itself
             .or_else(|| {
                 unit.outputs.iter().find_map(|&(x, _)| {
                     let n = node(x);
-                    let holds = utensil(x)
-                        && !objects.contains(&n.label.as_str())
-                        && n.contents().any(|c| objects.contains(&c));
-                    holds.then(|| (relation_to(tree, &n.label), n.label.as_str()))
+                    if objects.contains(&n.label.as_str())
+                        || !n.contents().any(|c| objects.contains(&c))
+                    {
+                        return None;
+                    }
+                    if utensil(x) {
+                        return Some((relation_to(tree, &n.label), n.label.as_str()));
+                    }
+                    container_of(n, objects)
                 })
             })
     });
