@@ -364,9 +364,17 @@ fn case_4_takes_a_branch_from_elsewhere_in_foon_and_attaches_it_where_ingredient
     assert_eq!(o.status, Status::Planned);
     let m = o.matched.as_ref().unwrap();
     assert_eq!((m.label.as_str(), m.state.as_str()), ("cucumber", "sliced"));
+    let reason = o.reason.as_deref().unwrap();
+    assert!(reason.contains("added at 'mix'"), "{o:#?}");
+    // where the equivalent was found, and that it is not in the tree, said once each
     assert!(
-        o.reason.as_deref().unwrap().contains("added at 'mix'"),
-        "{o:#?}"
+        reason.starts_with("equivalent 'cucumber' found in the universal FOON; "),
+        "{reason}"
+    );
+    assert_eq!(
+        reason.matches("not in the reference tree").count(),
+        1,
+        "{reason}"
     );
     let all = units(&p);
     let slice = all

@@ -457,9 +457,8 @@ fn equivalent(
         Some((label, sim)) => {
             w.alternatives = alternatives(&label);
             if !tree_labels.contains(&label) {
-                w.reasons.push(format!(
-                    "equivalent '{label}' found in the universal FOON, not in the reference tree"
-                ));
+                w.reasons
+                    .push(format!("equivalent '{label}' found in the universal FOON"));
             }
             Some((label, sim))
         }
