@@ -154,9 +154,27 @@ fn passes_on(node: &Slot, theirs: &Slot) -> bool {
     }
     let (node, theirs) = (&node.node, &theirs.node);
     // the contents compared last: the dearest test, and only when it decides
-    theirs.holds_something()
-        && (theirs.label == node.label
-            || node.contents().all(|x| theirs.contents().any(|c| c == x)))
+    theirs.holds_something() && (theirs.label == node.label || lists_all(node, theirs))
+}
+
+/// Whether `theirs` lists every item of `node`'s contents: one pass over both when each has one
+/// `contains` list, as nearly every node does (lists are sorted).
+fn lists_all(node: &ObjectNode, theirs: &ObjectNode) -> bool {
+    fn only_list(n: &ObjectNode) -> Option<&[String]> {
+        let mut lists = n.states.iter().filter_map(|s| match &s.arg {
+            Some(StateArg::Ingredients(list)) if s.name == "contains" => Some(list.as_slice()),
+            _ => None,
+        });
+        match (lists.next(), lists.next()) {
+            (first, None) => Some(first.unwrap_or_default()),
+            _ => None,
+        }
+    }
+    let (Some(mine), Some(all)) = (only_list(node), only_list(theirs)) else {
+        return node.contents().all(|x| theirs.contents().any(|c| c == x));
+    };
+    let mut rest = all.iter();
+    mine.iter().all(|x| rest.any(|c| c == x))
 }
 
 /// Keeps in a slot's lists of contents only the items `keep` accepts (see `edit_contents`). A node
@@ -518,8 +536,9 @@ impl<'kb> Tree<'kb> {
         for &v in order.iter().rev() {
             let unit = &self.units[v];
             for &(s, _) in &unit.inputs {
-                if !carries[s] {
-                    let node = &self.slots[s];
+                let node = &self.slots[s];
+                // an empty tool or container passes nothing on, and no caller asks whether it would
+                if !carries[s] && (!node.utensil || node.node.holds_something()) {
                     carries[s] = unit
                         .outputs
                         .iter()
