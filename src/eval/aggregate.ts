@@ -50,6 +50,7 @@ export function metricsRow(group: string, variant: Variant, records: readonly Ev
     dead_units: sum(metrics.map((m) => m.dead_units)),
     goal_missing: metrics.filter((m) => !m.goal_produced).length,
     object_share: mean(metrics.map((m) => ratio(m.objects_in_tree, m.query_objects))),
+    dish_share: mean(metrics.map((m) => ratio(m.objects_in_dish, m.query_objects))),
     pair_share: mean(metrics.map((m) => ratio(m.pairs_in_tree, m.query_pairs))),
     extra_mean: mean(metrics.map((m) => m.extra_ingredients.length)),
     plans_with_extra: metrics.length === 0 ? 0 : metrics.filter((m) => m.extra_ingredients.length > 0).length / metrics.length,

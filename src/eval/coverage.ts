@@ -2,7 +2,7 @@
 // starting ingredients nobody asked for, substitution cases and confidence.
 
 import type { Plan, PlanNode } from "../planner/types";
-import { nodeKey, producedKeys } from "./structure";
+import { isGoal, nodeKey, producedKeys } from "./structure";
 import type { CaseCounts, CoverageMetrics } from "./types";
 
 export const emptyCases = (): CaseCounts => ({ c1: 0, c2: 0, c3: 0, c4: 0, none: 0 });
@@ -36,6 +36,9 @@ export function coverageMetrics(plan: Plan): CoverageMetrics {
   const objects = new Set(plan.query.ingredients.map((i) => i.object));
   const pairs = new Map(plan.query.ingredients.map((i) => [JSON.stringify([i.object, i.state]), i]));
   const pairsInTree = [...pairs.values()].filter((q) => nodes.some((n) => n.label === q.object && n.states.includes(q.state)));
+  // the dish as the last unit making it lists it: what the plan carries into the dish
+  const dish = plan.units.flatMap((u) => u.outputs).filter((n) => isGoal(n, plan.goal)).at(-1);
+  const inDish = new Set(dish === undefined ? [] : [dish.label, ...dish.ingredients]);
 
   const asked = new Set(objects);
   for (const outcome of plan.ingredients) if (outcome.match !== null) asked.add(outcome.match.label);
@@ -59,6 +62,7 @@ export function coverageMetrics(plan: Plan): CoverageMetrics {
   return {
     query_objects: objects.size,
     objects_in_tree: [...objects].filter((o) => labels.has(o)).length,
+    objects_in_dish: [...objects].filter((o) => inDish.has(o)).length,
     query_pairs: pairs.size,
     pairs_in_tree: pairsInTree.length,
     extra_ingredients: extra,

@@ -33,7 +33,8 @@ export function producedKeys(unit: PlanUnit): Set<string> {
   return new Set(unit.outputs.map(nodeKey).filter((key) => !inputs.has(key)));
 }
 
-function isGoal(node: PlanNode, goal: Plan["goal"]): boolean {
+/** Whether a node is the goal node: its label and states. */
+export function isGoal(node: PlanNode, goal: Plan["goal"]): boolean {
   if (node.label !== goal.label) return false;
   const a = sorted(node.states);
   const b = sorted(goal.states);

@@ -28,6 +28,8 @@ export interface CoverageMetrics {
   query_objects: number;
   /** Of those, the ones that occur in the tree (as a node label or in a node's ingredients). */
   objects_in_tree: number;
+  /** Of those, the ones the dish lists (the goal node made last: its label or its ingredients). */
+  objects_in_dish: number;
   /** Distinct query (object, state) pairs. */
   query_pairs: number;
   /** Of those, the ones with a node of that label carrying that state. */
@@ -84,6 +86,8 @@ export interface MetricsRow {
   goal_missing: number;
   /** Mean over plans of the share of query objects present in the tree, 0..1. */
   object_share: number;
+  /** Mean over plans of the share of query objects the dish lists, 0..1. */
+  dish_share: number;
   /** Mean over plans of the share of query (object, state) pairs present, 0..1. */
   pair_share: number;
   /** Mean number of extra starting ingredients per plan. */

@@ -35,6 +35,7 @@ describe("batch records and the metrics table", () => {
     const all = rows[2]!;
     expect(all).toMatchObject({ queries: 3, plans: 2, errors: 1, errors_by_code: { no_goal: 1 }, units_mean: 4, duplicate_units: 0, dead_units: 0 });
     expect(all.object_share).toBe(1);
+    expect(all.dish_share).toBe(1);
     expect(all.pair_share).toBe(1);
     expect(all.ms_total).toBe(15);
     expect(brokenInvariants(rows)).toEqual([]);

@@ -6,7 +6,7 @@ import { cleanUnits, node, outcome, plan, unit } from "./eval-fixtures";
 describe("coverage of the query", () => {
   it("a plan with every query ingredient in its state", () => {
     const m = coverageMetrics(plan());
-    expect(m).toMatchObject({ query_objects: 2, objects_in_tree: 2, query_pairs: 2, pairs_in_tree: 2, extra_ingredients: [] });
+    expect(m).toMatchObject({ query_objects: 2, objects_in_tree: 2, objects_in_dish: 2, query_pairs: 2, pairs_in_tree: 2, extra_ingredients: [] });
     expect(m.cases).toEqual({ c1: 2, c2: 0, c3: 0, c4: 0, none: 0 });
   });
 
@@ -20,6 +20,16 @@ describe("coverage of the query", () => {
     });
     const m = coverageMetrics(p);
     expect(m).toMatchObject({ query_objects: 2, objects_in_tree: 1, query_pairs: 2, pairs_in_tree: 0 });
+  });
+
+  it("an ingredient left in a container the dish does not take is in the tree but not in the dish", () => {
+    const units = cleanUnits();
+    // the salt is mixed in a cup that nothing takes on; the salad lists only the tomato
+    units[3] = unit([node("bowl", ["contains {tomato}"], ["tomato"])], "mix", [node("salad", ["mixed", "in [bowl]"], ["tomato"], "bowl")]);
+    units.splice(3, 0, unit([node("cup", ["empty"]), node("salt", ["ground"])], "pour", [node("cup", ["contains {salt}"], ["salt"])]));
+    const m = coverageMetrics(plan(units));
+    expect(m).toMatchObject({ query_objects: 2, objects_in_tree: 2, objects_in_dish: 1 });
+    expect(coverageMetrics(plan(units.slice(0, 3))).objects_in_dish).toBe(0);
   });
 
   it("starting ingredients are leaves that end up in a mixture, not utensils or containers", () => {
