@@ -1047,59 +1047,47 @@ fn salted_toast(buttered: bool) -> Plan {
     )
 }
 
+/// The salad of buttered bread with salt added: the salt joins the unit of `motion`, and the dish lists it.
+fn assert_salt_joins(buttered: bool, motion: &str) {
+    let p = salted_toast(buttered);
+    let salt = outcome(&p, "salt");
+    assert_eq!((salt.case, salt.status), (Some(4), Status::Planned));
+    let reason = salt.reason.as_deref().unwrap();
+    assert!(
+        reason.ends_with(&format!("added at '{motion}'")),
+        "{salt:#?}"
+    );
+    let contents = goal_contents(&p);
+    assert_eq!(contents, ["bread", "butter", "salt"], "{:#?}", units(&p));
+}
+
 #[test]
 fn an_added_ingredient_goes_with_what_reaches_the_dish_not_the_pan_left_behind() {
     // the mixing unit is where salads take ingredients: the salt joins it, and goes onto the bread,
     // which the toasting takes on, rather than into the pan, which holds more but goes nowhere
-    let p = salted_toast(true);
-    let salt = outcome(&p, "salt");
-    assert_eq!((salt.case, salt.status), (Some(4), Status::Planned));
-    assert!(
-        salt.reason.as_deref().unwrap().ends_with("added at 'mix'"),
-        "{salt:#?}"
-    );
-    assert_eq!(
-        goal_contents(&p),
-        ["bread", "butter", "salt"],
-        "{:#?}",
-        units(&p)
-    );
+    assert_salt_joins(true, "mix");
     // where nothing the mixing makes goes on to the dish, the salt joins the toasting instead
-    let p = salted_toast(false);
-    let salt = outcome(&p, "salt");
-    assert!(
-        salt.reason
-            .as_deref()
-            .unwrap()
-            .ends_with("added at 'toast'"),
-        "{salt:#?}"
-    );
-    assert_eq!(
-        goal_contents(&p),
-        ["bread", "butter", "salt"],
-        "{:#?}",
-        units(&p)
-    );
+    assert_salt_joins(false, "toast");
+}
+
+/// A recipe that puts sliced bread onto an empty plate, the plate then listing `holds`, and goes on with
+/// `rest` (FOON lines).
+fn bread_onto_plate(holds: &str, rest: &str) -> String {
+    format!(
+        "//\nO\tplate\t0\nS\tempty\nO\tbread\t1\nS\tsliced\nM\tpick-and-place\t<Assumed>\n\
+         O\tplate\t0\nS\tcontains\t{{{holds}}}\n{rest}//\n"
+    )
 }
 
 #[test]
 fn a_dish_listing_nothing_takes_the_added_ingredient_rather_than_the_plate() {
     // the dish is plated and lists no contents; the plate lists the dish
-    let plated = "//
-O\tplate\t0
-S\tempty
-O\tbread\t1
-S\tsliced
-M\tpick-and-place\t<Assumed>
-O\tplate\t0
-S\tcontains\t{toast salad}
-O\ttoast salad\t1\t15
-S\tempty
-S\ton\t[plate]
-//
-";
+    let plated = bread_onto_plate(
+        "toast salad",
+        "O\ttoast salad\t1\t15\nS\tempty\nS\ton\t[plate]\n",
+    );
     let p = plan_of(
-        &[("plated.txt", plated), ("salt.txt", SALTED)],
+        &[("plated.txt", &plated), ("salt.txt", SALTED)],
         &ExactMatch,
         &query("salad", &[("bread", "sliced"), ("salt", "granulated")]),
     );
@@ -1113,26 +1101,13 @@ S\ton\t[plate]
 fn a_step_puts_food_on_what_the_recipe_puts_things_on() {
     // the bread's node says nothing of where it goes; the plate that lists it does, and the recipe
     // puts things on a plate rather than in it
-    let served = "//
-O\tplate\t0
-S\tempty
-O\tbread\t1
-S\tsliced
-M\tpick-and-place\t<Assumed>
-O\tplate\t0
-S\tcontains\t{bread}
-//
-O\tplate\t0
-S\tcontains\t{bread}
-O\tfork\t1
-M\tarrange\t<Assumed>
-O\tbread salad\t1\t15
-S\tcontains\t{bread}
-S\ton\t[plate]
-//
-";
+    let served = bread_onto_plate(
+        "bread",
+        "//\nO\tplate\t0\nS\tcontains\t{bread}\nO\tfork\t1\nM\tarrange\t<Assumed>\n\
+         O\tbread salad\t1\t15\nS\tcontains\t{bread}\nS\ton\t[plate]\n",
+    );
     let p = plan_of(
-        &[("served.txt", served)],
+        &[("served.txt", &served)],
         &ExactMatch,
         &query("salad", &[("bread", "sliced")]),
     );
