@@ -969,7 +969,8 @@ fn a_step_names_the_food_a_tool_works_on_the_container_it_closes_and_where_food_
             "Mix the egg and the milk in the bowl with the whisk.",
             "Pour the custard batter into the pot.",
             "Cover the pot with the pot lid.",
-            "Cook the pot.",
+            // the pot is cooked with what it holds: the step names what it holds
+            "Cook the custard batter in the pot.",
         ],
         "{:#?}",
         units(&p)

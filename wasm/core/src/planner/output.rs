@@ -334,6 +334,15 @@ fn push_list(out: &mut String, items: &[&str]) {
 const PUTS: &[&str] = &["pick-and-place", "place", "put inside", "insert"];
 /// Motions that open or close a container.
 const CLOSES: &[&str] = &["open", "close", "cover", "uncover"];
+/// Other motions that handle a container itself rather than what it holds.
+const HANDLES: &[&str] = &[
+    "remove", "attach", "detach", "take out", "turn on", "turn off",
+];
+
+/// Whether a motion moves things into a place ("pour into the bowl", "tear and place onto the tray").
+fn moves_into(motion: &str) -> bool {
+    motion.contains("pour") || motion.contains("place") || PUTS.contains(&motion) || motion == "add"
+}
 
 /// Where a node is (`in [bowl]` as ("in", "bowl")), unless that is one of the `objects` moved.
 fn container_of<'n>(n: &'n ObjectNode, objects: &[&str]) -> Option<(&'n str, &'n str)> {
@@ -386,9 +395,11 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
             }
         }
     }
-    // no food among the inputs, and only tools move (a whisk, a lid): the unit works on a container that
-    // stays put ("Cover the pot with the pot lid"), or on what it holds ("Mix the egg and the milk in the
-    // bowl with the whisk"), not on the tool ("Mix the whisk"); a tool put somewhere stays the object
+    // no food among the inputs: the unit works on what a container holds ("Mix the egg and the milk in
+    // the bowl with the whisk", "Cook the egg in the pot", "Pour the flour and the salt into the bowl"),
+    // not on a tool or the container ("Mix the whisk", "Cook the pot", "Pour the bowl"), unless it handles
+    // the container itself: "Place the pot onto the stove", "Cover the pot with the pot lid" (only tools
+    // move: the lid) but "Cover the pot" when the pot moves
     let mut holder = None;
     let mut closed = false;
     let tool = |x: SlotId| utensil(x) && node(x).states.is_empty();
@@ -396,20 +407,35 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     let tools_only = unit.inputs.iter().any(|&(x, m)| m && tool(x))
         && unit.inputs.iter().all(|&(x, m)| !m || tool(x))
         && !PUTS.contains(&motion);
-    if objects.is_empty() && tools_only {
-        if let Some(&(x, _)) = unit
-            .inputs
-            .iter()
-            .find(|&&(x, _)| node(x).holds_something())
-        {
+    let handles = PUTS.contains(&motion)
+        || HANDLES.contains(&motion)
+        || motion.ends_with(" open")
+        || (CLOSES.contains(&motion) && !tools_only);
+    if objects.is_empty() && !handles {
+        let holding = |i: &&(SlotId, bool)| node(i.0).holds_something();
+        // a moved tool, or a machine holding a vessel (a mixer with its bowl), is not what is worked on
+        let machine = |x: SlotId| tool(x) || node(x).states.iter().any(|s| s.name == "with");
+        let moved = unit.inputs.iter().filter(|i| i.1);
+        let worked = moved.clone().find(holding).or_else(|| {
+            moved
+                .clone()
+                .all(|i| machine(i.0))
+                .then(|| unit.inputs.iter().find(holding))
+                .flatten()
+        });
+        if let Some(&(x, _)) = worked {
+            let n = node(x);
             if CLOSES.contains(&motion) {
-                push(objects, &node(x).label);
+                push(objects, &n.label);
                 closed = true;
             } else {
-                for l in node(x).contents() {
+                for l in n.contents() {
                     push(objects, l);
                 }
-                holder = Some(("in", node(x).label.as_str()));
+                // poured out of it (with more than tools moving): where it goes is the place
+                if tools_only || !moves_into(motion) {
+                    holder = Some((relation_to(tree, &n.label), n.label.as_str()));
+                }
             }
         }
     }
@@ -476,11 +502,7 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     text.push(' ');
     push_list(&mut text, objects);
     if let Some((rel, c)) = place {
-        let into = motion.contains("pour")
-            || matches!(
-                motion,
-                "add" | "pick-and-place" | "put inside" | "insert" | "place"
-            );
+        let into = moves_into(motion);
         let rel = match (rel, into) {
             ("in", true) => "into",
             ("on", true) => "onto",
