@@ -1118,3 +1118,67 @@ fn a_step_puts_food_on_what_the_recipe_puts_things_on() {
         p.steps
     );
 }
+
+#[test]
+fn a_step_uncovers_the_pot_not_the_lid_and_attaches_a_bowl_to_its_machine() {
+    let soup = "//
+O\tblender\t0
+S\toff
+O\tblender jar\t1
+S\tempty
+M\tattach\t<Assumed>
+O\tblender jar\t1
+S\tattached to\t[blender]
+S\tempty
+//
+O\tblender jar\t1
+S\tattached to\t[blender]
+S\tempty
+O\ttomato\t1
+S\tchopped
+M\tpour\t<Assumed>
+O\tblender jar\t1
+S\tattached to\t[blender]
+S\tcontains\t{tomato}
+//
+O\tblender jar\t0
+S\tattached to\t[blender]
+S\tcontains\t{tomato}
+O\tblender lid\t1
+M\tcover\t<Assumed>
+O\tblender jar\t0
+S\tattached to\t[blender]
+S\tcontains\t{tomato}
+S\tcovered\t[blender lid]
+O\tblender lid\t1
+S\ton\t[blender jar]
+//
+O\tblender jar\t1
+S\tattached to\t[blender]
+S\tcontains\t{tomato}
+S\tcovered\t[blender lid]
+O\tblender lid\t1
+S\ton\t[blender jar]
+M\tuncover\t<Assumed>
+O\ttomato soup\t1\t1
+S\tcontains\t{tomato}
+S\tin\t[blender jar]
+//
+";
+    let p = plan_of(
+        &[("soup.txt", soup)],
+        &ExactMatch,
+        &query("soup", &[("tomato", "chopped")]),
+    );
+    assert_eq!(
+        p.steps,
+        [
+            "Attach the blender jar to the blender.",
+            "Pour the tomato into the blender jar.",
+            "Cover the blender jar with the blender lid.",
+            "Uncover the blender jar.",
+        ],
+        "{:#?}",
+        units(&p)
+    );
+}

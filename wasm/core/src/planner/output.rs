@@ -344,13 +344,19 @@ fn moves_into(motion: &str) -> bool {
     motion.contains("pour") || motion.contains("place") || PUTS.contains(&motion) || motion == "add"
 }
 
-/// Where a node is (`in [bowl]` as ("in", "bowl")), unless that is one of the `objects` moved.
+/// Where a node is (`in [bowl]` as ("in", "bowl"), `attached to [mixer]` as ("to", "mixer")), unless
+/// that is one of the `objects` moved. A lid it is covered with, or a tool it is with, is not a place.
 fn container_of<'n>(n: &'n ObjectNode, objects: &[&str]) -> Option<(&'n str, &'n str)> {
-    n.states.iter().find_map(|s| match &s.arg {
-        Some(StateArg::Container(c)) if !objects.contains(&c.as_str()) => {
-            Some((s.name.as_str(), c.as_str()))
-        }
-        _ => None,
+    n.states.iter().find_map(|s| {
+        let Some(StateArg::Container(c)) = &s.arg else {
+            return None;
+        };
+        let rel = match s.name.as_str() {
+            "attached to" => "to",
+            rel @ ("in" | "on" | "over" | "under") => rel,
+            _ => return None,
+        };
+        (!objects.contains(&c.as_str())).then_some((rel, c.as_str()))
     })
 }
 
@@ -407,25 +413,29 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     let tools_only = unit.inputs.iter().any(|&(x, m)| m && tool(x))
         && unit.inputs.iter().all(|&(x, m)| !m || tool(x))
         && !PUTS.contains(&motion);
-    let handles = PUTS.contains(&motion)
-        || HANDLES.contains(&motion)
-        || motion.ends_with(" open")
-        || (CLOSES.contains(&motion) && !tools_only);
+    let closes = CLOSES.contains(&motion);
+    let handles = PUTS.contains(&motion) || HANDLES.contains(&motion) || motion.ends_with(" open");
     if objects.is_empty() && !handles {
-        let holding = |i: &&(SlotId, bool)| node(i.0).holds_something();
-        // a moved tool, or a machine holding a vessel (a mixer with its bowl), is not what is worked on
+        let vessel = |i: &&(SlotId, bool)| node(i.0).holds_something();
+        // a lid is put on or taken off what the unit covers or uncovers, before or after
+        let covered = closes
+            .then(|| {
+                let mut nodes = unit.inputs.iter().chain(&unit.outputs);
+                nodes.find(|i| node(i.0).states.iter().any(|s| s.name == "covered"))
+            })
+            .flatten();
+        // a moved tool, or a machine holding a vessel (a mixer with its bowl), is not what is worked on;
+        // nor is a lid
         let machine = |x: SlotId| tool(x) || node(x).states.iter().any(|s| s.name == "with");
         let moved = unit.inputs.iter().filter(|i| i.1);
-        let worked = moved.clone().find(holding).or_else(|| {
-            moved
-                .clone()
-                .all(|i| machine(i.0))
-                .then(|| unit.inputs.iter().find(holding))
+        let worked = covered.or_else(|| moved.clone().find(vessel)).or_else(|| {
+            (closes || moved.clone().all(|i| machine(i.0)))
+                .then(|| unit.inputs.iter().find(vessel))
                 .flatten()
         });
         if let Some(&(x, _)) = worked {
             let n = node(x);
-            if CLOSES.contains(&motion) {
+            if closes {
                 push(objects, &n.label);
                 closed = true;
             } else {
