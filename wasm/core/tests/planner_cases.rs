@@ -1182,3 +1182,40 @@ S\tin\t[blender jar]
         units(&p)
     );
 }
+
+#[test]
+fn a_step_stirs_the_food_not_the_empty_spoon() {
+    let stirred = "//
+O\tbowl\t0
+S\tempty
+O\ttomato\t1
+S\tchopped
+M\tpour\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{tomato}
+//
+O\tbowl\t0
+S\tcontains\t{tomato}
+O\tspoon\t1
+S\tempty
+M\tstir\t<Assumed>
+O\ttomato salad\t1\t15
+S\tcontains\t{tomato}
+S\tin\t[bowl]
+//
+";
+    let p = plan_of(
+        &[("stirred.txt", stirred)],
+        &ExactMatch,
+        &query("salad", &[("tomato", "chopped")]),
+    );
+    assert_eq!(
+        p.steps,
+        [
+            "Pour the tomato into the bowl.",
+            "Stir the tomato in the bowl."
+        ],
+        "{:#?}",
+        units(&p)
+    );
+}

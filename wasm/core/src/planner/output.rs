@@ -424,9 +424,14 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
                 nodes.find(|i| node(i.0).states.iter().any(|s| s.name == "covered"))
             })
             .flatten();
-        // a moved tool, or a machine holding a vessel (a mixer with its bowl), is not what is worked on;
-        // nor is a lid
-        let machine = |x: SlotId| tool(x) || node(x).states.iter().any(|s| s.name == "with");
+        // a moved tool (a spoon, even an empty or clean one), or a machine holding a vessel (a mixer with
+        // its bowl), is not what is worked on; nor is a lid
+        let machine = |x: SlotId| {
+            let n = node(x);
+            let bare_tool =
+                utensil(x) && !n.holds_something() && n.states.iter().all(|s| s.arg.is_none());
+            bare_tool || n.states.iter().any(|s| s.name == "with")
+        };
         let moved = unit.inputs.iter().filter(|i| i.1);
         let worked = covered.or_else(|| moved.clone().find(vessel)).or_else(|| {
             (closes || moved.clone().all(|i| machine(i.0)))
