@@ -1165,21 +1165,15 @@ S\tcontains\t{tomato}
 S\tin\t[blender jar]
 //
 ";
-    let p = plan_of(
-        &[("soup.txt", soup)],
-        &ExactMatch,
-        &query("soup", &[("tomato", "chopped")]),
-    );
-    assert_eq!(
-        p.steps,
-        [
+    assert_steps(
+        soup,
+        "soup",
+        &[
             "Attach the blender jar to the blender.",
             "Pour the tomato into the blender jar.",
             "Cover the blender jar with the blender lid.",
             "Uncover the blender jar.",
         ],
-        "{:#?}",
-        units(&p)
     );
 }
 
@@ -1204,18 +1198,22 @@ S\tcontains\t{tomato}
 S\tin\t[bowl]
 //
 ";
-    let p = plan_of(
-        &[("stirred.txt", stirred)],
-        &ExactMatch,
-        &query("salad", &[("tomato", "chopped")]),
-    );
-    assert_eq!(
-        p.steps,
-        [
+    assert_steps(
+        stirred,
+        "salad",
+        &[
             "Pour the tomato into the bowl.",
-            "Stir the tomato in the bowl."
+            "Stir the tomato in the bowl.",
         ],
-        "{:#?}",
-        units(&p)
     );
+}
+
+/// The steps of a dish of chopped tomato planned on one recipe.
+fn assert_steps(recipe: &str, dish: &str, steps: &[&str]) {
+    let p = plan_of(
+        &[("recipe.txt", recipe)],
+        &ExactMatch,
+        &query(dish, &[("tomato", "chopped")]),
+    );
+    assert_eq!(p.steps, steps, "{:#?}", units(&p));
 }
