@@ -1217,3 +1217,46 @@ fn assert_steps(recipe: &str, dish: &str, steps: &[&str]) {
     );
     assert_eq!(p.steps, steps, "{:#?}", units(&p));
 }
+
+#[test]
+fn two_steps_that_read_the_same_say_what_each_makes() {
+    let cut_twice = "//
+O\ttomato\t1
+S\tchopped
+S\ton\t[cutting board]
+O\tknife\t1
+M\tcut\t<Assumed>
+O\ttomato\t1
+S\thalved
+S\ton\t[cutting board]
+//
+O\ttomato\t1
+S\thalved
+S\ton\t[cutting board]
+O\tknife\t1
+M\tcut\t<Assumed>
+O\ttomato\t1
+S\ton\t[cutting board]
+S\tstripped
+//
+O\ttomato\t1
+S\ton\t[cutting board]
+S\tstripped
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\ttomato salad\t1\t15
+S\tcontains\t{tomato}
+S\tin\t[bowl]
+//
+";
+    assert_steps(
+        cut_twice,
+        "salad",
+        &[
+            "Cut the tomato on the cutting board until it is halved.",
+            "Cut the tomato on the cutting board until it is stripped.",
+            "Pour the tomato into the bowl.",
+        ],
+    );
+}

@@ -61,10 +61,11 @@ pub(crate) fn build(p: Parts) -> Plan {
         .collect();
     let goal_node = &tree.slots[tree.goal].node;
     let mut objects = Vec::new();
-    let steps = order
+    let mut steps: Vec<String> = order
         .iter()
         .map(|&u| sentence(tree, u, &mut objects))
         .collect();
+    tell_apart(tree, order, &mut steps);
     let uses = Uses::new(tree, order);
     let mut progress_lines = Vec::with_capacity(p.outcomes.len());
     let mut done: Vec<&str> = Vec::with_capacity(p.outcomes.len());
@@ -102,6 +103,39 @@ pub(crate) fn build(p: Parts) -> Plan {
         removed: p.removed,
         progress_lines,
         steps,
+    }
+}
+
+/// Two steps that read the same ("Cut the dough on the cutting board", to halve it and then to cut it
+/// into strips) each say what their food becomes: "… until it is halved." A plan has a few dozen steps:
+/// pairs are compared directly.
+fn tell_apart(tree: &Tree, order: &[TUnitId], steps: &mut [String]) {
+    let repeated: Vec<usize> = (0..steps.len())
+        .filter(|&i| (0..steps.len()).any(|j| j != i && steps[j] == steps[i]))
+        .collect();
+    for i in repeated {
+        let unit = &tree.units[order[i]];
+        // the food's new plain states: in an output, not in the input of the same name
+        let made = unit.outputs.iter().find_map(|&(o, _)| {
+            let out = &tree.slots[o].node;
+            let before = unit
+                .inputs
+                .iter()
+                .map(|&(x, _)| &tree.slots[x].node)
+                .find(|n| n.label == out.label && !tree.slots[o].utensil)?;
+            let new: Vec<&str> = out
+                .physical_states()
+                .filter(|s| !before.physical_states().any(|b| b == *s))
+                .collect();
+            (!new.is_empty()).then_some(new)
+        });
+        if let Some(new) = made {
+            let step = &mut steps[i];
+            step.pop();
+            step.push_str(" until it is ");
+            step.push_str(&new.join(" and "));
+            step.push('.');
+        }
     }
 }
 
