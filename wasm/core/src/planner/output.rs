@@ -117,12 +117,15 @@ fn tell_apart(tree: &Tree, order: &[TUnitId], steps: &mut [String]) {
         let unit = &tree.units[order[i]];
         // the food's new plain states: in an output, not in the input of the same name
         let made = unit.outputs.iter().find_map(|&(o, _)| {
+            if tree.slots[o].utensil {
+                return None;
+            }
             let out = &tree.slots[o].node;
             let before = unit
                 .inputs
                 .iter()
                 .map(|&(x, _)| &tree.slots[x].node)
-                .find(|n| n.label == out.label && !tree.slots[o].utensil)?;
+                .find(|n| n.label == out.label)?;
             let new: Vec<&str> = out
                 .physical_states()
                 .filter(|s| !before.physical_states().any(|b| b == *s))
