@@ -162,19 +162,25 @@ impl ObjectNode {
     /// How many ingredients `ingredients` lists: without making the list when the object has one
     /// `contains` list (sorted and unique, as every list is), as nearly every object does.
     pub fn ingredient_count(&self) -> usize {
+        if let Some(list) = self.contents_list() {
+            return list.len();
+        }
+        let mut all: Vec<&str> = self.contents().collect();
+        all.sort_unstable();
+        all.dedup();
+        all.len()
+    }
+
+    /// The object's contents as its one `contains` list (sorted and unique), empty when it has none;
+    /// `None` when it has several (see `contents`).
+    pub fn contents_list(&self) -> Option<&[String]> {
         let mut lists = self.states.iter().filter_map(|s| match &s.arg {
-            Some(StateArg::Ingredients(list)) if s.name == "contains" => Some(list),
+            Some(StateArg::Ingredients(list)) if s.name == "contains" => Some(list.as_slice()),
             _ => None,
         });
         match (lists.next(), lists.next()) {
-            (None, _) => 0,
-            (Some(list), None) => list.len(),
-            _ => {
-                let mut all: Vec<&str> = self.contents().collect();
-                all.sort_unstable();
-                all.dedup();
-                all.len()
-            }
+            (first, None) => Some(first.unwrap_or_default()),
+            _ => None,
         }
     }
 

@@ -160,17 +160,7 @@ fn passes_on(node: &Slot, theirs: &Slot) -> bool {
 /// Whether `theirs` lists every item of `node`'s contents: one pass over both when each has one
 /// `contains` list, as nearly every node does (lists are sorted).
 fn lists_all(node: &ObjectNode, theirs: &ObjectNode) -> bool {
-    fn only_list(n: &ObjectNode) -> Option<&[String]> {
-        let mut lists = n.states.iter().filter_map(|s| match &s.arg {
-            Some(StateArg::Ingredients(list)) if s.name == "contains" => Some(list.as_slice()),
-            _ => None,
-        });
-        match (lists.next(), lists.next()) {
-            (first, None) => Some(first.unwrap_or_default()),
-            _ => None,
-        }
-    }
-    let (Some(mine), Some(all)) = (only_list(node), only_list(theirs)) else {
+    let (Some(mine), Some(all)) = (node.contents_list(), theirs.contents_list()) else {
         return node.contents().all(|x| theirs.contents().any(|c| c == x));
     };
     let mut rest = all.iter();
