@@ -2,7 +2,7 @@
 // and errors as `PlannerError` with a stable code. Views and the CLI use only this module.
 
 import initWasmModule, { initSync, KnowledgeBaseLoader, type Planner as WasmPlanner } from "../../wasm/pkg/foon_wasm.js";
-import type { ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanRequest, SimilarResult, Stats, Vocabulary } from "./types";
+import type { ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanNode, PlanRequest, PlanUnit, SimilarResult, Stats, Vocabulary } from "./types";
 import { PlannerError, toPlannerError } from "./errors";
 
 // The error class lives in errors.ts so that the page can use it without the WASM glue (the worker owns it).
@@ -80,6 +80,38 @@ function parseJson<T>(call: () => string): T {
   return JSON.parse(text) as T;
 }
 
+/** A unit as the WASM module writes it: a node written in full in an earlier place comes as its number. */
+interface WireUnit extends Omit<PlanUnit, "inputs" | "outputs"> {
+  inputs: (PlanNode | number)[];
+  outputs: (PlanNode | number)[];
+}
+
+type WirePlan = Omit<Plan, "units"> & { units: WireUnit[] };
+
+/**
+ * Puts each node number back as the node it stands for: number k is the k-th node written in full
+ * (`wasm/core/src/plan_json.rs`). A node that several units share becomes one object, as in the planner.
+ */
+function withSharedNodes(wire: WirePlan): Plan {
+  const written: PlanNode[] = [];
+  const resolve = (list: (PlanNode | number)[]): PlanNode[] => {
+    for (let i = 0; i < list.length; i++) {
+      const item = list[i];
+      if (typeof item !== "number") {
+        if (item !== undefined) written.push(item);
+        continue;
+      }
+      const node = written[item];
+      if (node === undefined) throw new PlannerError({ code: "internal", message: `planner failure: plan refers to node ${item}, of ${written.length} written` });
+      list[i] = node;
+    }
+    // every number was replaced in place just above
+    return list as PlanNode[];
+  };
+  const units = wire.units.map((unit): PlanUnit => ({ ...unit, inputs: resolve(unit.inputs), outputs: resolve(unit.outputs) }));
+  return { ...wire, units };
+}
+
 /** JSON text of a request; a value JSON cannot represent (undefined, a cycle, a BigInt) is a bad query. */
 function requestJson(value: unknown, what: string): string {
   let text: string | undefined;
@@ -134,7 +166,7 @@ export class FoonPlanner {
   /** Plans a query: reference goal, reference task tree, modification (unless `modify: false`). */
   plan(request: PlanRequest): Plan {
     const json = requestJson(request, "plan request");
-    return parseJson<Plan>(() => this.handle.plan(json));
+    return withSharedNodes(parseJson<WirePlan>(() => this.handle.plan(json)));
   }
 
   /** Plans a query and renders it: plan JSON, FOON text (plain dialect), PDDL, or progress-line JSON. */

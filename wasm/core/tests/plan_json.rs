@@ -1,17 +1,58 @@
-//! `write_plan_json` writes exactly what serde_json writes for the plan types' serde derives (the
-//! definition of the format): on every dev plan, and on texts and values that need care.
+//! `write_plan_json` writes what serde_json writes for the plan types' serde derives (the definition
+//! of the format), once its shared nodes are put back in place of their numbers: on every dev plan,
+//! and on texts and values that need care.
 
 mod common;
 use common::{dev_plans, dev_queries, embeddings, foon111, load};
 use foon_core::plan::{PlanNode, Status};
 use foon_core::{plan, write_plan_json, Plan, PlanRequest, PlannerIndex};
 use proptest::prelude::*;
+use serde_json::Value;
 use std::sync::Arc;
 
-fn direct(p: &Plan) -> String {
+/// The direct writer's JSON, with each node number replaced by the node it stands for, as the app's
+/// reader does: every node written in full takes the next number.
+fn direct(p: &Plan) -> Value {
     let mut out = Vec::new();
     write_plan_json(p, &mut out);
-    String::from_utf8(out).expect("UTF-8")
+    let mut plan: Value = serde_json::from_slice(&out).expect("JSON");
+    let mut written: Vec<Value> = Vec::new();
+    for unit in plan["units"].as_array_mut().expect("units") {
+        for side in ["inputs", "outputs"] {
+            for node in unit[side].as_array_mut().expect("nodes") {
+                match node.as_u64() {
+                    Some(k) => *node = written[k as usize].clone(),
+                    None => written.push(node.clone()),
+                }
+            }
+        }
+    }
+    plan
+}
+
+/// What serde writes for the plan, read back.
+fn serde(p: &Plan) -> Value {
+    serde_json::from_str(&serde_json::to_string(p).unwrap()).unwrap()
+}
+
+#[test]
+fn shared_nodes_are_written_once_and_then_by_number() {
+    let p = first_dev_plan();
+    let mut out = Vec::new();
+    write_plan_json(&p, &mut out);
+    let text = String::from_utf8(out).unwrap();
+    let full = serde_json::to_string(&p).unwrap();
+    // what one unit makes, the next uses: the dev plan has such nodes
+    let numbers = serde_json::from_str::<Value>(&text).unwrap()["units"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|u| [&u["inputs"], &u["outputs"]])
+        .flat_map(|side| side.as_array().unwrap())
+        .filter(|n| n.is_u64())
+        .count();
+    assert!(numbers > 0, "no shared node written by number");
+    assert!(text.len() < full.len());
 }
 
 #[test]
@@ -19,7 +60,7 @@ fn every_dev_plan_is_written_as_serde_writes_it() {
     let plans = dev_plans(&embeddings());
     assert_eq!(plans.len(), 640);
     for (_, p) in &plans {
-        assert_eq!(direct(p), serde_json::to_string(p).unwrap());
+        assert_eq!(direct(p), serde(p));
     }
 }
 
@@ -52,7 +93,7 @@ fn optional_fields_escapes_and_odd_numbers_are_written_as_serde_writes_them() {
     let serde = serde_json::to_string(&p).unwrap();
     assert!(serde.contains(r#"\u0000\u0001\b\t\n\u000b\f\r\u001f"#));
     assert!(!serde.contains(r#""id""#) && !serde.contains(r#""reason":null"#));
-    assert_eq!(direct(&p), serde);
+    assert_eq!(direct(&p), serde_json::from_str::<Value>(&serde).unwrap());
 }
 
 proptest! {
@@ -61,7 +102,7 @@ proptest! {
         let mut p = first_dev_plan();
         p.goal.label = label.as_str().into();
         p.goal.states = vec![state.as_str().into()];
-        prop_assert_eq!(direct(&p), serde_json::to_string(&p).unwrap());
+        prop_assert_eq!(direct(&p), serde(&p));
     }
 }
 
