@@ -263,7 +263,7 @@ impl KnowledgeBase {
             .iter()
             .flat_map(|&u| self.units[u].input_nodes())
             .filter(|n| !produced.contains(n))
-            .map(|n| self.nodes[n].label.clone())
+            .map(|n| self.nodes[n].label.to_string())
             .filter(|l| !is_utensil(l))
             .collect();
         starting.into_iter().collect()

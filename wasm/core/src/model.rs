@@ -8,16 +8,16 @@ use smol_str::{SmolStr, SmolStrBuilder};
 #[serde(rename_all = "snake_case")]
 pub enum StateArg {
     /// `in [bowl]`, `on [cutting board]`: the container or surface.
-    Container(String),
+    Container(SmolStr),
     /// `contains {tomato,onion}`, `coated {flour}`: the ingredients involved, sorted, unique.
-    Ingredients(Vec<String>),
+    Ingredients(Vec<SmolStr>),
 }
 
 /// One state of an object node, e.g. `sliced`, `in [bowl]`, `contains {egg,milk}`.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub struct State {
     /// The state word or relation word (`sliced`, `in`, `contains`, `coated`, ...).
-    pub name: String,
+    pub name: SmolStr,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub arg: Option<StateArg>,
 }
@@ -25,7 +25,7 @@ pub struct State {
 impl State {
     pub fn plain(name: &str) -> State {
         State {
-            name: name.to_string(),
+            name: name.into(),
             arg: None,
         }
     }
@@ -45,10 +45,11 @@ impl State {
     /// render every state of every node).
     pub fn text(&self) -> SmolStr {
         let arg_len = match &self.arg {
-            None => 0,
+            // a plain state is its name: shared, not rebuilt
+            None => return self.name.clone(),
             Some(StateArg::Container(c)) => c.len() + 3,
             Some(StateArg::Ingredients(list)) => {
-                3 + list.iter().map(String::len).sum::<usize>() + list.len().saturating_sub(1)
+                3 + list.iter().map(SmolStr::len).sum::<usize>() + list.len().saturating_sub(1)
             }
         };
         // inline, without allocating, when short (most states)
@@ -89,14 +90,16 @@ impl std::fmt::Display for State {
 
 /// An object node: identity is the label together with the whole set of states.
 /// States are kept sorted so that the same object annotated in another order is the same node.
+/// Its names are `SmolStr`s: nearly all are short enough to sit inline, so that copying a node, which
+/// modifying a tree does all the time, allocates only its lists.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub struct ObjectNode {
-    pub label: String,
+    pub label: SmolStr,
     pub states: Vec<State>,
 }
 
 impl ObjectNode {
-    pub fn new(label: impl Into<String>, mut states: Vec<State>) -> ObjectNode {
+    pub fn new(label: impl Into<SmolStr>, mut states: Vec<State>) -> ObjectNode {
         states.sort();
         states.dedup();
         ObjectNode {
@@ -127,7 +130,7 @@ impl ObjectNode {
             .iter()
             .filter(|s| s.name == "contains")
             .filter_map(|s| match &s.arg {
-                Some(StateArg::Ingredients(list)) => Some(list.iter().map(String::as_str)),
+                Some(StateArg::Ingredients(list)) => Some(list.iter().map(SmolStr::as_str)),
                 _ => None,
             })
             .flatten()
@@ -138,7 +141,7 @@ impl ObjectNode {
         self.states
             .iter()
             .filter_map(|s| match &s.arg {
-                Some(StateArg::Ingredients(list)) => Some(list.iter().map(String::as_str)),
+                Some(StateArg::Ingredients(list)) => Some(list.iter().map(SmolStr::as_str)),
                 _ => None,
             })
             .flatten()
@@ -173,7 +176,7 @@ impl ObjectNode {
 
     /// The object's contents as its one `contains` list (sorted and unique), empty when it has none;
     /// `None` when it has several (see `contents`).
-    pub fn contents_list(&self) -> Option<&[String]> {
+    pub fn contents_list(&self) -> Option<&[SmolStr]> {
         let mut lists = self.states.iter().filter_map(|s| match &s.arg {
             Some(StateArg::Ingredients(list)) if s.name == "contains" => Some(list.as_slice()),
             _ => None,

@@ -9,6 +9,7 @@ use crate::limits;
 use crate::model::{ObjectNode, State, StateArg};
 use crate::taxonomy::{dish_class_name, dish_classes};
 use rustc_hash::FxHashMap;
+use smol_str::SmolStr;
 
 /// A goal mark on an object line: the finished dish of the subgraph, with its dish class if given.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -92,7 +93,7 @@ enum Block {
 }
 
 /// An object line whose state lines are still being read: label, flag, goal mark, line, states.
-type OpenObject = (String, bool, Option<GoalMark>, usize, Vec<State>);
+type OpenObject = (SmolStr, bool, Option<GoalMark>, usize, Vec<State>);
 
 struct UnitBuilder {
     inputs: Vec<ParsedObject>,
@@ -238,14 +239,14 @@ fn check_text(file: &str, line: usize, col: usize, what: &str, text: &str) -> Re
 /// Normal forms of a file's labels by their text as written: a file names the same few objects and
 /// containers line after line, and a normal form costs more than a lookup.
 #[derive(Default)]
-struct LabelForms<'a>(FxHashMap<&'a str, String>);
+struct LabelForms<'a>(FxHashMap<&'a str, SmolStr>);
 
 impl<'a> LabelForms<'a> {
-    fn of(&mut self, raw: &'a str) -> String {
+    fn of(&mut self, raw: &'a str) -> SmolStr {
         if let Some(form) = self.0.get(raw) {
             return form.clone();
         }
-        let form = normalize_label(raw);
+        let form = SmolStr::from(normalize_label(raw));
         self.0.insert(raw, form.clone());
         form
     }
@@ -290,7 +291,7 @@ fn state_arg<'a>(
         check_text(file, line, col, "container", &container)?;
         return Ok(Some(StateArg::Container(container)));
     }
-    let mut list: Vec<String> = inner
+    let mut list: Vec<SmolStr> = inner
         .split(',')
         .map(|item| forms.of(item))
         .filter(|s| !s.is_empty())
@@ -595,7 +596,7 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
                     ));
                 }
                 open.4.push(State {
-                    name: state_name,
+                    name: state_name.into(),
                     arg,
                 });
             }

@@ -168,7 +168,7 @@ fn every_state_is_in_the_vocabulary() {
                 unknown
                     .entry(key.clone())
                     .or_default()
-                    .insert(n.label.clone());
+                    .insert(n.label.to_string());
             }
             used.insert(key);
         }

@@ -23,7 +23,7 @@ pub struct PlannerIndex {
     /// Unique for the process: names `label_names` for `Similarity::prepare`.
     pub(crate) label_set: u64,
     /// Object nodes per label (ids ascending).
-    pub(crate) by_label: HashMap<String, Vec<NodeId>>,
+    pub(crate) by_label: HashMap<SmolStr, Vec<NodeId>>,
     /// Distinct ingredient labels (not utensils), sorted.
     pub(crate) ingredient_labels: Vec<String>,
     /// label -> state -> dish class -> occurrences in units of recipes of that class; class `None`
@@ -232,7 +232,7 @@ fn sold_as(kb: &KnowledgeBase, ingredient_labels: &[String]) -> HashMap<String, 
 
 impl PlannerIndex {
     pub fn new(kb: &KnowledgeBase) -> PlannerIndex {
-        let mut by_label: HashMap<String, Vec<NodeId>> = HashMap::default();
+        let mut by_label: HashMap<SmolStr, Vec<NodeId>> = HashMap::default();
         for (id, n) in kb.nodes.iter().enumerate() {
             by_label.entry(n.label.clone()).or_default().push(id);
         }

@@ -251,7 +251,7 @@ pub(crate) fn modify<'kb>(
             .filter(|w| w.planned)
             .map(|w| w.label.clone())
             .collect();
-        keep.insert(tree.slots[tree.goal].node.label.clone());
+        keep.insert(tree.slots[tree.goal].node.label.to_string());
         removed = prune(tree, &keep);
         tree.drop_unneeded();
         let present = tree.ingredient_labels();
@@ -587,7 +587,7 @@ fn replace_states(node: &ObjectNode, old: &[String], new: &str) -> ObjectNode {
     let mut states: Vec<State> = node
         .states
         .iter()
-        .filter(|st| !(st.arg.is_none() && old.contains(&st.name)))
+        .filter(|st| !(st.arg.is_none() && old.iter().any(|o| st.name == o.as_str())))
         .cloned()
         .collect();
     states.push(State::plain(new));
@@ -844,7 +844,7 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
         }
         let mut renamed = map_contents(node, &mut |list| rename_item(list, eq, o));
         if renamed.label == eq {
-            renamed.label = o.to_string();
+            renamed.label = o.into();
         }
         let c = tree.add_slot(Cow::Owned(renamed));
         copy_of.insert(s, c);
@@ -1310,8 +1310,11 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
                     None => {
                         let label = node.label.clone();
                         gone[x] = true;
-                        if !utensil && !keep.contains(&label) && !going.contains(label.as_str()) {
-                            with_units.insert(label);
+                        if !utensil
+                            && !keep.contains(label.as_str())
+                            && !going.contains(label.as_str())
+                        {
+                            with_units.insert(label.to_string());
                         }
                     }
                 }

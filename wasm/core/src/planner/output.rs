@@ -31,7 +31,7 @@ pub(crate) struct Parts<'a> {
 
 pub(crate) fn plan_node(n: &ObjectNode) -> PlanNode {
     PlanNode {
-        label: n.label.as_str().into(),
+        label: n.label.clone(),
         states: n.states.iter().map(State::text).collect(),
         ingredients: n.ingredients(),
         container: n.container().map(SmolStr::from),

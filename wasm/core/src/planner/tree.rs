@@ -8,6 +8,7 @@ use crate::model::{NodeId, ObjectNode, State, StateArg};
 use crate::plan::Origin;
 use crate::taxonomy::is_utensil;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use smol_str::SmolStr;
 use std::borrow::Cow;
 use std::ops::Range;
 use std::sync::Arc;
@@ -29,7 +30,7 @@ pub(crate) struct Slot<'kb> {
 impl Slot<'_> {
     /// Gives the slot another label, keeping `utensil` true to it.
     fn relabel(&mut self, to: &str) {
-        self.node.to_mut().label = to.to_string();
+        self.node.to_mut().label = to.into();
         self.utensil = is_utensil(to);
     }
 }
@@ -57,7 +58,7 @@ pub(crate) struct Tree<'kb> {
 /// Rewrites each of a node's lists of contents in place with `f`, which keeps it sorted and unique as
 /// every list is (the reader makes them so); an emptied `contains` list becomes `empty`, and states
 /// stay sorted and unique.
-pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<String>)) {
+pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<SmolStr>)) {
     node.states.retain_mut(|s| {
         let Some(StateArg::Ingredients(list)) = &mut s.arg else {
             return true;
@@ -85,21 +86,21 @@ fn start_contents(node: &mut ObjectNode, item: &str) {
     node.states
         .retain(|s| !(s.name == "empty" && s.arg.is_none()));
     node.states.push(State {
-        name: "contains".to_string(),
-        arg: Some(StateArg::Ingredients(vec![item.to_string()])),
+        name: "contains".into(),
+        arg: Some(StateArg::Ingredients(vec![item.into()])),
     });
     node.states.sort();
 }
 
 /// Adds an item to a list of contents (sorted and unique) unless it is there.
-pub(crate) fn add_item(list: &mut Vec<String>, item: &str) {
+pub(crate) fn add_item(list: &mut Vec<SmolStr>, item: &str) {
     if let Err(at) = list.binary_search_by(|x| x.as_str().cmp(item)) {
-        list.insert(at, item.to_string());
+        list.insert(at, item.into());
     }
 }
 
 /// Renames an item of a list of contents (sorted and unique), which stays sorted and unique.
-pub(crate) fn rename_item(list: &mut Vec<String>, from: &str, to: &str) {
+pub(crate) fn rename_item(list: &mut Vec<SmolStr>, from: &str, to: &str) {
     if let Ok(at) = list.binary_search_by(|x| x.as_str().cmp(from)) {
         list.remove(at);
         add_item(list, to);
@@ -196,7 +197,7 @@ pub(crate) fn retain_contents(node: &mut Cow<ObjectNode>, keep: &dyn Fn(&str) ->
 }
 
 /// A copy of a node with its lists of contents rewritten (see `edit_contents`).
-pub(crate) fn map_contents(node: &ObjectNode, f: &mut dyn FnMut(&mut Vec<String>)) -> ObjectNode {
+pub(crate) fn map_contents(node: &ObjectNode, f: &mut dyn FnMut(&mut Vec<SmolStr>)) -> ObjectNode {
     let mut copy = node.clone();
     edit_contents(&mut copy, f);
     copy
