@@ -23,7 +23,8 @@ pub enum ErrorCode {
     BadBrackets,
     /// A state line with no object before it in its unit.
     StateWithoutObject,
-    /// A unit with objects but no motion line, or with two motion lines.
+    /// A unit with objects but no motion line, or with two motion lines, or a separating motion that
+    /// turns one food into another.
     BadMotion,
     /// A motion line with no input object before it.
     MotionWithoutInputs,

@@ -7,7 +7,7 @@ use crate::error::{ErrorCode, FoonError, Result};
 use crate::label::{normalize_label, normalize_word};
 use crate::limits;
 use crate::model::{ObjectNode, State, StateArg};
-use crate::taxonomy::{dish_class_name, dish_classes};
+use crate::taxonomy::{dish_class_name, dish_classes, is_separating_motion, is_utensil};
 use rustc_hash::FxHashMap;
 use smol_str::SmolStr;
 
@@ -170,6 +170,18 @@ impl UnitBuilder {
             ));
             return Ok(None);
         }
+        if let Some((from, to)) = changed_food(&motion, &self.inputs, &self.outputs) {
+            // FOON-111's potato soup peels an onion into a carrot: a slip of annotation, which planned
+            // would turn the user's onion into a carrot nobody asked for
+            warnings.push(FoonError::at(
+                ErrorCode::BadMotion,
+                file,
+                motion_line,
+                1,
+                format!("'{motion}' turns '{from}' into '{to}', but it does not change what a food is; unit skipped"),
+            ));
+            return Ok(None);
+        }
         Ok(Some(ParsedUnit {
             inputs: self.inputs,
             motion,
@@ -178,6 +190,30 @@ impl UnitBuilder {
             line: motion_line,
         }))
     }
+}
+
+/// The food a separating motion (`taxonomy::is_separating_motion`) takes in and the other food it gives
+/// out, when it has one of each; a food named in the other's name (bread and bread slice) is the same.
+fn changed_food<'a>(
+    motion: &str,
+    inputs: &'a [ParsedObject],
+    outputs: &'a [ParsedObject],
+) -> Option<(&'a str, &'a str)> {
+    if !is_separating_motion(motion) {
+        return None;
+    }
+    let only_food = |objects: &'a [ParsedObject]| {
+        let mut foods = objects
+            .iter()
+            .map(|o| o.node.label.as_str())
+            .filter(|l| !is_utensil(l));
+        let first = foods.next()?;
+        foods.all(|l| l == first).then_some(first)
+    };
+    let (from, to) = (only_food(inputs)?, only_food(outputs)?);
+    let words = |l: &'a str| l.split(' ').collect::<Vec<_>>();
+    let within = |a: &'a str, b: &'a str| words(a).iter().all(|w| words(b).contains(w));
+    (!within(from, to) && !within(to, from)).then_some((from, to))
 }
 
 /// Splits a line into tab-separated fields with their 1-based character columns, into `out` (reused

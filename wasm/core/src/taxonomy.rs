@@ -100,6 +100,14 @@ pub fn is_utensil(label: &str) -> bool {
     utensils().contains(label)
 }
 
+/// Motions that only take a food apart or off: what comes out is still that food (chopped onion is
+/// onion). Cuts that may name their pieces (a cake cut into slices, dough cut into noodles) are not here.
+const SEPARATING_MOTIONS: &[&str] = &["chop", "dice", "julienne", "mince", "peel"];
+
+pub fn is_separating_motion(motion: &str) -> bool {
+    SEPARATING_MOTIONS.contains(&motion)
+}
+
 /// States an object has before any cooking action: a node with only these states (and no container
 /// or contents) is available in the kitchen even when some unit produces it.
 pub const RAW_STATES: &[&str] = &[

@@ -49,6 +49,31 @@ fn the_plain_dialect_has_the_documented_size() {
 }
 
 #[test]
+fn cuts_that_turn_one_food_into_another_are_reported_and_skipped() {
+    let kb = load(&foon111("plain"));
+    let slips: Vec<String> = kb
+        .warnings
+        .iter()
+        .filter(|w| w.message.contains("does not change what a food is"))
+        .map(|w| w.to_string())
+        .collect();
+    // the potato soup peels an onion into a carrot, the tuna patties chop parsley into chives
+    assert_eq!(slips.len(), 2, "{slips:#?}");
+    assert!(slips[0]
+        .starts_with("0013-creamy_potato_soup.txt:175:1: 'peel' turns 'onion' into 'carrot'"));
+    assert!(
+        slips[1].starts_with("0074-tuna_patties-X.txt:264:1: 'chop' turns 'parsley' into 'chive'")
+    );
+    // nothing made from the onion is a carrot any more
+    let onion_to_carrot = kb.units.iter().any(|u| {
+        u.motion == "peel"
+            && u.input_nodes().any(|n| kb.nodes[n].label == "onion")
+            && u.output_nodes().any(|n| kb.nodes[n].label == "carrot")
+    });
+    assert!(!onion_to_carrot);
+}
+
+#[test]
 fn universal_foon_is_the_same_for_any_file_order() {
     let files = foon111("plain");
     let reference = load(&files);
