@@ -108,6 +108,33 @@ pub fn is_separating_motion(motion: &str) -> bool {
     SEPARATING_MOTIONS.contains(&motion)
 }
 
+/// Motions that only move food from one place to another; with `and`, every part does (`scoop and pour`;
+/// `pour and stir` stirs). Such a motion never changes what state a food is in, whatever a file records.
+const TRANSFER_MOTIONS: &[&str] = &[
+    "add",
+    "fill",
+    "insert",
+    "measure",
+    "pick-and-place",
+    "place",
+    "pour",
+    "put",
+    "put inside",
+    "remove",
+    "scoop",
+    "scrape",
+    "sprinkle",
+    "take out",
+    "throw away",
+    "transfer",
+];
+
+pub fn is_transfer_motion(motion: &str) -> bool {
+    motion
+        .split(" and ")
+        .all(|part| TRANSFER_MOTIONS.contains(&part.trim_end_matches('*')))
+}
+
 /// States an object has before any cooking action: a node with only these states (and no container
 /// or contents) is available in the kitchen even when some unit produces it.
 pub const RAW_STATES: &[&str] = &[

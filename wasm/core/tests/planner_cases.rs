@@ -1260,3 +1260,55 @@ S\tin\t[bowl]
         ],
     );
 }
+
+/// Sauces poured from their bottles (recorded as "sauce" only once poured) and a tomato blended into one.
+const SAUCES: &str = "//
+O\tketchup\t1
+S\tin\t[bottle]
+M\tpour\t<Assumed>
+O\tketchup\t1
+S\tsauce
+S\tin\t[bowl]
+//
+O\tmustard\t1
+S\tin\t[bottle]
+M\tpour\t<Assumed>
+O\tmustard\t1
+S\tsauce
+S\tin\t[bowl]
+//
+O\ttomato\t1
+S\twhole
+O\tblender\t0
+M\tblend\t<Assumed>
+O\ttomato\t1
+S\tsauce
+//
+O\tpepper\t1
+S\twhole
+O\tknife\t0
+M\tslice\t<Assumed>
+O\tpepper\t1
+S\tsliced
+//
+";
+
+#[test]
+fn a_state_is_made_by_a_motion_that_makes_it_never_by_a_pour() {
+    // FOON pours two sauces and blends one: pouring moves a sauce, the blender makes one
+    let files = [("salad.txt", SALAD), ("sauces.txt", SAUCES)];
+    let p = plan_of(
+        &files,
+        &SIM,
+        &query("salad", &[("lettuce", "chopped"), ("pepper", "sauce")]),
+    );
+    let o = outcome(&p, "pepper");
+    assert!(makes(&p, "blend", "pepper", "sauce"), "{:#?}", units(&p));
+    assert!(!makes(&p, "pour", "pepper", "sauce"), "{:#?}", units(&p));
+    assert!(
+        o.reason
+            .as_deref()
+            .is_some_and(|r| r.contains("then 'blend' to make it 'sauce'")),
+        "{o:#?}"
+    );
+}

@@ -8,7 +8,7 @@ use crate::memo::Memo;
 use crate::model::NodeId;
 use crate::plan::PlanNode;
 use crate::substitute::Taxonomy;
-use crate::taxonomy::is_utensil;
+use crate::taxonomy::{is_transfer_motion, is_utensil};
 use rustc_hash::FxHashMap as HashMap;
 use smol_str::SmolStr;
 use std::collections::{BTreeMap, BTreeSet};
@@ -297,8 +297,9 @@ impl PlannerIndex {
                     }
                 }
             }
-            // states an output gains over the input of the same label: the motion reaches them
-            for o in u.outputs.iter() {
+            // states an output gains over the input of the same label: the motion reaches them (not a
+            // pour or a scoop: a sauce poured into a bowl, written "sauce" only there, was not made so)
+            for o in u.outputs.iter().filter(|_| !is_transfer_motion(&u.motion)) {
                 let out = &kb.nodes[o.node];
                 if is_utensil(&out.label) {
                     continue;
