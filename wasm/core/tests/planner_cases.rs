@@ -1312,3 +1312,57 @@ fn a_state_is_made_by_a_motion_that_makes_it_never_by_a_pour() {
         "{o:#?}"
     );
 }
+
+/// A dish named after its main ingredient (class 1, soup): black beans poured from their bowl into a
+/// pot, then cooked with chopped onion into the dish, also called black bean.
+const BLACK_BEANS: &str = "//
+O\tbowl\t0
+S\tcontains\t{black bean}
+O\tblack bean\t1
+S\tin\t[bowl]
+O\tpot\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{black bean}
+O\tblack bean\t1
+S\tin\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{black bean}
+O\tblack bean\t1
+S\tin\t[pot]
+O\tonion\t1
+S\tchopped
+M\tcook and stir\t<Assumed>
+O\tblack bean\t1\t1
+S\tcooked
+S\tcontains\t{onion}
+S\tin\t[pot]
+//
+";
+
+#[test]
+fn the_ingredient_a_dish_is_named_after_is_pruned_when_not_asked_for_and_the_dish_stays() {
+    let files = [("black_beans.txt", BLACK_BEANS)];
+    let p = plan_of(&files, &SIM, &query("soup", &[("onion", "chopped")]));
+    assert_eq!(p.goal.label, "black bean");
+    assert_eq!(p.removed, ["black bean"]);
+    // the dish is cooked from the onion alone: no bean is poured, none goes into the pot
+    assert_eq!(
+        units(&p),
+        ["cook and stir: onion (chopped) + pot (empty) -> black bean (contains {onion}, cooked, in [pot])"]
+    );
+    // asked for, the beans stay
+    let p = plan_of(
+        &files,
+        &SIM,
+        &query("soup", &[("onion", "chopped"), ("black bean", "whole")]),
+    );
+    assert!(p.removed.is_empty(), "{:?}", p.removed);
+    assert!(
+        makes(&p, "pour", "black bean", "in [pot]"),
+        "{:#?}",
+        units(&p)
+    );
+}

@@ -246,12 +246,11 @@ pub(crate) fn modify<'kb>(
                 .to_string(),
         );
     } else if enabled {
-        let mut keep: BTreeSet<String> = works
+        let keep: BTreeSet<String> = works
             .iter()
             .filter(|w| w.planned)
             .map(|w| w.label.clone())
             .collect();
-        keep.insert(tree.slots[tree.goal].node.label.to_string());
         removed = prune(tree, &keep);
         tree.drop_unneeded();
         let present = tree.ingredient_labels();
@@ -1188,11 +1187,12 @@ fn map_states(node: &ObjectNode, s: &str) -> ObjectNode {
     ObjectNode::new(node.label.clone(), states)
 }
 
-/// Removes `labels` from every list of contents; units touching a changed node are marked renamed.
-fn drop_contents(tree: &mut Tree, labels: &HashSet<&str>) {
+/// Removes `labels` from every list of contents but those of the slots `spared`; units touching a changed
+/// node are marked renamed.
+fn drop_contents(tree: &mut Tree, labels: &HashSet<&str>, spared: &dyn Fn(SlotId) -> bool) {
     let mut touched = vec![false; tree.slots.len()];
-    for (slot, touched) in tree.slots.iter_mut().zip(touched.iter_mut()) {
-        if !slot.node.listed().any(|x| labels.contains(x)) {
+    for (x, (slot, touched)) in tree.slots.iter_mut().zip(touched.iter_mut()).enumerate() {
+        if spared(x) || !slot.node.listed().any(|x| labels.contains(x)) {
             continue;
         }
         retain_contents(&mut slot.node, &|x| !labels.contains(x));
@@ -1220,8 +1220,51 @@ fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &[bool]) -> bool {
     })
 }
 
+/// The slots of the ingredient the dish is named after (black beans cooked from black beans): those of
+/// the goal's label no unit makes, taken only by units before the dish's side. The dish's side (marked in
+/// the second vector) is the outputs of the first unit that makes the dish with something in it (the
+/// beans cooked with onion), or else makes the goal, and of every unit after it.
+fn namesake(tree: &Tree, order: &[TUnitId], live: &[SlotId]) -> (Vec<SlotId>, Vec<bool>) {
+    let goal = tree.goal;
+    let dish = tree.slots[goal].node.label.as_str();
+    let makes_dish = |u: TUnitId| {
+        tree.producer[goal] == Some(u)
+            || tree.units[u].outputs.iter().any(|&(x, _)| {
+                let node = &tree.slots[x].node;
+                node.label == dish && node.holds_something()
+            })
+    };
+    let from = order
+        .iter()
+        .position(|&u| makes_dish(u))
+        .unwrap_or(order.len());
+    let mut dish_side = vec![false; tree.slots.len()];
+    // 1: taken before the dish's side; 2: taken by it
+    let mut taken = vec![0u8; tree.slots.len()];
+    for (k, &u) in order.iter().enumerate() {
+        for &(x, _) in &tree.units[u].inputs {
+            taken[x] |= if k < from { 1 } else { 2 };
+        }
+        if k >= from {
+            for &(x, _) in &tree.units[u].outputs {
+                dish_side[x] = true;
+            }
+        }
+    }
+    // a dish node whose link to the unit making it FOON lost (a brownie cut, not the one baked) is the
+    // dish, not an ingredient
+    let slots = live
+        .iter()
+        .copied()
+        .filter(|&x| tree.slots[x].node.label == dish && !tree.produced(x) && taken[x] == 1)
+        .collect();
+    (slots, dish_side)
+}
+
 /// Removes every starting ingredient not asked for, with the units that only served it; containers that
 /// held it pass on unchanged, and it leaves every `contains {…}` list. Returns the removed labels.
+/// A dish named after one of its ingredients (black beans cooked from black beans) keeps its name: from
+/// the unit that makes it on, the name means the dish, and nodes and lists there stay.
 fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     let order = tree.order();
     let live: Vec<SlotId> = tree.live_slots().collect();
@@ -1238,7 +1281,15 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
         .filter(|&l| !keep.contains(l))
         .map(str::to_string)
         .collect();
-    if pruned.is_empty() {
+    let goal = tree.goal;
+    let dish = tree.slots[goal].node.label.clone();
+    let (namesake_slots, dish_side) = if pruned.remove(dish.as_str()) {
+        namesake(tree, &order, &live)
+    } else {
+        Default::default()
+    };
+    let namesake = !namesake_slots.is_empty();
+    if pruned.is_empty() && !namesake {
         return Vec::new();
     }
     // asked of every live slot and of every name in every list: a hash set rather than the ordered one
@@ -1250,9 +1301,17 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     for &u in &order {
         had[u] = handles_any(tree, &tree.units[u].inputs, &gone);
     }
-    drop_contents(tree, &going);
+    drop_contents(tree, &going, &|_| false);
+    if namesake {
+        drop_contents(tree, &HashSet::from_iter([dish.as_str()]), &|x| {
+            dish_side[x]
+        });
+    }
     for &x in &live {
         gone[x] = going.contains(tree.slots[x].node.label.as_str());
+    }
+    for &x in &namesake_slots {
+        gone[x] = true;
     }
     // labels that go with the units removed below, beyond those already dropped from the contents
     let mut with_units: BTreeSet<String> = BTreeSet::new();
@@ -1266,7 +1325,6 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
         }
         s
     };
-    let goal = tree.goal;
     // a unit's uses as they are now, in buffers: a kept unit's lists shrink into their own room
     let mut inputs: Vec<(SlotId, bool)> = Vec::new();
     let mut outputs: Vec<(SlotId, bool)> = Vec::new();
@@ -1331,8 +1389,15 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
     with_units.retain(|l| !still.iter().any(|&x| tree.slots[x].node.label == *l));
     if !with_units.is_empty() {
-        drop_contents(tree, &with_units.iter().map(String::as_str).collect());
+        drop_contents(
+            tree,
+            &with_units.iter().map(String::as_str).collect(),
+            &|_| false,
+        );
         pruned.extend(with_units);
+    }
+    if namesake {
+        pruned.insert(dish.to_string());
     }
     pruned.into_iter().collect()
 }
