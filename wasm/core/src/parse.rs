@@ -137,7 +137,8 @@ impl UnitBuilder {
         }
     }
 
-    /// Closes the unit: `Ok(None)` when it must be skipped with a warning (no outputs).
+    /// Closes the unit: `Ok(None)` when it must be skipped with a warning (no motion, no outputs, a cut
+    /// that changes the food).
     fn finish(
         mut self,
         file: &str,
@@ -145,42 +146,47 @@ impl UnitBuilder {
         warnings: &mut Vec<FoonError>,
     ) -> Result<Option<ParsedUnit>> {
         self.close_object();
+        let mut skip = |code, at, why: String| {
+            warnings.push(FoonError::at(
+                code,
+                file,
+                at,
+                1,
+                format!("{why}; unit skipped"),
+            ));
+            Ok(None)
+        };
         let Some((motion, times, motion_line)) = self.motion else {
             // FOON-111 has units whose motion line was never written: without a motion there is no
             // action to plan, so the unit is skipped and reported.
             let first = self.inputs.first().map(|o| o.line).unwrap_or(line);
-            warnings.push(FoonError::at(
+            return skip(
                 ErrorCode::BadMotion,
-                file,
                 first,
-                1,
-                format!("functional unit has object lines but no motion line (M) before line {line}; unit skipped"),
-            ));
-            return Ok(None);
+                format!(
+                    "functional unit has object lines but no motion line (M) before line {line}"
+                ),
+            );
         };
         if self.outputs.is_empty() {
             // FOON-111 has such units; a unit that makes nothing cannot be planned with, so it is
             // skipped and reported rather than failing the whole knowledge base.
-            warnings.push(FoonError::at(
+            return skip(
                 ErrorCode::UnitWithoutOutputs,
-                file,
                 motion_line,
-                1,
-                format!("motion '{motion}' has no output object after it; unit skipped"),
-            ));
-            return Ok(None);
+                format!("motion '{motion}' has no output object after it"),
+            );
         }
         if let Some((from, to)) = changed_food(&motion, &self.inputs, &self.outputs) {
             // FOON-111's potato soup peels an onion into a carrot: a slip of annotation, which planned
             // would turn the user's onion into a carrot nobody asked for
-            warnings.push(FoonError::at(
+            return skip(
                 ErrorCode::BadMotion,
-                file,
                 motion_line,
-                1,
-                format!("'{motion}' turns '{from}' into '{to}', but it does not change what a food is; unit skipped"),
-            ));
-            return Ok(None);
+                format!(
+                    "'{motion}' turns '{from}' into '{to}', but it does not change what a food is"
+                ),
+            );
         }
         Ok(Some(ParsedUnit {
             inputs: self.inputs,
