@@ -52,6 +52,12 @@ fn check_variant(sim: &dyn Similarity, name: &str, modify: bool) {
                 for v in violations(&p) {
                     problems.push(format!("{path}: {v}"));
                 }
+                // a robot (or a student) told the same sentence twice cannot know it is meant twice
+                for (i, step) in p.steps.iter().enumerate() {
+                    if p.steps[..i].contains(step) {
+                        problems.push(format!("{path}: step {} repeats \"{step}\"", i + 1));
+                    }
+                }
                 units_total += p.units.len();
                 for o in &p.ingredients {
                     let key = match (o.case, o.status) {

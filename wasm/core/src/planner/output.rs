@@ -107,8 +107,8 @@ pub(crate) fn build(p: Parts) -> Plan {
 }
 
 /// Two steps that read the same ("Cut the dough on the cutting board", to halve it and then to cut it
-/// into strips) each say what their food becomes: "… until it is halved." A plan has a few dozen steps:
-/// pairs are compared directly.
+/// into strips) each say what their food becomes: "… until it is halved."; when nothing tells them apart,
+/// the later says "again". A plan has a few dozen steps: pairs are compared directly.
 fn tell_apart(tree: &Tree, order: &[TUnitId], steps: &mut [String]) {
     let repeated: Vec<usize> = (0..steps.len())
         .filter(|&i| (0..steps.len()).any(|j| j != i && steps[j] == steps[i]))
@@ -138,6 +138,18 @@ fn tell_apart(tree: &Tree, order: &[TUnitId], steps: &mut [String]) {
             step.push_str(" until it is ");
             step.push_str(&new.join(" and "));
             step.push('.');
+        }
+    }
+    // what still reads the same is the same action once more (a second spoonful of soy sauce)
+    for i in 1..steps.len() {
+        let times = steps[..i].iter().filter(|s| **s == steps[i]).count();
+        if times > 0 {
+            let step = &mut steps[i];
+            step.pop();
+            step.push_str(match times {
+                1 => " again.",
+                _ => " once more.",
+            });
         }
     }
 }
