@@ -77,7 +77,8 @@ fn is_folded(text: &str) -> bool {
         if !b.is_ascii() || b.is_ascii_uppercase() || b == b'_' {
             return false;
         }
-        if b.is_ascii_whitespace() && (b != b' ' || last == b' ') {
+        // a vertical tab is white space to `split_whitespace` and `trim`, but not to `is_ascii_whitespace`
+        if (b.is_ascii_whitespace() || b == 0x0b) && (b != b' ' || last == b' ') {
             return false;
         }
         last = b;
@@ -182,6 +183,10 @@ mod tests {
             (" a", "a"),
             ("a ", "a"),
             ("a\tb", "a b"),
+            // found by the reader's fuzzer: "in\u{b} [bowl]" was read as the state "in\u{b}", written
+            // back as "in\u{b}\t[bowl]" and read again as "in"
+            ("in\u{b}", "in"),
+            ("a\u{b}b", "a b"),
             ("a_b", "a b"),
             ("Crème Brûlée", "crème brûlée"),
             ("off (ready)", "off (ready)"),
