@@ -299,7 +299,12 @@ impl PlannerIndex {
             }
             // states an output gains over the input of the same label: the motion reaches them (not a
             // pour or a scoop: a sauce poured into a bowl, written "sauce" only there, was not made so)
-            for o in u.outputs.iter().filter(|_| !is_transfer_motion(&u.motion)) {
+            let gains: &[_] = if is_transfer_motion(&u.motion) {
+                &[]
+            } else {
+                &u.outputs
+            };
+            for o in gains {
                 let out = &kb.nodes[o.node];
                 if is_utensil(&out.label) {
                     continue;
