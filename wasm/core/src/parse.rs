@@ -217,8 +217,7 @@ fn changed_food<'a>(
         foods.all(|l| l == first).then_some(first)
     };
     let (from, to) = (only_food(inputs)?, only_food(outputs)?);
-    let words = |l: &'a str| l.split(' ').collect::<Vec<_>>();
-    let within = |a: &'a str, b: &'a str| words(a).iter().all(|w| words(b).contains(w));
+    let within = |a: &str, b: &str| a.split(' ').all(|w| b.split(' ').any(|v| v == w));
     (!within(from, to) && !within(to, from)).then_some((from, to))
 }
 

@@ -1187,15 +1187,15 @@ fn map_states(node: &ObjectNode, s: &str) -> ObjectNode {
     ObjectNode::new(node.label.clone(), states)
 }
 
-/// Removes `labels` from every list of contents but those of the slots `spared`; units touching a changed
-/// node are marked renamed.
-fn drop_contents(tree: &mut Tree, labels: &HashSet<&str>, spared: &dyn Fn(SlotId) -> bool) {
+/// Removes from every slot's lists of contents the items `drops` (slot, item) says go; units touching a
+/// changed node are marked renamed.
+fn drop_contents(tree: &mut Tree, drops: &dyn Fn(SlotId, &str) -> bool) {
     let mut touched = vec![false; tree.slots.len()];
     for (x, (slot, touched)) in tree.slots.iter_mut().zip(touched.iter_mut()).enumerate() {
-        if spared(x) || !slot.node.listed().any(|x| labels.contains(x)) {
+        if !slot.node.listed().any(|item| drops(x, item)) {
             continue;
         }
-        retain_contents(&mut slot.node, &|x| !labels.contains(x));
+        retain_contents(&mut slot.node, &|item| !drops(x, item));
         *touched = true;
     }
     for u in tree.units.iter_mut() {
@@ -1301,12 +1301,10 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     for &u in &order {
         had[u] = handles_any(tree, &tree.units[u].inputs, &gone);
     }
-    drop_contents(tree, &going, &|_| false);
-    if namesake {
-        drop_contents(tree, &HashSet::from_iter([dish.as_str()]), &|x| {
-            dish_side[x]
-        });
-    }
+    // the dish's own name stays in the lists of its side, where it means the dish
+    drop_contents(tree, &|x, item| {
+        going.contains(item) || (namesake && item == dish && !dish_side[x])
+    });
     for &x in &live {
         gone[x] = going.contains(tree.slots[x].node.label.as_str());
     }
@@ -1389,11 +1387,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
     let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
     with_units.retain(|l| !still.iter().any(|&x| tree.slots[x].node.label == *l));
     if !with_units.is_empty() {
-        drop_contents(
-            tree,
-            &with_units.iter().map(String::as_str).collect(),
-            &|_| false,
-        );
+        drop_contents(tree, &|_, item| with_units.contains(item));
         pruned.extend(with_units);
     }
     if namesake {
