@@ -108,18 +108,16 @@ pub fn is_separating_motion(motion: &str) -> bool {
     SEPARATING_MOTIONS.contains(&motion)
 }
 
-/// Motions that only move food from one place to another; with `and`, every part does (`scoop and pour`;
-/// `pour and stir` stirs). Such a motion never changes what state a food is in, whatever a file records.
-const TRANSFER_MOTIONS: &[&str] = &[
+/// Motions that put their object somewhere.
+pub const PUT_MOTIONS: &[&str] = &["pick-and-place", "place", "put inside", "insert"];
+
+/// With `PUT_MOTIONS`, the motions that only move food from one place to another.
+const OTHER_TRANSFER_MOTIONS: &[&str] = &[
     "add",
     "fill",
-    "insert",
     "measure",
-    "pick-and-place",
-    "place",
     "pour",
     "put",
-    "put inside",
     "remove",
     "scoop",
     "scrape",
@@ -129,10 +127,13 @@ const TRANSFER_MOTIONS: &[&str] = &[
     "transfer",
 ];
 
+/// Whether a motion only moves food; with `and`, every part does (`scoop and pour`; `pour and stir`
+/// stirs). Such a motion never changes what state a food is in, whatever a file records.
 pub fn is_transfer_motion(motion: &str) -> bool {
-    motion
-        .split(" and ")
-        .all(|part| TRANSFER_MOTIONS.contains(&part.trim_end_matches('*')))
+    motion.split(" and ").all(|part| {
+        let part = part.trim_end_matches('*');
+        PUT_MOTIONS.contains(&part) || OTHER_TRANSFER_MOTIONS.contains(&part)
+    })
 }
 
 /// States an object has before any cooking action: a node with only these states (and no container

@@ -9,6 +9,7 @@ use crate::plan::{
     DishClassRef, GoalInfo, IngredientOutcome, Plan, PlanNode, PlanUnit, ProgressLine,
     ProgressState, Query, Status,
 };
+use crate::taxonomy::PUT_MOTIONS;
 use smol_str::{SmolStr, SmolStrBuilder};
 use std::sync::Arc;
 
@@ -379,8 +380,6 @@ fn push_list(out: &mut String, items: &[&str]) {
     }
 }
 
-/// Motions that put their object somewhere.
-const PUTS: &[&str] = &["pick-and-place", "place", "put inside", "insert"];
 /// Motions that open or close a container.
 const CLOSES: &[&str] = &["open", "close", "cover", "uncover"];
 /// Other motions that handle a container itself rather than what it holds.
@@ -390,7 +389,10 @@ const HANDLES: &[&str] = &[
 
 /// Whether a motion moves things into a place ("pour into the bowl", "tear and place onto the tray").
 fn moves_into(motion: &str) -> bool {
-    motion.contains("pour") || motion.contains("place") || PUTS.contains(&motion) || motion == "add"
+    motion.contains("pour")
+        || motion.contains("place")
+        || PUT_MOTIONS.contains(&motion)
+        || motion == "add"
 }
 
 /// Where a node is (`in [bowl]` as ("in", "bowl"), `attached to [mixer]` as ("to", "mixer")), unless
@@ -461,9 +463,10 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     let motion = unit.motion.trim_end_matches('*');
     let tools_only = unit.inputs.iter().any(|&(x, m)| m && tool(x))
         && unit.inputs.iter().all(|&(x, m)| !m || tool(x))
-        && !PUTS.contains(&motion);
+        && !PUT_MOTIONS.contains(&motion);
     let closes = CLOSES.contains(&motion);
-    let handles = PUTS.contains(&motion) || HANDLES.contains(&motion) || motion.ends_with(" open");
+    let handles =
+        PUT_MOTIONS.contains(&motion) || HANDLES.contains(&motion) || motion.ends_with(" open");
     if objects.is_empty() && !handles {
         let vessel = |i: &&(SlotId, bool)| node(i.0).holds_something();
         // a lid is put on or taken off what the unit covers or uncovers, before or after
