@@ -1208,6 +1208,110 @@ S\tin\t[bowl]
     );
 }
 
+/// FOON lists what a bowl already holds among the inputs of the next thing put in it, and moves an olive
+/// along with the oil poured over it.
+const BOWL_FILLED: &str = "//
+O\ttomato\t1
+S\tchopped
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{tomato}
+//
+O\tonion\t1
+S\tchopped
+O\ttomato\t1
+S\tchopped
+S\tin\t[bowl]
+O\tbowl\t0
+S\tcontains\t{tomato}
+M\tpour\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{onion,tomato}
+//
+O\tolive\t1
+S\twhole
+S\tin\t[jar]
+O\toil\t1
+S\tin\t[bottle]
+O\tbowl\t0
+S\tcontains\t{onion,tomato}
+M\tpour\t<Assumed>
+O\tolive\t1
+S\twhole
+S\tin\t[bowl]
+O\tbowl\t0
+S\tcontains\t{oil,olive,onion,tomato}
+//
+O\tbowl\t0
+S\tcontains\t{oil,olive,onion,tomato}
+O\tspoon\t1
+M\tmix\t<Assumed>
+O\ttomato salad\t1\t15
+S\tcontains\t{oil,olive,onion,tomato}
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn food_already_in_the_bowl_is_not_put_there_again() {
+    let items = [
+        ("tomato", "chopped"),
+        ("onion", "chopped"),
+        ("olive", "whole"),
+        ("oil", ""),
+    ];
+    let p = plan_of(
+        &[("recipe.txt", BOWL_FILLED)],
+        &ExactMatch,
+        &query("salad", &items),
+    );
+    assert_eq!(
+        p.steps[..3],
+        [
+            "Pour the tomato into the bowl.",
+            "Pour the onion into the tomato in the bowl.",
+            "Pour the oil and the olive into the bowl.",
+        ],
+        "{:#?}",
+        units(&p)
+    );
+    let line = |ingredient: &str| {
+        let l = p
+            .progress_lines
+            .iter()
+            .find(|l| l.ingredient == ingredient)
+            .unwrap();
+        let states: Vec<String> = l
+            .state
+            .iter()
+            .map(|s| format!("{} @ {}", s.physical_state, s.location))
+            .collect();
+        (states, l.motion.clone(), l.end_product.clone())
+    };
+    // the tomato stays in the bowl while the onion joins it: no step of its own
+    let (states, motions, dish) = line("tomato");
+    assert_eq!(
+        states,
+        [
+            "chopped @ ",
+            "chopped @ in bowl",
+            "in tomato salad @ in bowl"
+        ]
+    );
+    assert_eq!(motions, ["pour", "mix"]);
+    assert_eq!(dish, "tomato salad");
+    // the oil goes into the bowl, not into the olive poured with it
+    let (states, motions, dish) = line("oil");
+    assert_eq!(
+        states,
+        [" @ in bottle", " @ in bowl", "in tomato salad @ in bowl"]
+    );
+    assert_eq!(motions, ["pour", "mix"]);
+    assert_eq!(dish, "tomato salad");
+}
+
 /// The steps of a dish of chopped tomato planned on one recipe.
 fn assert_steps(recipe: &str, dish: &str, steps: &[&str]) {
     let p = plan_of(

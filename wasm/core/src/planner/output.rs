@@ -286,18 +286,58 @@ fn progress_line(
                 from = pos + 1;
             }
             None => {
-                // it went into something else: the last state is that product
-                if let Some(&(o, _)) = tree.units[u].outputs.iter().find(|o| {
-                    tree.slots[o.0].node.contents().any(|i| i == label) || !tree.slots[o.0].utensil
-                }) {
-                    let n = &tree.slots[o].node;
-                    states.push(ProgressState {
-                        physical_state: joined(["in", n.label.as_str()].into_iter(), " "),
-                        location: location(n),
-                    });
-                    end_product = product_of(tree, order, pos, o, label, seen);
-                } else {
-                    motions.pop();
+                // it went into something else: what lists it (a food made of it before the vessel
+                // holding it), else a new food; not another ingredient moved along with it
+                let outputs = &tree.units[u].outputs;
+                let lists = |food: bool| {
+                    outputs.iter().find(|o| {
+                        let slot = &tree.slots[o.0];
+                        slot.utensil != food && slot.node.contents().any(|i| i == label)
+                    })
+                };
+                let into = lists(true).or_else(|| lists(false)).or_else(|| {
+                    let inputs = &tree.units[u].inputs;
+                    outputs.iter().find(|o| {
+                        let n = &tree.slots[o.0].node;
+                        !tree.slots[o.0].utensil
+                            && !inputs.iter().any(|i| tree.slots[i.0].node.label == n.label)
+                    })
+                });
+                match into {
+                    Some(&(o, _)) => {
+                        let n = &tree.slots[o].node;
+                        let state = if tree.slots[o].utensil {
+                            // put in a vessel as it was: the same state, a new place
+                            let rel = relation_to(tree, &n.label);
+                            ProgressState {
+                                physical_state: states[states.len() - 1].physical_state.clone(),
+                                location: joined([rel, n.label.as_str()].into_iter(), " "),
+                            }
+                        } else {
+                            ProgressState {
+                                physical_state: joined(["in", n.label.as_str()].into_iter(), " "),
+                                location: location(n),
+                            }
+                        };
+                        if states.last() == Some(&state) {
+                            // already there (FOON lists what a bowl holds among the inputs of
+                            // the next thing added to it): no step of its own
+                            motions.pop();
+                        } else {
+                            states.push(state);
+                        }
+                        if tree.slots[o].utensil {
+                            // in a vessel: what is done to the vessel's contents is done to it
+                            seen.push(o);
+                            at = o;
+                            from = pos + 1;
+                            continue;
+                        }
+                        end_product = product_of(tree, order, pos, o, label, seen);
+                    }
+                    None => {
+                        motions.pop();
+                    }
                 }
                 break;
             }
@@ -550,6 +590,28 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
                 })
             })
     });
+    // what is already where the others are put is not put there again (FOON lists what a bowl holds
+    // among the inputs of the next thing added to it): the others go onto it ("Pour the maple syrup onto
+    // the french toast on the plate"); a bowl of the same name that does not hold it is another bowl
+    let mut settled = Vec::new();
+    if let Some((_, c)) = place.filter(|_| holder.is_none() && moves_into(motion)) {
+        let there = |l: &str| {
+            let mut vessels = unit
+                .inputs
+                .iter()
+                .map(|i| node(i.0))
+                .filter(|n| n.label == c);
+            let mut any = false;
+            vessels.all(|n| {
+                any = true;
+                n.contents().any(|i| i == l)
+            }) && any
+        };
+        if objects.iter().any(|l| !there(l)) {
+            settled.extend(objects.iter().copied().filter(|l| there(l)));
+            objects.retain(|l| !there(l));
+        }
+    }
     let moved = objects.len();
     for &(x, m) in &unit.inputs {
         let n = node(x);
@@ -569,13 +631,21 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     text.push(' ');
     push_list(&mut text, objects);
     if let Some((rel, c)) = place {
-        let into = moves_into(motion);
-        let rel = match (rel, into) {
-            ("in", true) => "into",
-            ("on", true) => "onto",
-            (r, _) => r,
+        let (into, rel) = match (rel, moves_into(motion)) {
+            ("in", true) => ("into", "in"),
+            ("on", true) => ("onto", "on"),
+            (r, _) => (r, r),
         };
-        for part in [" ", rel, " the ", c] {
+        text.push(' ');
+        text.push_str(into);
+        // a long list of what is there already says less than the container's name
+        if (1..=2).contains(&settled.len()) {
+            text.push(' ');
+            push_list(&mut text, &settled);
+            text.push(' ');
+            text.push_str(rel);
+        }
+        for part in [" the ", c] {
             text.push_str(part);
         }
     }
