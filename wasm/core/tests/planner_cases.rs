@@ -1365,6 +1365,59 @@ S\tin\t[bowl]
     );
 }
 
+#[test]
+fn a_step_puts_the_food_where_a_phrasal_motion_needs_it() {
+    let slit = "//
+O\ttomato\t1
+S\twhole
+S\ton\t[cutting board]
+O\tknife\t1
+M\tmake slits\t<Assumed>
+O\ttomato\t1
+S\tslit
+S\ton\t[cutting board]
+//
+O\ttomato\t1
+S\tslit
+S\ton\t[cutting board]
+O\tknife\t1
+M\tcut off skin\t<Assumed>
+O\ttomato\t1
+S\tpeeled
+S\ton\t[cutting board]
+//
+O\ttomato\t1
+S\tpeeled
+S\ton\t[cutting board]
+O\tknife\t1
+M\tcut in half\t<Assumed>
+O\ttomato\t1
+S\thalved
+S\ton\t[cutting board]
+//
+O\ttomato\t1
+S\thalved
+S\ton\t[cutting board]
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\ttomato salad\t1\t15
+S\tcontains\t{tomato}
+S\tin\t[bowl]
+//
+";
+    assert_steps(
+        slit,
+        "salad",
+        &[
+            "Make slits in the tomato on the cutting board.",
+            "Cut the skin off the tomato on the cutting board.",
+            "Cut the tomato in half on the cutting board.",
+            "Pour the tomato into the bowl.",
+        ],
+    );
+}
+
 /// Sauces poured from their bottles (recorded as "sauce" only once poured) and a tomato blended into one.
 const SAUCES: &str = "//
 O\tketchup\t1

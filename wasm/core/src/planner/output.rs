@@ -394,19 +394,33 @@ fn product_of<'t>(
     None
 }
 
-/// The motion as the sentence's capitalised verb, written onto `out`.
-fn push_verb(out: &mut String, motion: &str) {
+/// FOON motions whose words go around the object in English: ("cut in half", "Cut", " in half") makes "Cut
+/// the tomato in half", ("make slits", "Make slits in", "") "Make slits in the mango". ("Break apart the
+/// chip" reads well as it is.)
+const VERB_FRAMES: &[(&str, &str, &str)] = &[
+    ("pick-and-place", "Place", ""),
+    ("put inside", "Put", ""),
+    ("cut in half", "Cut", " in half"),
+    ("make slits", "Make slits in", ""),
+    ("cut with slits", "Cut slits in", ""),
+    ("cut off ends", "Cut the ends off", ""),
+    ("cut off skin", "Cut the skin off", ""),
+    ("tuck ends", "Tuck in the ends of", ""),
+];
+
+/// The motion as the sentence's capitalised verb, written onto `out`; returns what follows the object.
+fn push_verb(out: &mut String, motion: &str) -> &'static str {
     let m = motion.trim_end_matches('*').trim();
-    let m = match m {
-        "pick-and-place" => "place",
-        "put inside" => "put",
-        other => other,
-    };
+    if let Some(&(_, verb, after)) = VERB_FRAMES.iter().find(|f| f.0 == m) {
+        out.push_str(verb);
+        return after;
+    }
     let mut c = m.chars();
     if let Some(f) = c.next() {
         out.extend(f.to_uppercase());
         out.push_str(c.as_str());
     }
+    ""
 }
 
 /// "the a, the b and the c", written onto `out`.
@@ -627,9 +641,10 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     let (objects, tools) = objects.split_at(moved);
     // sized for most sentences: one allocation
     let mut text = String::with_capacity(64);
-    push_verb(&mut text, &unit.motion);
+    let after = push_verb(&mut text, &unit.motion);
     text.push(' ');
     push_list(&mut text, objects);
+    text.push_str(after);
     if let Some((rel, c)) = place {
         let (into, rel) = match (rel, moves_into(motion)) {
             ("in", true) => ("into", "in"),
