@@ -247,6 +247,8 @@ fn progress_line(
     let mut end_product = None;
     let mut last_step: Option<(usize, TUnitId)> = None;
     loop {
+        // no unit before the first to use it takes it
+        from = from.max(uses.first_use[at]);
         let next = order.iter().enumerate().skip(from).find_map(|(pos, &u)| {
             let unit = &tree.units[u];
             if !unit.inputs.iter().any(|i| i.0 == at) {
@@ -515,6 +517,7 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     let mut closed = false;
     let tool = |x: SlotId| utensil(x) && node(x).states.is_empty();
     let motion = unit.motion.trim_end_matches('*');
+    let puts = moves_into(motion);
     let tools_only = unit.inputs.iter().any(|&(x, m)| m && tool(x))
         && unit.inputs.iter().all(|&(x, m)| !m || tool(x))
         && !PUT_MOTIONS.contains(&motion);
@@ -554,7 +557,7 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
                     push(objects, l);
                 }
                 // poured out of it (with more than tools moving): where it goes is the place
-                if tools_only || !moves_into(motion) {
+                if tools_only || !puts {
                     holder = Some((relation_to(tree, &n.label), n.label.as_str()));
                 }
             }
@@ -608,22 +611,20 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     // among the inputs of the next thing added to it): the others go onto it ("Pour the maple syrup onto
     // the french toast on the plate"); a bowl of the same name that does not hold it is another bowl
     let mut settled = Vec::new();
-    if let Some((_, c)) = place.filter(|_| holder.is_none() && moves_into(motion)) {
-        let there = |l: &str| {
-            let mut vessels = unit
-                .inputs
-                .iter()
-                .map(|i| node(i.0))
-                .filter(|n| n.label == c);
-            let mut any = false;
-            vessels.all(|n| {
-                any = true;
-                n.contents().any(|i| i == l)
-            }) && any
-        };
-        if objects.iter().any(|l| !there(l)) {
-            settled.extend(objects.iter().copied().filter(|l| there(l)));
-            objects.retain(|l| !there(l));
+    if let Some((_, c)) = place.filter(|_| holder.is_none() && puts) {
+        let mut vessels = unit
+            .inputs
+            .iter()
+            .map(|i| node(i.0))
+            .filter(|n| n.label == c);
+        if let Some(first) = vessels.next() {
+            let holds = |n: &ObjectNode, l: &str| n.contents().any(|i| i == l);
+            let there = |l: &str| holds(first, l) && vessels.clone().all(|n| holds(n, l));
+            let count = objects.iter().filter(|l| there(l)).count();
+            if count > 0 && count < objects.len() {
+                settled.extend(objects.iter().copied().filter(|l| there(l)));
+                objects.retain(|l| !there(l));
+            }
         }
     }
     let moved = objects.len();
@@ -646,7 +647,7 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     push_list(&mut text, objects);
     text.push_str(after);
     if let Some((rel, c)) = place {
-        let (into, rel) = match (rel, moves_into(motion)) {
+        let (into, rel) = match (rel, puts) {
             ("in", true) => ("into", "in"),
             ("on", true) => ("onto", "on"),
             (r, _) => (r, r),
