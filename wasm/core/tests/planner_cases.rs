@@ -1450,6 +1450,85 @@ S\tsliced
 //
 ";
 
+/// A salad of six units made of cucumber alone.
+const CUCUMBER_SALAD: &str = "//
+O\tcucumber\t1
+S\tdirty
+M\twash\t<Assumed>
+O\tcucumber\t1
+S\twashed
+//
+O\tcucumber\t1
+S\twashed
+O\tpeeler\t1
+M\tpeel\t<Assumed>
+O\tcucumber\t1
+S\tpeeled
+//
+O\tcutting board\t0
+S\tempty
+O\tcucumber\t1
+S\tpeeled
+M\tpick-and-place\t<Assumed>
+O\tcucumber\t1
+S\tpeeled
+S\ton\t[cutting board]
+//
+O\tcucumber\t1
+S\tpeeled
+S\ton\t[cutting board]
+O\tknife\t1
+M\tslice\t<Assumed>
+O\tcucumber\t1
+S\tsliced
+S\ton\t[cutting board]
+//
+O\tbowl\t0
+S\tempty
+O\tcucumber\t1
+S\tsliced
+S\ton\t[cutting board]
+M\tpour\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{cucumber}
+//
+O\tbowl\t0
+S\tcontains\t{cucumber}
+O\tspoon\t1
+M\tmix\t<Assumed>
+O\tcucumber salad\t1\t15
+S\tcontains\t{cucumber}
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn a_plan_keeping_next_to_nothing_of_its_reference_says_so() {
+    let files = [("salad.txt", CUCUMBER_SALAD), ("sauces.txt", SAUCES)];
+    let little = |p: &Plan| {
+        p.notes
+            .iter()
+            .any(|n| n.starts_with("little of the reference task tree"))
+    };
+    // nothing of the cucumber's six units is asked for: only the dish's last unit is left
+    let p = plan_of(&files, &ExactMatch, &query("salad", &[("tomato", "sauce")]));
+    assert!(little(&p), "{:?}\n{:#?}", p.notes, units(&p));
+    assert!(
+        p.notes
+            .iter()
+            .any(|n| n.contains("1 of its 6 units kept ('salad.txt')")),
+        "{:?}",
+        p.notes
+    );
+    // asked for, the cucumber keeps its units, and nothing is said
+    let p = plan_of(
+        &files,
+        &ExactMatch,
+        &query("salad", &[("tomato", "sauce"), ("cucumber", "sliced")]),
+    );
+    assert!(!little(&p), "{:?}", p.notes);
+}
+
 #[test]
 fn a_state_is_made_by_a_motion_that_makes_it_never_by_a_pour() {
     // FOON pours two sauces and blends one: pouring moves a sauce, the blender makes one

@@ -82,6 +82,13 @@ pub fn plan(
     let scheduled = schedule::schedule(kb, index, &mut tree, &values, order);
     if request.modify {
         schedule::confirm_planned(&tree, &scheduled.order, &mut outcomes);
+        note_little_kept(
+            &tree,
+            &scheduled.order,
+            reference.units.len(),
+            &chosen.goal.subgraph,
+            &mut notes,
+        );
     }
     let dish_class = class.and_then(|c| {
         dish_class_name(c).map(|name| DishClassRef {
@@ -104,6 +111,36 @@ pub fn plan(
         removed,
         format_version: FORMAT_VERSION,
     }))
+}
+
+/// Says so when the plan keeps next to nothing of the reference task tree (at most two of its units,
+/// of many): the knowledge base then has no recipe of the dish type like the query, and the plan is mostly
+/// the ingredients' own branches joined at the dish.
+fn note_little_kept(
+    tree: &tree::Tree,
+    order: &[tree::TUnitId],
+    reference_units: usize,
+    subgraph: &str,
+    notes: &mut Vec<String>,
+) {
+    use crate::plan::Origin;
+    let kept = order
+        .iter()
+        .filter(|&&u| {
+            let origin = tree.units[u].origin;
+            matches!(
+                origin,
+                Origin::Reference | Origin::Renamed | Origin::Attached
+            )
+        })
+        .count();
+    if kept <= 2 && reference_units >= 6 {
+        notes.push(format!(
+            "little of the reference task tree fits this query: {kept} of its {reference_units} units \
+             kept ('{subgraph}'); the rest are the ingredients' own branches. The knowledge base may \
+             have no recipe of this dish type like it"
+        ));
+    }
 }
 
 fn bad(message: String) -> FoonError {
