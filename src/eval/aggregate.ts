@@ -1,7 +1,7 @@
 // The metrics table: batch records aggregated per dish type and overall, per variant.
 
 import { emptyCases } from "./coverage";
-import type { CaseCounts, EvalRecord, MetricsRow, PlanMetrics, Variant } from "./types";
+import { LITTLE_REFERENCE, type CaseCounts, type EvalRecord, type MetricsRow, type PlanMetrics, type Variant } from "./types";
 
 export const ALL = "all";
 
@@ -54,6 +54,7 @@ export function metricsRow(group: string, variant: Variant, records: readonly Ev
     pair_share: mean(metrics.map((m) => ratio(m.pairs_in_tree, m.query_pairs))),
     extra_mean: mean(metrics.map((m) => m.extra_ingredients.length)),
     plans_with_extra: metrics.length === 0 ? 0 : metrics.filter((m) => m.extra_ingredients.length > 0).length / metrics.length,
+    plans_little_reference: metrics.length === 0 ? 0 : metrics.filter((m) => m.reference_units <= LITTLE_REFERENCE).length / metrics.length,
     cases,
     substitutions,
     low_confidence: lowConfidence,

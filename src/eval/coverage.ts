@@ -66,6 +66,7 @@ export function coverageMetrics(plan: Plan): CoverageMetrics {
     query_pairs: pairs.size,
     pairs_in_tree: pairsInTree.length,
     extra_ingredients: extra,
+    reference_units: plan.units.filter((u) => u.origin === "reference" || u.origin === "renamed" || u.origin === "attached").length,
     cases,
     substitutions,
     low_confidence: lowConfidence,

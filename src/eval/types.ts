@@ -36,6 +36,8 @@ export interface CoverageMetrics {
   pairs_in_tree: number;
   /** Starting ingredients of the tree that the query did not ask for (labels). */
   extra_ingredients: string[];
+  /** Units of the reference task tree the plan keeps (as retrieved, renamed, or given a new ingredient). */
+  reference_units: number;
   /** Substitution case per query ingredient (Table I), `none` when no case applied. */
   cases: CaseCounts;
   /** Query ingredients planned with an equivalent of another name. */
@@ -94,6 +96,11 @@ export interface MetricsRow {
   extra_mean: number;
   /** Share of plans with at least one extra starting ingredient, 0..1. */
   plans_with_extra: number;
+  /**
+   * Share of plans keeping at most `LITTLE_REFERENCE` units of their reference task tree, 0..1: the knowledge
+   * base had no recipe of the type like the query, and the plan is mostly the ingredients' own branches.
+   */
+  plans_little_reference: number;
   cases: CaseCounts;
   substitutions: number;
   low_confidence: number;
@@ -105,6 +112,9 @@ export interface MetricsRow {
   ms_max: number;
   ms_total: number;
 }
+
+/** At most this many units kept of the reference task tree is "little" (`plans_little_reference`). */
+export const LITTLE_REFERENCE = 2;
 
 /** Structural invariant totals that must be 0 (what `npm test` checks). */
 export const INVARIANTS = ["duplicate_units", "units_before_inputs", "dead_units"] as const;

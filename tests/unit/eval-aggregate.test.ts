@@ -38,7 +38,19 @@ describe("batch records and the metrics table", () => {
     expect(all.dish_share).toBe(1);
     expect(all.pair_share).toBe(1);
     expect(all.ms_total).toBe(15);
+    // every unit of the fake plans is the reference tree's
+    expect(all.plans_little_reference).toBe(0);
     expect(brokenInvariants(rows)).toEqual([]);
+  });
+
+  it("counts the plans that keep next to nothing of their reference task tree", () => {
+    // the dish's last unit is the reference's; the rest are branches the ingredients brought
+    const mostlyAdded = (request: PlanRequest) => plan(cleanUnits().map((u, i) => ({ ...u, origin: i === 3 ? "attached" : "grafted" })), request.query);
+    const added = runBatch(mostlyAdded, [q("bread", "x"), q("salad", "y")], ["modified"], now);
+    const kept = runBatch(fakePlanner, [q("salad", "z")], ["modified"], now);
+    const rows = metricsTable([...added, ...kept], "modified");
+    expect(rows.map((r) => [r.group, r.plans_little_reference])).toEqual([["bread", 1], ["salad", 0.5], ["all", 2 / 3]]);
+    expect(formatTable(rows, "title")).toMatch(/plans keeping <= 2 reference units\s+100\.0%\s+50\.0%\s+66\.7%/);
   });
 
   it("reports broken invariants of the unmodified variant", () => {

@@ -1,6 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { coverageMetrics, startingIngredients } from "../../src/eval/coverage";
 import { planMetrics } from "../../src/eval/metrics";
+import type { PlanUnit } from "../../src/planner/types";
 import { cleanUnits, node, outcome, plan, unit } from "./eval-fixtures";
 
 describe("coverage of the query", () => {
@@ -8,6 +9,12 @@ describe("coverage of the query", () => {
     const m = coverageMetrics(plan());
     expect(m).toMatchObject({ query_objects: 2, objects_in_tree: 2, objects_in_dish: 2, query_pairs: 2, pairs_in_tree: 2, extra_ingredients: [] });
     expect(m.cases).toEqual({ c1: 2, c2: 0, c3: 0, c4: 0, none: 0 });
+  });
+
+  it("counts the units kept of the reference task tree, not the branches added to it", () => {
+    expect(coverageMetrics(plan()).reference_units).toBe(4);
+    const units = cleanUnits().map((u, i): PlanUnit => ({ ...u, origin: i === 3 ? "attached" : "grafted" }));
+    expect(coverageMetrics(plan(units)).reference_units).toBe(1);
   });
 
   it("counts repeated query ingredients once, and missing objects and states", () => {
