@@ -1322,40 +1322,27 @@ fn assert_steps(recipe: &str, dish: &str, steps: &[&str]) {
     assert_eq!(p.steps, steps, "{:#?}", units(&p));
 }
 
+/// FOON text of a tomato on the cutting board cut in turn (`cuts`: state before, motion, state after), then
+/// poured into a bowl: a tomato salad.
+fn cut_in_turn(cuts: &[(&str, &str, &str)]) -> String {
+    let on_board = |state: &str| format!("O\ttomato\t1\nS\t{state}\nS\ton\t[cutting board]\n");
+    let mut text = String::from("//\n");
+    for (before, motion, after) in cuts {
+        text += &on_board(before);
+        text += &format!("O\tknife\t1\nM\t{motion}\t<Assumed>\n");
+        text += &on_board(after);
+        text += "//\n";
+    }
+    text += &on_board(cuts.last().map_or("whole", |c| c.2));
+    text += "O\tbowl\t0\nS\tempty\nM\tpour\t<Assumed>\n";
+    text + "O\ttomato salad\t1\t15\nS\tcontains\t{tomato}\nS\tin\t[bowl]\n//\n"
+}
+
 #[test]
 fn two_steps_that_read_the_same_say_what_each_makes() {
-    let cut_twice = "//
-O\ttomato\t1
-S\tchopped
-S\ton\t[cutting board]
-O\tknife\t1
-M\tcut\t<Assumed>
-O\ttomato\t1
-S\thalved
-S\ton\t[cutting board]
-//
-O\ttomato\t1
-S\thalved
-S\ton\t[cutting board]
-O\tknife\t1
-M\tcut\t<Assumed>
-O\ttomato\t1
-S\ton\t[cutting board]
-S\tstripped
-//
-O\ttomato\t1
-S\ton\t[cutting board]
-S\tstripped
-O\tbowl\t0
-S\tempty
-M\tpour\t<Assumed>
-O\ttomato salad\t1\t15
-S\tcontains\t{tomato}
-S\tin\t[bowl]
-//
-";
+    let cut_twice = cut_in_turn(&[("chopped", "cut", "halved"), ("halved", "cut", "stripped")]);
     assert_steps(
-        cut_twice,
+        &cut_twice,
         "salad",
         &[
             "Cut the tomato on the cutting board until it is halved.",
@@ -1367,47 +1354,13 @@ S\tin\t[bowl]
 
 #[test]
 fn a_step_puts_the_food_where_a_phrasal_motion_needs_it() {
-    let slit = "//
-O\ttomato\t1
-S\twhole
-S\ton\t[cutting board]
-O\tknife\t1
-M\tmake slits\t<Assumed>
-O\ttomato\t1
-S\tslit
-S\ton\t[cutting board]
-//
-O\ttomato\t1
-S\tslit
-S\ton\t[cutting board]
-O\tknife\t1
-M\tcut off skin\t<Assumed>
-O\ttomato\t1
-S\tpeeled
-S\ton\t[cutting board]
-//
-O\ttomato\t1
-S\tpeeled
-S\ton\t[cutting board]
-O\tknife\t1
-M\tcut in half\t<Assumed>
-O\ttomato\t1
-S\thalved
-S\ton\t[cutting board]
-//
-O\ttomato\t1
-S\thalved
-S\ton\t[cutting board]
-O\tbowl\t0
-S\tempty
-M\tpour\t<Assumed>
-O\ttomato salad\t1\t15
-S\tcontains\t{tomato}
-S\tin\t[bowl]
-//
-";
+    let slit = cut_in_turn(&[
+        ("whole", "make slits", "slit"),
+        ("slit", "cut off skin", "peeled"),
+        ("peeled", "cut in half", "halved"),
+    ]);
     assert_steps(
-        slit,
+        &slit,
         "salad",
         &[
             "Make slits in the tomato on the cutting board.",
