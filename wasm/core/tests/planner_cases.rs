@@ -1312,6 +1312,46 @@ fn food_already_in_the_bowl_is_not_put_there_again() {
     assert_eq!(dish, "tomato salad");
 }
 
+#[test]
+fn a_ladle_scoops_out_of_the_pot_into_the_bowl() {
+    let ladled = "//
+O\tpot\t0
+S\tempty
+O\tnoodle\t1
+S\tuncooked
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{noodle}
+//
+O\tbowl\t0
+S\tempty
+O\tladle\t1
+O\tpot\t0
+S\tcontains\t{noodle}
+M\tscoop and pour\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{noodle soup}
+O\tnoodle soup\t1\t14
+S\tcontains\t{noodle}
+S\tin\t[bowl]
+//
+";
+    let p = plan_of(
+        &[("recipe.txt", ladled)],
+        &ExactMatch,
+        &query("noodle", &[("noodle", "uncooked")]),
+    );
+    assert_eq!(
+        p.steps,
+        [
+            "Pour the noodle into the pot.",
+            "Scoop and pour the noodle into the bowl with the ladle."
+        ],
+        "{:#?}",
+        units(&p)
+    );
+}
+
 /// The steps of a dish of chopped tomato planned on one recipe.
 fn assert_steps(recipe: &str, dish: &str, steps: &[&str]) {
     let p = plan_of(

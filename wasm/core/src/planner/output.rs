@@ -515,6 +515,8 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     // move: the lid) but "Cover the pot" when the pot moves
     let mut holder = None;
     let mut closed = false;
+    // the vessel worked on is the one things are taken from, not the one they go into
+    let mut from_elsewhere = false;
     let tool = |x: SlotId| utensil(x) && node(x).states.is_empty();
     let motion = unit.motion.trim_end_matches('*');
     let puts = moves_into(motion);
@@ -542,9 +544,23 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
             bare_tool || n.states.iter().any(|s| s.name == "with")
         };
         let moved = unit.inputs.iter().filter(|i| i.1);
+        // what a motion puts somewhere comes out of a vessel other than the one the products are in (a
+        // ladle scoops the noodles out of the pot into the bowl)
+        let source = |i: &&(SlotId, bool)| {
+            vessel(i)
+                && !(puts
+                    && unit
+                        .outputs
+                        .iter()
+                        .any(|o| node(o.0).container() == Some(&node(i.0).label)))
+        };
         let worked = covered.or_else(|| moved.clone().find(vessel)).or_else(|| {
             (closes || moved.clone().all(|i| machine(i.0)))
-                .then(|| unit.inputs.iter().find(vessel))
+                .then(|| {
+                    let found = unit.inputs.iter().find(source);
+                    from_elsewhere = puts && found.is_some();
+                    found.or_else(|| unit.inputs.iter().find(vessel))
+                })
                 .flatten()
         });
         if let Some(&(x, _)) = worked {
@@ -557,7 +573,7 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
                     push(objects, l);
                 }
                 // poured out of it (with more than tools moving): where it goes is the place
-                if tools_only || !puts {
+                if (tools_only || !puts) && !from_elsewhere {
                     holder = Some((relation_to(tree, &n.label), n.label.as_str()));
                 }
             }
@@ -630,7 +646,7 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     let moved = objects.len();
     for &(x, m) in &unit.inputs {
         let n = node(x);
-        if (!m || holder.is_some() || closed)
+        if (!m || holder.is_some() || closed || from_elsewhere)
             && utensil(x)
             && n.states.is_empty()
             && !objects[..moved].contains(&n.label.as_str())
