@@ -1352,6 +1352,61 @@ S\tin\t[bowl]
     );
 }
 
+#[test]
+fn a_blend_names_all_the_cup_holds_not_only_what_foon_moves() {
+    let smoothie = "//
+O\tblender cup\t0
+S\tempty
+O\tbanana\t1
+S\tsliced
+O\tmilk\t1
+S\tliquid
+M\tpour\t<Assumed>
+O\tblender cup\t0
+S\tcontains\t{banana,milk}
+//
+O\tblender cup\t0
+S\tcontains\t{banana,milk}
+O\thoney\t1
+S\tliquid
+M\tpour\t<Assumed>
+O\tblender cup\t0
+S\tcontains\t{banana,honey,milk}
+O\thoney\t1
+S\tliquid
+S\tin\t[blender cup]
+//
+O\tblender cup\t0
+S\tcontains\t{banana,honey,milk}
+O\thoney\t1
+S\tliquid
+S\tin\t[blender cup]
+O\tblender\t0
+M\tblend\t<Assumed>
+O\tsmoothie\t1\t9
+S\tblended
+S\tcontains\t{banana,honey,milk}
+S\tin\t[blender cup]
+//
+";
+    let items = [
+        ("banana", "sliced"),
+        ("milk", "liquid"),
+        ("honey", "liquid"),
+    ];
+    let p = plan_of(
+        &[("recipe.txt", smoothie)],
+        &ExactMatch,
+        &query("drinks", &items),
+    );
+    assert_eq!(
+        p.steps.last().map(String::as_str),
+        Some("Blend the honey, the banana and the milk in the blender cup with the blender."),
+        "{:#?}",
+        units(&p)
+    );
+}
+
 /// The steps of a dish of chopped tomato planned on one recipe.
 fn assert_steps(recipe: &str, dish: &str, steps: &[&str]) {
     let p = plan_of(

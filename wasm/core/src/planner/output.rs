@@ -436,6 +436,11 @@ fn push_list(out: &mut String, items: &[&str]) {
     }
 }
 
+/// Words of motions that work on everything a vessel holds at once (a blend, a whisk, a stir).
+const MIXING_WORDS: &[&str] = &[
+    "mix", "blend", "beat", "whisk", "stir", "fold", "mash", "combine",
+];
+
 /// Motions that open or close a container.
 const CLOSES: &[&str] = &["open", "close", "cover", "uncover"];
 /// Other motions that handle a container itself rather than what it holds.
@@ -526,6 +531,30 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
     let closes = CLOSES.contains(&motion);
     let handles =
         PUT_MOTIONS.contains(&motion) || HANDLES.contains(&motion) || motion.ends_with(" open");
+    // food already in a vessel, mixed there into something new, is mixed with all the vessel holds: the
+    // blender blends the whole cup, not the honey FOON moves ("Blend the honey, the blueberry and the milk")
+    let mixes = || motion.split(' ').any(|w| MIXING_WORDS.contains(&w));
+    if !objects.is_empty() && !puts && !handles && !closes && mixes() {
+        let label_of = |x: SlotId| node(x).label.as_str();
+        let makes_new = unit.outputs.iter().any(|&(o, _)| {
+            !utensil(o) && !unit.inputs.iter().any(|&(i, _)| label_of(i) == label_of(o))
+        });
+        let inside = |v: &ObjectNode, l: &str| {
+            unit.inputs
+                .iter()
+                .any(|&(i, _)| label_of(i) == l && node(i).container() == Some(v.label.as_str()))
+        };
+        let vessel = unit
+            .inputs
+            .iter()
+            .map(|&(i, _)| node(i))
+            .find(|v| v.holds_something() && objects.iter().all(|l| inside(v, l)));
+        if let Some(v) = vessel.filter(|_| makes_new) {
+            for l in v.contents() {
+                push(objects, l);
+            }
+        }
+    }
     if objects.is_empty() && !handles {
         let vessel = |i: &&(SlotId, bool)| node(i.0).holds_something();
         // a lid is put on or taken off what the unit covers or uncovers, before or after
