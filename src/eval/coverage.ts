@@ -66,6 +66,7 @@ export function coverageMetrics(plan: Plan): CoverageMetrics {
     query_pairs: pairs.size,
     pairs_in_tree: pairsInTree.length,
     extra_ingredients: extra,
+    // the units the planner counts for its note on a plan keeping little of its reference (planner/mod.rs)
     reference_units: plan.units.filter((u) => u.origin === "reference" || u.origin === "renamed" || u.origin === "attached").length,
     cases,
     substitutions,

@@ -136,6 +136,18 @@ pub fn is_transfer_motion(motion: &str) -> bool {
     })
 }
 
+/// Motions that work on everything a vessel holds at once (a blend, a whisk, a stir).
+const MIXING_MOTIONS: &[&str] = &[
+    "mix", "blend", "beat", "whisk", "stir", "fold", "mash", "combine",
+];
+
+/// Whether some part of a motion mixes (`cook and stir`, `mix and mash`).
+pub fn is_mixing_motion(motion: &str) -> bool {
+    motion
+        .split(" and ")
+        .any(|part| MIXING_MOTIONS.contains(&part.trim_end_matches('*')))
+}
+
 /// States an object has before any cooking action: a node with only these states (and no container
 /// or contents) is available in the kitchen even when some unit produces it.
 pub const RAW_STATES: &[&str] = &[
@@ -185,5 +197,14 @@ mod tests {
         assert!(is_utensil("cutting board"));
         assert!(is_utensil("glass"));
         assert!(!is_utensil("tomato"));
+    }
+
+    #[test]
+    fn a_motion_mixes_when_one_of_its_parts_does() {
+        assert!(is_mixing_motion("blend"));
+        assert!(is_mixing_motion("mix*"));
+        assert!(is_mixing_motion("cook and stir"));
+        assert!(!is_mixing_motion("pour"));
+        assert!(!is_mixing_motion("stir fry"));
     }
 }

@@ -115,7 +115,8 @@ pub fn plan(
 
 /// Says so when the plan keeps next to nothing of the reference task tree (at most two of its units,
 /// of many): the knowledge base then has no recipe of the dish type like the query, and the plan is mostly
-/// the ingredients' own branches joined at the dish.
+/// the ingredients' own branches joined at the dish. `npm run eval` counts such plans the same way
+/// (`reference_units` in `src/eval/coverage.ts`).
 fn note_little_kept(
     tree: &tree::Tree,
     order: &[tree::TUnitId],

@@ -9,7 +9,7 @@ use crate::plan::{
     DishClassRef, GoalInfo, IngredientOutcome, Plan, PlanNode, PlanUnit, ProgressLine,
     ProgressState, Query, Status,
 };
-use crate::taxonomy::PUT_MOTIONS;
+use crate::taxonomy::{is_mixing_motion, PUT_MOTIONS};
 use smol_str::{SmolStr, SmolStrBuilder};
 use std::sync::Arc;
 
@@ -436,11 +436,6 @@ fn push_list(out: &mut String, items: &[&str]) {
     }
 }
 
-/// Words of motions that work on everything a vessel holds at once (a blend, a whisk, a stir).
-const MIXING_WORDS: &[&str] = &[
-    "mix", "blend", "beat", "whisk", "stir", "fold", "mash", "combine",
-];
-
 /// Motions that open or close a container.
 const CLOSES: &[&str] = &["open", "close", "cover", "uncover"];
 /// Other motions that handle a container itself rather than what it holds.
@@ -533,8 +528,7 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
         PUT_MOTIONS.contains(&motion) || HANDLES.contains(&motion) || motion.ends_with(" open");
     // food already in a vessel, mixed there into something new, is mixed with all the vessel holds: the
     // blender blends the whole cup, not the honey FOON moves ("Blend the honey, the blueberry and the milk")
-    let mixes = || motion.split(' ').any(|w| MIXING_WORDS.contains(&w));
-    if !objects.is_empty() && !puts && !handles && !closes && mixes() {
+    if !objects.is_empty() && !puts && !handles && !closes && is_mixing_motion(motion) {
         let label_of = |x: SlotId| node(x).label.as_str();
         let makes_new = unit.outputs.iter().any(|&(o, _)| {
             !utensil(o) && !unit.inputs.iter().any(|&(i, _)| label_of(i) == label_of(o))
