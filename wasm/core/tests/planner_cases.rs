@@ -1466,6 +1466,94 @@ fn a_step_puts_the_food_where_a_phrasal_motion_needs_it() {
     );
 }
 
+#[test]
+fn a_step_says_where_the_food_it_makes_is() {
+    // the cracked egg becomes the bowl's egg white and yolk; the blended tomato is poured as "mixture" and
+    // becomes the soup in the bowl: no output names either, nor lists them
+    let cracked_and_blended = "//
+O\tbowl\t0
+S\tempty
+O\tegg\t1
+S\twhole
+M\tcrack\t<Assumed>
+O\tegg white and yolk\t1
+S\tin\t[bowl]
+//
+O\tblender jar\t0
+S\tempty
+O\ttomato\t1
+S\tchopped
+M\tblend\t<Assumed>
+O\tmixture\t1
+S\tblended
+S\tin\t[blender jar]
+//
+O\tmixture\t1
+S\tblended
+S\tin\t[blender jar]
+O\tegg white and yolk\t0
+S\tin\t[bowl]
+M\tpour\t<Assumed>
+O\tsoup\t1\t1
+S\tin\t[bowl]
+//
+";
+    let p = plan_of(
+        &[("recipe.txt", cracked_and_blended)],
+        &ExactMatch,
+        &query("soup", &[("egg", "whole"), ("tomato", "chopped")]),
+    );
+    assert_eq!(
+        p.steps,
+        [
+            "Crack the egg in the bowl.",
+            "Blend the tomato in the blender jar.",
+            "Pour the mixture into the bowl.",
+        ],
+        "{:#?}",
+        units(&p)
+    );
+}
+
+#[test]
+fn an_emptied_jar_is_not_put_into_the_pot() {
+    // the bay leaf goes from its jar into the pot, making the soup; with the bay leaf pruned, only the
+    // empty jar moves, and the soup in the pot is not where it goes
+    let jarred = "//
+O\tpot\t0
+S\tempty
+O\tonion\t1
+S\tchopped
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{onion}
+//
+O\tpot\t0
+S\tcontains\t{onion}
+O\tjar\t1
+S\tcontains\t{bay leaf}
+O\tbay leaf\t1
+S\tin\t[jar]
+M\tput inside\t<Assumed>
+O\tonion soup\t1\t1
+S\tin\t[pot]
+S\tcontains\t{bay leaf,onion}
+//
+";
+    let p = plan_of(
+        &[("recipe.txt", jarred)],
+        &ExactMatch,
+        &query("soup", &[("onion", "chopped")]),
+    );
+    assert_eq!(p.removed, ["bay leaf"]);
+    assert!(
+        p.steps.iter().all(|s| !s.contains("jar into")),
+        "{:#?}\n{:#?}",
+        p.steps,
+        units(&p)
+    );
+}
+
 /// Sauces poured from their bottles (recorded as "sauce" only once poured) and a tomato blended into one.
 const SAUCES: &str = "//
 O\tketchup\t1

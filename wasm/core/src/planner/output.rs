@@ -645,6 +645,23 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
                     container_of(n, objects)
                 })
             })
+            // nothing the unit makes lists them: the food it makes of them is where they went ("Pour the
+            // mixture into the pot", the pot's soup made of it). An emptied jar alone (its food pruned)
+            // goes nowhere.
+            .or_else(|| {
+                let food = |&(x, _): &(SlotId, bool)| {
+                    !utensil(x) && objects.contains(&node(x).label.as_str())
+                };
+                if !unit.inputs.iter().any(food) {
+                    return None;
+                }
+                unit.outputs.iter().find_map(|&(x, _)| {
+                    let n = node(x);
+                    (!utensil(x) && !objects.contains(&n.label.as_str()))
+                        .then(|| container_of(n, objects))
+                        .flatten()
+                })
+            })
     });
     // what is already where the others are put is not put there again (FOON lists what a bowl holds
     // among the inputs of the next thing added to it): the others go onto it ("Pour the maple syrup onto
