@@ -1554,6 +1554,80 @@ S\tcontains\t{bay leaf,onion}
     );
 }
 
+#[test]
+fn food_goes_into_a_jar_a_lid_goes_on() {
+    // the lid's "on [blender jar]" (before any food's "in" among the tree's nodes) does not say how food
+    // is put in the jar: the tomato is scooped into it
+    let covered_jar = "//
+O\tblender jar\t0
+S\tempty
+O\tblender cover\t1
+M\tcover\t<Assumed>
+O\tblender jar\t0
+S\tcovered\t[blender cover]
+O\tblender cover\t1
+S\ton\t[blender jar]
+//
+O\tblender jar\t0
+S\tcovered\t[blender cover]
+O\tblender cover\t1
+S\ton\t[blender jar]
+M\tuncover\t<Assumed>
+O\tblender jar\t0
+S\tuncovered
+O\tblender cover\t1
+//
+O\tblender jar\t0
+S\tuncovered
+O\tbowl\t0
+S\tcontains\t{tomato}
+O\ttomato\t1
+S\tchopped
+S\tin\t[bowl]
+O\tspoon\t1
+M\tscoop and pour\t<Assumed>
+O\tblender jar\t0
+S\tcontains\t{tomato}
+O\tbowl\t0
+S\tempty
+//
+O\tblender jar\t0
+S\tcontains\t{tomato}
+M\tblend\t<Assumed>
+O\ttomato soup\t1
+S\tblended
+S\tin\t[blender jar]
+//
+O\ttomato soup\t1
+S\tblended
+S\tin\t[blender jar]
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\ttomato soup\t1\t1
+S\tblended
+S\tin\t[bowl]
+//
+";
+    let p = plan_of(
+        &[("recipe.txt", covered_jar)],
+        &ExactMatch,
+        &query("soup", &[("tomato", "chopped")]),
+    );
+    assert_eq!(
+        p.steps,
+        [
+            "Cover the blender jar with the blender cover.",
+            "Uncover the blender jar.",
+            "Scoop and pour the tomato into the blender jar.",
+            "Blend the tomato in the blender jar.",
+            "Pour the tomato soup into the bowl.",
+        ],
+        "{:#?}",
+        units(&p)
+    );
+}
+
 /// Sauces poured from their bottles (recorded as "sauce" only once poured) and a tomato blended into one.
 const SAUCES: &str = "//
 O\tketchup\t1

@@ -468,19 +468,23 @@ fn container_of<'n>(n: &'n ObjectNode, objects: &[&str]) -> Option<(&'n str, &'n
 }
 
 /// How things are put in `container`, as the tree's nodes say ("on" a plate, "in" a bowl), else "in".
+/// Food says it first: a lid is on the blender jar, the food in it (a pot says it is on the stove).
 fn relation_to<'t>(tree: &'t Tree, container: &str) -> &'t str {
-    tree.slots
-        .iter()
-        .flat_map(|slot| &slot.node.states)
-        .find_map(|s| match &s.arg {
-            Some(StateArg::Container(c))
-                if c == container && (s.name == "in" || s.name == "on") =>
-            {
-                Some(s.name.as_str())
-            }
-            _ => None,
-        })
-        .unwrap_or("in")
+    let said_by = |food: bool| {
+        tree.slots
+            .iter()
+            .filter(move |slot| slot.utensil != food)
+            .flat_map(|slot| &slot.node.states)
+            .find_map(|s| match &s.arg {
+                Some(StateArg::Container(c))
+                    if c == container && (s.name == "in" || s.name == "on") =>
+                {
+                    Some(s.name.as_str())
+                }
+                _ => None,
+            })
+    };
+    said_by(true).or_else(|| said_by(false)).unwrap_or("in")
 }
 
 /// One plain sentence for a unit: "Slice the tomato on the cutting board." `objects` is a buffer reused
