@@ -178,6 +178,8 @@ fn normalize_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
         ));
     }
     let mut out: Vec<QueryIngredient> = Vec::with_capacity(q.ingredients.len());
+    // how often each of `out` is listed
+    let mut listed: Vec<usize> = Vec::with_capacity(q.ingredients.len());
     for (i, ing) in q.ingredients.iter().enumerate() {
         check_length(&ing.object, || format!("ingredient {} object", i + 1))?;
         check_length(&ing.state, || format!("ingredient {} state", i + 1))?;
@@ -202,14 +204,20 @@ fn normalize_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
             )));
         }
         let item = QueryIngredient { object, state };
-        if out.contains(&item) {
-            notes.push(format!(
-                "duplicate ingredient '{} ({})' listed once",
-                item.object, item.state
-            ));
-            continue;
+        match out.iter().position(|o| *o == item) {
+            Some(k) => listed[k] += 1,
+            None => {
+                out.push(item);
+                listed.push(1);
+            }
         }
-        out.push(item);
+    }
+    // one note per ingredient listed more than once, however often
+    for (item, &n) in out.iter().zip(&listed).filter(|(_, &n)| n > 1) {
+        notes.push(format!(
+            "duplicate ingredient '{} ({})' listed {n} times, planned once",
+            item.object, item.state
+        ));
     }
     Ok(Query {
         id: q.id.clone(),
