@@ -1633,6 +1633,75 @@ S\tin\t[bowl]
     );
 }
 
+#[test]
+fn a_pot_is_covered_once_nothing_more_is_done_in_it_open() {
+    // the stir gives the open pot back as it took it, and the cover changes it: the stir comes first,
+    // whatever order the tree lists them in
+    let covered_late = "//
+O\tpot\t0
+S\tempty
+O\trice\t1
+S\tuncooked
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{rice}
+O\trice\t1
+S\tuncooked
+S\tin\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{rice}
+O\tpot lid\t1
+M\tcover\t<Assumed>
+O\tpot\t0
+S\tcontains\t{rice}
+S\tcovered
+O\tpot lid\t1
+S\ton\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{rice}
+O\trice\t1
+S\tuncooked
+S\tin\t[pot]
+O\tspoon\t1
+M\tstir\t<Assumed>
+O\tpot\t0
+S\tcontains\t{rice}
+O\trice\t1
+S\ttoasted
+S\tin\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{rice}
+S\tcovered
+O\trice\t1
+S\ttoasted
+S\tin\t[pot]
+M\tsimmer\t<Assumed>
+O\trice soup\t1\t1
+S\tcooked
+S\tin\t[pot]
+//
+";
+    let p = plan_of(
+        &[("recipe.txt", covered_late)],
+        &ExactMatch,
+        &query("soup", &[("rice", "uncooked")]),
+    );
+    assert_eq!(
+        p.steps,
+        [
+            "Pour the rice into the pot.",
+            "Stir the rice in the pot.",
+            "Cover the pot with the pot lid.",
+            "Simmer the rice in the pot.",
+        ],
+        "{:#?}",
+        units(&p)
+    );
+}
+
 /// Sauces poured from their bottles (recorded as "sauce" only once poured) and a tomato blended into one.
 const SAUCES: &str = "//
 O\tketchup\t1

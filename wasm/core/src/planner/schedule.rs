@@ -320,6 +320,7 @@ fn topological(
     let mut arcs: Vec<(usize, usize)> = needs.edges.iter().map(|&(v, p, _)| (p, v)).collect();
     arcs.sort_unstable();
     arcs.dedup();
+    users_before_change(units, shapes, &mut arcs);
     let mut indegree = vec![0usize; n];
     for &(_, v) in &arcs {
         indegree[v] += 1;
@@ -340,6 +341,79 @@ fn topological(
         }
     }
     Ok(order)
+}
+
+/// A node that one unit changes and others use and give back as it was comes to the others first: the
+/// rice is stirred in the open pot before the pot is covered, the stove turned off once nothing cooks
+/// on it. Added to `arcs` (maker, user by position, sorted) only where the order leaves it free, never
+/// closing a cycle.
+fn users_before_change(units: &[TUnitId], shapes: &Shapes, arcs: &mut Vec<(usize, usize)>) {
+    // (value, unit) for every value a unit gives back as it took it, sorted by value
+    let mut passed: Vec<(Value, usize)> = Vec::new();
+    for (i, &u) in units.iter().enumerate() {
+        let outputs = shapes.outputs(u);
+        passed.extend(
+            shapes
+                .inputs(u)
+                .iter()
+                .filter(|x| outputs.binary_search(x).is_ok())
+                .map(|&x| (x, i)),
+        );
+    }
+    if passed.is_empty() {
+        return;
+    }
+    passed.sort_unstable();
+    passed.dedup();
+    let mut after: Vec<Vec<usize>> = vec![Vec::new(); units.len()];
+    for &(p, v) in arcs.iter() {
+        after[p].push(v);
+    }
+    let mut added = false;
+    let mut seen = vec![false; units.len()];
+    let mut stack = Vec::new();
+    for (c, &u) in units.iter().enumerate() {
+        let outputs = shapes.outputs(u);
+        for &x in shapes.inputs(u) {
+            if outputs.binary_search(&x).is_ok() {
+                continue;
+            }
+            let from = passed.partition_point(|e| e.0 < x);
+            for &(_, p) in passed[from..].iter().take_while(|e| e.0 == x) {
+                if p != c && !reaches(&after, c, p, &mut seen, &mut stack) {
+                    after[p].push(c);
+                    arcs.push((p, c));
+                    added = true;
+                }
+            }
+        }
+    }
+    if added {
+        arcs.sort_unstable();
+        arcs.dedup();
+    }
+}
+
+/// Whether `to` can be reached from `from` along `after` (`seen` and `stack` are buffers).
+fn reaches(
+    after: &[Vec<usize>],
+    from: usize,
+    to: usize,
+    seen: &mut [bool],
+    stack: &mut Vec<usize>,
+) -> bool {
+    seen.fill(false);
+    stack.clear();
+    stack.push(from);
+    while let Some(v) = stack.pop() {
+        if v == to {
+            return true;
+        }
+        if !std::mem::replace(&mut seen[v], true) {
+            stack.extend(&after[v]);
+        }
+    }
+    false
 }
 
 /// Strongly connected components of the "needs" graph (Tarjan, iterative): a component id per unit.
