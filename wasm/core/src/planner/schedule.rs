@@ -365,11 +365,8 @@ fn users_before_change(units: &[TUnitId], shapes: &Shapes, arcs: &mut Vec<(usize
     }
     passed.sort_unstable();
     passed.dedup();
-    let mut after: Vec<Vec<usize>> = vec![Vec::new(); units.len()];
-    for &(p, v) in arcs.iter() {
-        after[p].push(v);
-    }
-    let mut added = false;
+    // the arcs added, apart from the sorted ones until the end
+    let mut added: Vec<(usize, usize)> = Vec::new();
     let mut seen = vec![false; units.len()];
     let mut stack = Vec::new();
     for (c, &u) in units.iter().enumerate() {
@@ -380,23 +377,24 @@ fn users_before_change(units: &[TUnitId], shapes: &Shapes, arcs: &mut Vec<(usize
             }
             let from = passed.partition_point(|e| e.0 < x);
             for &(_, p) in passed[from..].iter().take_while(|e| e.0 == x) {
-                if p != c && !reaches(&after, c, p, &mut seen, &mut stack) {
-                    after[p].push(c);
-                    arcs.push((p, c));
-                    added = true;
+                if p != c && !reaches(arcs, &added, c, p, &mut seen, &mut stack) {
+                    added.push((p, c));
                 }
             }
         }
     }
-    if added {
+    if !added.is_empty() {
+        arcs.extend(added);
         arcs.sort_unstable();
         arcs.dedup();
     }
 }
 
-/// Whether `to` can be reached from `from` along `after` (`seen` and `stack` are buffers).
+/// Whether `to` can be reached from `from` along `arcs` (sorted) and `added` (`seen` and `stack` are
+/// buffers).
 fn reaches(
-    after: &[Vec<usize>],
+    arcs: &[(usize, usize)],
+    added: &[(usize, usize)],
     from: usize,
     to: usize,
     seen: &mut [bool],
@@ -409,9 +407,12 @@ fn reaches(
         if v == to {
             return true;
         }
-        if !std::mem::replace(&mut seen[v], true) {
-            stack.extend(&after[v]);
+        if std::mem::replace(&mut seen[v], true) {
+            continue;
         }
+        let out = arcs.partition_point(|a| a.0 < v)..arcs.partition_point(|a| a.0 <= v);
+        stack.extend(arcs[out].iter().map(|a| a.1));
+        stack.extend(added.iter().filter(|a| a.0 == v).map(|a| a.1));
     }
     false
 }
