@@ -12,6 +12,7 @@ use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, UnitId};
 use fixedbitset::FixedBitSet;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use std::cell::RefCell;
 use std::collections::VecDeque;
 
 #[derive(Clone, Debug, Default)]
@@ -24,7 +25,7 @@ pub(crate) struct Retrieved {
     pub blocked: Vec<NodeId>,
 }
 
-/// The search's tables, kept by the plan's `Scorer` and cleared for each retrieval instead of
+/// The search's tables, kept by the thread for every plan and cleared for each retrieval instead of
 /// allocated: case 4 retrieves for many candidates, and most are rejected at their first unit.
 pub(crate) struct Search {
     /// The unit chosen to make each node, handed to the result when the search completes.
@@ -197,19 +198,36 @@ pub(crate) fn retrieve_within(
     prefer: Option<u32>,
     allowed: impl Fn(UnitId) -> bool,
 ) -> Option<Retrieved> {
-    // the plan's tables, or tables of its own should a retrieval ever run inside another (a panic
-    // would kill the WASM module)
-    let (mut shared, mut own);
-    let s: &mut Search = match scorer.search.try_borrow_mut() {
-        Ok(tables) => {
-            shared = tables;
-            &mut shared
-        }
-        Err(_) => {
-            own = Search::default();
-            &mut own
-        }
-    };
+    TABLES.with(|tables| match tables.try_borrow_mut() {
+        Ok(mut shared) => search(&mut shared, kb, index, scorer, root, prefer, allowed),
+        // tables of its own should a retrieval ever run inside another (a panic would kill the WASM
+        // module)
+        Err(_) => search(
+            &mut Search::default(),
+            kb,
+            index,
+            scorer,
+            root,
+            prefer,
+            allowed,
+        ),
+    })
+}
+
+thread_local! {
+    static TABLES: RefCell<Search> = RefCell::default();
+}
+
+/// `retrieve_within` with the tables `s`.
+fn search(
+    s: &mut Search,
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    scorer: &Scorer,
+    root: NodeId,
+    prefer: Option<u32>,
+    allowed: impl Fn(UnitId) -> bool,
+) -> Option<Retrieved> {
     s.chosen.clear();
     // the last complete retrieval took the table
     s.chosen.reserve(64);

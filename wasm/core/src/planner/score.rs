@@ -4,7 +4,6 @@
 //! in all when the similarity has a memory (`Similarity::memory`): query names recur from plan to plan.
 
 use super::index::{GoalClass, PlannerIndex};
-use super::retrieve::Search;
 use crate::model::UnitId;
 use crate::similarity::{PairRow, Prepared, Similarity};
 use rustc_hash::FxHashMap as HashMap;
@@ -37,8 +36,6 @@ pub(crate) struct Scorer<'a> {
     /// unit and goal.
     best_to: RefCell<Vec<f32>>,
     units: RefCell<HashMap<UnitId, f32>>,
-    /// The retrieval's tables (Alg. 2), reused by every retrieval of the plan.
-    pub search: RefCell<Search>,
 }
 
 impl<'a> Scorer<'a> {
@@ -63,7 +60,6 @@ impl<'a> Scorer<'a> {
             best_to: RefCell::new(Vec::with_capacity(query.len())),
             // a plan scores a few units (9 on average over the dev queries, at most 37)
             units: RefCell::new(HashMap::with_capacity_and_hasher(32, Default::default())),
-            search: RefCell::default(),
         }
     }
 
