@@ -3,7 +3,9 @@
 
 use super::index::{Picks, PlannerIndex};
 use super::retrieve::{retrieve, retrieve_within};
-use super::states::{category, has_food_state, is_food_state, node_category, state_text, Category};
+use super::states::{
+    category, food_state_category, has_food_state, is_food_state, state_text, Category,
+};
 use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
@@ -38,11 +40,8 @@ pub(crate) fn food_states(node: &ObjectNode) -> Vec<&str> {
 /// `node_category`, except that a node saying nothing of its food is in the category its ingredient is
 /// sold in (`PlannerIndex::sold_as`: milk in a cup is liquid, flour in a bag ground).
 fn food_category(ctx: &Context, node: &ObjectNode) -> Category {
-    if has_food_state(node) {
-        node_category(node)
-    } else {
-        ctx.index.sold_as(&node.label).unwrap_or(Category::Whole)
-    }
+    food_state_category(node)
+        .unwrap_or_else(|| ctx.index.sold_as(&node.label).unwrap_or(Category::Whole))
 }
 
 /// "as a liquid", "ground": how an ingredient sold in category `c` comes.

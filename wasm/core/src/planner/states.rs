@@ -159,11 +159,16 @@ fn classify(state: &str) -> Category {
 
 /// The category a node's food states put it in (the furthest along; whole when it has none).
 pub(crate) fn node_category(node: &ObjectNode) -> Category {
+    food_state_category(node).unwrap_or(Category::Whole)
+}
+
+/// `node_category`, `None` for a node without food states (each state looked up once, where
+/// `has_food_state` and then `node_category` would look up some twice).
+pub(crate) fn food_state_category(node: &ObjectNode) -> Option<Category> {
     node.physical_states()
         .map(category)
         .filter(|&c| c != Category::Other)
         .max_by_key(|c| if c.is_starting() { 0 } else { 1 + *c as u8 })
-        .unwrap_or(Category::Whole)
 }
 
 /// Whether a node says anything of its food (has a food state), without listing its states.
