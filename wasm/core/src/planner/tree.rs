@@ -155,14 +155,20 @@ fn passes_on(node: &Slot, theirs: &Slot) -> bool {
     }
     let (node, theirs) = (&node.node, &theirs.node);
     // the contents compared last: the dearest test, and only when it decides
-    theirs.holds_something() && (theirs.label == node.label || lists_all(node, theirs))
+    let Some(all) = theirs.contents_list() else {
+        return theirs.holds_something()
+            && (theirs.label == node.label
+                || node.contents().all(|x| theirs.contents().any(|c| c == x)));
+    };
+    // one `contains` list, as nearly every node has: it holds something when the list does
+    !all.is_empty() && (theirs.label == node.label || lists_all(node, all))
 }
 
-/// Whether `theirs` lists every item of `node`'s contents: one pass over both when each has one
-/// `contains` list, as nearly every node does (lists are sorted).
-fn lists_all(node: &ObjectNode, theirs: &ObjectNode) -> bool {
-    let (Some(mine), Some(all)) = (node.contents_list(), theirs.contents_list()) else {
-        return node.contents().all(|x| theirs.contents().any(|c| c == x));
+/// Whether `all` (a `contains` list, sorted) has every item of `node`'s contents: one pass over both when
+/// `node` has one list, as nearly every node does.
+fn lists_all(node: &ObjectNode, all: &[SmolStr]) -> bool {
+    let Some(mine) = node.contents_list() else {
+        return node.contents().all(|x| all.iter().any(|c| c == x));
     };
     let mut rest = all.iter();
     mine.iter().all(|x| rest.any(|c| c == x))
