@@ -138,10 +138,11 @@ pub(crate) fn modify<'kb>(
     enabled: bool,
     notes: &mut Vec<String>,
 ) -> (Vec<IngredientOutcome>, Vec<String>) {
-    let reference_labels: Vec<String> = tree
+    // names are short: kept inline, not allocated
+    let reference_labels: Vec<SmolStr> = tree
         .ingredient_labels()
         .into_iter()
-        .map(str::to_string)
+        .map(SmolStr::new)
         .collect();
     let requested: HashSet<&str> = query
         .ingredients
@@ -400,7 +401,7 @@ fn settle_state<'kb>(
 fn equivalent(
     ctx: &Context,
     o: &str,
-    tree_labels: &[String],
+    tree_labels: &[SmolStr],
     w: &mut Work,
 ) -> Option<(String, f32)> {
     let ranked = ctx
@@ -440,7 +441,7 @@ fn equivalent(
         w.alternatives = alternatives(o);
         return Some((o.to_string(), 1.0));
     }
-    let tree_refs: Vec<&str> = tree_labels.iter().map(String::as_str).collect();
+    let tree_refs: Vec<&str> = tree_labels.iter().map(SmolStr::as_str).collect();
     let in_tree = ctx.sim.rank(o, &tree_refs, 1).into_iter().next();
     let in_kb = ranked.first().cloned();
     let pick = match (in_tree, in_kb) {
@@ -454,7 +455,7 @@ fn equivalent(
     match pick {
         Some((label, sim)) => {
             w.alternatives = alternatives(&label);
-            if !tree_labels.contains(&label) {
+            if !tree_labels.iter().any(|l| *l == label) {
                 w.reasons
                     .push(format!("equivalent '{label}' found in the universal FOON"));
             }
