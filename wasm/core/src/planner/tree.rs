@@ -59,6 +59,7 @@ pub(crate) struct Tree<'kb> {
 /// every list is (the reader makes them so); an emptied `contains` list becomes `empty`, and states
 /// stay sorted and unique.
 pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<SmolStr>)) {
+    let mut emptied = false;
     node.states.retain_mut(|s| {
         let Some(StateArg::Ingredients(list)) = &mut s.arg else {
             return true;
@@ -70,12 +71,22 @@ pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<Sm
         }
         if s.name == "contains" {
             *s = State::plain("empty");
+            emptied = true;
             return true;
         }
         false
     });
-    // an edit seldom reorders states (only among states of one name): sorted and made unique only then
-    if !node.states.is_sorted_by(|a, b| a < b) {
+    // an edit seldom reorders states: only among states of one name, unless a list became `empty`
+    // (states of different names stay in order, so only their names are compared); sorted and made
+    // unique only then
+    let sorted = if emptied {
+        node.states.is_sorted_by(|a, b| a < b)
+    } else {
+        node.states
+            .windows(2)
+            .all(|w| w[0].name != w[1].name || w[0] < w[1])
+    };
+    if !sorted {
         node.states.sort();
         node.states.dedup();
     }
