@@ -198,131 +198,115 @@ pub(crate) fn retrieve_within(
     prefer: Option<u32>,
     allowed: impl Fn(UnitId) -> bool,
 ) -> Option<Retrieved> {
-    TABLES.with(|tables| match tables.try_borrow_mut() {
-        Ok(mut shared) => search(&mut shared, kb, index, scorer, root, prefer, allowed),
+    TABLES.with(|tables| {
         // tables of its own should a retrieval ever run inside another (a panic would kill the WASM
         // module)
-        Err(_) => search(
-            &mut Search::default(),
-            kb,
-            index,
-            scorer,
-            root,
-            prefer,
-            allowed,
-        ),
+        let mut own = None;
+        let mut shared = tables.try_borrow_mut().ok();
+        let s = match shared.as_deref_mut() {
+            Some(s) => s,
+            None => own.insert(Search::default()),
+        };
+        s.chosen.clear();
+        // the last complete retrieval took the table
+        s.chosen.reserve(64);
+        for (set, len) in [
+            (&mut s.made, kb.nodes.len()),
+            (&mut s.in_tree, kb.units.len()),
+            (&mut s.visited, kb.nodes.len()),
+        ] {
+            set.clear();
+            set.grow(len);
+        }
+        s.queue.clear();
+        s.queue.push_back((root, None));
+        s.visited.insert(root);
+        let mut blocked = Vec::new();
+        while let Some((node, parent)) = s.queue.pop_front() {
+            if node != root && kb.kitchen.get(node).copied().unwrap_or(true) {
+                continue;
+            }
+            // a starting item of the recipe that needs it is taken from the kitchen, as that recipe did
+            if parent.is_some_and(|p| index.starts_in_recipe_of(p, node)) {
+                continue;
+            }
+            let Some(producers) = kb.producers.get(node) else {
+                continue;
+            };
+            if producers.is_empty() {
+                continue;
+            }
+            let mut best: Option<Candidate> = None;
+            let mut cyclic = false;
+            let mut cyclic_in_recipe = false;
+            for &u in producers {
+                let unit = &kb.units[u];
+                if unit.input_nodes().any(|n| n == node) {
+                    continue; // the unit needs what it makes: it only passes the object on
+                }
+                let same_recipe = match parent {
+                    Some(p) => index.share_recipe(u, p),
+                    None => prefer.is_some_and(|p| index.sources(u).contains(&p)),
+                };
+                if unit.input_nodes().any(|n| s.depends_on(kb, n, node)) {
+                    cyclic = true;
+                    cyclic_in_recipe |= same_recipe;
+                    continue; // would close a cycle
+                }
+                let mut candidate = Candidate {
+                    unit: u,
+                    reused: s.in_tree.contains(u),
+                    same_recipe,
+                    g: None,
+                };
+                let better = match best.as_mut() {
+                    None => true,
+                    Some(b) => candidate.beats(b, kb, scorer),
+                };
+                if better {
+                    best = Some(candidate);
+                }
+            }
+            let Some(Candidate {
+                unit: u,
+                same_recipe,
+                ..
+            }) = best
+            else {
+                if cyclic && !cyclic_in_recipe {
+                    blocked.push(node);
+                }
+                continue;
+            };
+            if cyclic_in_recipe && !same_recipe {
+                // the recipe only makes it again later (a lid put back): it had it from the start, and
+                // another recipe's way of making it would bring that recipe along
+                continue;
+            }
+            if !allowed(u) {
+                return None;
+            }
+            s.chosen.insert(node, u);
+            s.made.insert(node);
+            s.in_tree.insert(u);
+            s.inputs.clear();
+            s.inputs.extend(kb.units[u].input_nodes());
+            s.inputs.sort_unstable();
+            for &n in &s.inputs {
+                if !s.visited.put(n) {
+                    s.queue.push_back((n, Some(u)));
+                }
+            }
+        }
+        let units = s.execution_order(kb, root);
+        Some(Retrieved {
+            units,
+            chosen: std::mem::take(&mut s.chosen),
+            blocked,
+        })
     })
 }
 
 thread_local! {
     static TABLES: RefCell<Search> = RefCell::default();
-}
-
-/// `retrieve_within` with the tables `s`.
-fn search(
-    s: &mut Search,
-    kb: &KnowledgeBase,
-    index: &PlannerIndex,
-    scorer: &Scorer,
-    root: NodeId,
-    prefer: Option<u32>,
-    allowed: impl Fn(UnitId) -> bool,
-) -> Option<Retrieved> {
-    s.chosen.clear();
-    // the last complete retrieval took the table
-    s.chosen.reserve(64);
-    for (set, len) in [
-        (&mut s.made, kb.nodes.len()),
-        (&mut s.in_tree, kb.units.len()),
-        (&mut s.visited, kb.nodes.len()),
-    ] {
-        set.clear();
-        set.grow(len);
-    }
-    s.queue.clear();
-    s.queue.push_back((root, None));
-    s.visited.insert(root);
-    let mut blocked = Vec::new();
-    while let Some((node, parent)) = s.queue.pop_front() {
-        if node != root && kb.kitchen.get(node).copied().unwrap_or(true) {
-            continue;
-        }
-        // a starting item of the recipe that needs it is taken from the kitchen, as that recipe did
-        if parent.is_some_and(|p| index.starts_in_recipe_of(p, node)) {
-            continue;
-        }
-        let Some(producers) = kb.producers.get(node) else {
-            continue;
-        };
-        if producers.is_empty() {
-            continue;
-        }
-        let mut best: Option<Candidate> = None;
-        let mut cyclic = false;
-        let mut cyclic_in_recipe = false;
-        for &u in producers {
-            let unit = &kb.units[u];
-            if unit.input_nodes().any(|n| n == node) {
-                continue; // the unit needs what it makes: it only passes the object on
-            }
-            let same_recipe = match parent {
-                Some(p) => index.share_recipe(u, p),
-                None => prefer.is_some_and(|p| index.sources(u).contains(&p)),
-            };
-            if unit.input_nodes().any(|n| s.depends_on(kb, n, node)) {
-                cyclic = true;
-                cyclic_in_recipe |= same_recipe;
-                continue; // would close a cycle
-            }
-            let mut candidate = Candidate {
-                unit: u,
-                reused: s.in_tree.contains(u),
-                same_recipe,
-                g: None,
-            };
-            let better = match best.as_mut() {
-                None => true,
-                Some(b) => candidate.beats(b, kb, scorer),
-            };
-            if better {
-                best = Some(candidate);
-            }
-        }
-        let Some(Candidate {
-            unit: u,
-            same_recipe,
-            ..
-        }) = best
-        else {
-            if cyclic && !cyclic_in_recipe {
-                blocked.push(node);
-            }
-            continue;
-        };
-        if cyclic_in_recipe && !same_recipe {
-            // the recipe only makes it again later (a lid put back): it had it from the start, and
-            // another recipe's way of making it would bring that recipe along
-            continue;
-        }
-        if !allowed(u) {
-            return None;
-        }
-        s.chosen.insert(node, u);
-        s.made.insert(node);
-        s.in_tree.insert(u);
-        s.inputs.clear();
-        s.inputs.extend(kb.units[u].input_nodes());
-        s.inputs.sort_unstable();
-        for &n in &s.inputs {
-            if !s.visited.put(n) {
-                s.queue.push_back((n, Some(u)));
-            }
-        }
-    }
-    let units = s.execution_order(kb, root);
-    Some(Retrieved {
-        units,
-        chosen: std::mem::take(&mut s.chosen),
-        blocked,
-    })
 }
