@@ -600,6 +600,29 @@ fn an_override_replaces_the_equivalent_and_is_marked() {
 }
 
 #[test]
+fn a_utensil_named_ingredient_offers_alternatives_and_is_planned_as_the_one_picked() {
+    // FOON's cooking spray is a can holding oil: not an ingredient, but the user may say which it is
+    let sim = Pairs(&[("cooking spray", "lettuce", 0.6)]);
+    let asked = r#"{"query": {"type": "salad", "ingredients": [
+        {"object": "tomato", "state": "sliced"}, {"object": "cooking spray", "state": "oily"}]}}"#;
+    let p = plan_of(BOTH, &sim, asked);
+    let o = outcome(&p, "cooking spray");
+    assert_eq!(o.status, Status::Unplannable);
+    assert!(o
+        .reason
+        .as_deref()
+        .unwrap()
+        .contains("utensil or container"));
+    let offered: Vec<&str> = o.alternatives.iter().map(|a| a.label.as_str()).collect();
+    assert_eq!(offered, ["lettuce"]);
+    let picked = asked.replace("]}}", r#"]}, "overrides": {"cooking spray": "lettuce"}}"#);
+    let p = plan_of(BOTH, &sim, &picked);
+    let o = outcome(&p, "cooking spray");
+    assert_eq!(o.status, Status::Planned, "{:?}", o.reason);
+    assert_eq!(goal_contents(&p), ["cooking spray", "tomato"]);
+}
+
+#[test]
 fn without_modification_the_reference_tree_is_returned_as_retrieved() {
     let request = r#"{"query": {"type": "salad", "ingredients": [
         {"object": "zucchini", "state": "sliced"}, {"object": "tomato", "state": "sliced"}]},

@@ -166,13 +166,6 @@ pub(crate) fn modify<'kb>(
             reasons: Vec::new(),
             label: o.to_string(),
         };
-        if is_utensil(o) {
-            w.reasons.push(format!(
-                "'{o}' is a utensil or container, not an ingredient"
-            ));
-            works.push(w);
-            continue;
-        }
         let Some((eq, sim)) = equivalent(ctx, o, &reference_labels, &mut w) else {
             works.push(w);
             continue;
@@ -436,6 +429,15 @@ fn equivalent(
         };
         w.alternatives = alternatives(v);
         return Some((v.clone(), sim));
+    }
+    // a name FOON gives a utensil or container (a cooking spray holds the oil) is planned only as the
+    // ingredient the user picks for it, from the alternatives offered
+    if is_utensil(o) {
+        w.alternatives = alternatives("");
+        w.reasons.push(format!(
+            "'{o}' is a utensil or container in FOON, not an ingredient: pick the ingredient it stands for (an override) to plan it"
+        ));
+        return None;
     }
     if ctx.index.is_label(o) {
         w.alternatives = alternatives(o);
