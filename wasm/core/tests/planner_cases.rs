@@ -1725,6 +1725,105 @@ S\tin\t[pot]
     );
 }
 
+#[test]
+fn butter_only_a_list_names_goes_and_the_pot_is_not_opened_before_it_is_used() {
+    // FOON's "contain {butter}" makes no node of the butter: it is an ingredient all the same, and not
+    // asked for, it leaves every list. The pot of rice it told apart is then made twice, poured and
+    // uncovered again: the stir needs it as poured, the serving as uncovered.
+    let buttered = "//
+O\tpot\t0
+S\tcontain\t{butter}
+O\trice\t1
+S\tuncooked
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{butter,rice}
+O\trice\t1
+S\tuncooked
+S\tin\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{butter,rice}
+O\trice\t1
+S\tuncooked
+S\tin\t[pot]
+O\tspoon\t1
+M\tstir\t<Assumed>
+O\tpot\t0
+S\tcontains\t{butter,rice}
+O\trice\t1
+S\ttoasted
+S\tin\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{butter,rice}
+O\tpot lid\t1
+M\tcover\t<Assumed>
+O\tpot\t0
+S\tcontains\t{butter,rice}
+S\tcovered
+O\tpot lid\t1
+S\ton\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{butter,rice}
+S\tcovered
+O\trice\t1
+S\ttoasted
+S\tin\t[pot]
+M\tsimmer\t<Assumed>
+O\tpot\t0
+S\tcontains\t{rice}
+S\tcovered
+O\trice\t1
+S\tcooked
+S\tin\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{rice}
+S\tcovered
+O\tpot lid\t1
+S\ton\t[pot]
+M\tuncover\t<Assumed>
+O\tpot\t0
+S\tcontains\t{rice}
+O\tpot lid\t1
+//
+O\tpot\t0
+S\tcontains\t{rice}
+O\trice\t1
+S\tcooked
+S\tin\t[pot]
+O\tbowl\t0
+S\tempty
+M\tscoop and pour\t<Assumed>
+O\trice soup\t1\t1
+S\tcontains\t{butter,rice}
+S\tin\t[bowl]
+//
+";
+    let p = plan_of(
+        &[("recipe.txt", buttered)],
+        &ExactMatch,
+        &query("soup", &[("rice", "uncooked")]),
+    );
+    assert_eq!(
+        p.steps,
+        [
+            "Pour the rice into the pot.",
+            "Stir the rice in the pot.",
+            "Cover the pot with the pot lid.",
+            "Simmer the rice in the pot.",
+            "Uncover the pot.",
+            "Scoop and pour the rice into the bowl.",
+        ],
+        "{:#?}",
+        units(&p)
+    );
+    assert_eq!(p.removed, ["butter"]);
+    assert_eq!(goal_contents(&p), ["rice"]);
+}
+
 /// Sauces poured from their bottles (recorded as "sauce" only once poured) and a tomato blended into one.
 const SAUCES: &str = "//
 O\tketchup\t1

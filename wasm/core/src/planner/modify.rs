@@ -244,7 +244,7 @@ pub(crate) fn modify<'kb>(
             .filter(|w| w.planned)
             .map(|w| w.label.clone())
             .collect();
-        removed = prune(tree, &keep);
+        removed = prune(tree, &keep, &requested);
         tree.drop_unneeded();
         let present = tree.ingredient_labels();
         // an asked-for ingredient whose units served only pruned ones (butter spread on the bread that
@@ -1263,11 +1263,12 @@ fn namesake(tree: &Tree, order: &[TUnitId], live: &[SlotId]) -> (Vec<SlotId>, Ve
     (slots, dish_side)
 }
 
-/// Removes every starting ingredient not asked for, with the units that only served it; containers that
-/// held it pass on unchanged, and it leaves every `contains {…}` list. Returns the removed labels.
+/// Removes every starting ingredient not asked for (`keep`: planned so far; `requested`: the query's
+/// names, some still to be brought in), with the units that only served it; containers that held it
+/// pass on unchanged, and it leaves every `contains {…}` list. Returns the removed labels.
 /// A dish named after one of its ingredients (black beans cooked from black beans) keeps its name: from
 /// the unit that makes it on, the name means the dish, and nodes and lists there stay.
-fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
+fn prune(tree: &mut Tree, keep: &BTreeSet<String>, requested: &HashSet<&str>) -> Vec<String> {
     let order = tree.order();
     let live: Vec<SlotId> = tree.live_slots().collect();
     // only the labels that go are copied
@@ -1276,6 +1277,17 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>) -> Vec<String> {
         .filter(|&&x| !tree.produced(x) && !tree.slots[x].utensil)
         .map(|&x| tree.slots[x].node.label.as_str())
         .collect();
+    // names that only the lists of starting nodes give are ingredients too (FOON's "contain {butter}"
+    // makes no node of the butter a skillet holds, and the french toast made in it lists butter): not
+    // asked for, they go. A name a unit's output lists first is made there (the egg white a crack
+    // leaves in the bowl).
+    // (asked-for names are set aside first: they are nearly all a starting node lists)
+    let named = |item: &str| live.iter().any(|&x| tree.slots[x].node.label == item);
+    for &x in live.iter().filter(|&&x| !tree.produced(x)) {
+        let unnamed =
+            |item: &&str| !requested.contains(item) && !keep.contains(*item) && !named(item);
+        starting.extend(tree.slots[x].node.listed().filter(unnamed));
+    }
     starting.sort_unstable();
     starting.dedup();
     let mut pruned: BTreeSet<String> = starting

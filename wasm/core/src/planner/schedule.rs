@@ -244,10 +244,70 @@ impl Needs {
                 }
             }
         }
-        Needs {
+        let mut needs = Needs {
             from: offsets(units.len(), edges.iter().map(|e| e.0)),
             edges,
+        };
+        let remade = (0..vals.start.len()).filter(|&x| first[x + 1] - first[x] > 1);
+        for x in remade {
+            needs.first_making(units, shapes, x, &makers[first[x]..first[x + 1]]);
         }
+        needs
+    }
+
+    /// A value made again by a unit that needs one of its takers (the open pot made again by the uncover,
+    /// after the cover took it): a unit that needs none of the takers the making again needs waits for
+    /// the first making only (the rice is stirred in the pot once poured, before it is covered).
+    fn first_making(&mut self, units: &[TUnitId], shapes: &Shapes, x: Value, makers: &[usize]) {
+        let takes = |u: TUnitId| {
+            shapes.inputs(u).binary_search(&x).is_ok()
+                && shapes.outputs(u).binary_search(&x).is_err()
+        };
+        let takers: Vec<bool> = units.iter().map(|&u| takes(u)).collect();
+        let again: Vec<usize> = makers
+            .iter()
+            .copied()
+            .filter(|&m| self.needs_any(m, &takers, x))
+            .collect();
+        if again.is_empty() || again.len() == makers.len() {
+            return;
+        }
+        // the takers the making again comes after (the cover, not a stir that FOON has keep the pot)
+        let detour: Vec<bool> = (0..units.len())
+            .map(|t| takers[t] && again.iter().any(|&m| self.needs(m, t, x)))
+            .collect();
+        let early: Vec<bool> = (0..units.len())
+            .map(|c| !self.needs_any(c, &detour, x))
+            .collect();
+        let before = self.edges.len();
+        self.edges
+            .retain(|&(c, m, v)| !(v == x && early[c] && again.contains(&m)));
+        if self.edges.len() != before {
+            self.from = offsets(self.from.len() - 1, self.edges.iter().map(|e| e.0));
+        }
+    }
+
+    /// Whether unit `from` is, or needs (directly or through others), unit `to`, other than for `x`.
+    fn needs(&self, from: usize, to: usize, x: Value) -> bool {
+        let mut target = vec![false; self.from.len() - 1];
+        target[to] = true;
+        self.needs_any(from, &target, x)
+    }
+
+    /// Whether unit `from` is, or needs (directly or through others), a unit `targets` marks, other than
+    /// for the value `x` itself.
+    fn needs_any(&self, from: usize, targets: &[bool], x: Value) -> bool {
+        let mut seen = vec![false; targets.len()];
+        let mut stack = vec![from];
+        while let Some(v) = stack.pop() {
+            if targets[v] {
+                return true;
+            }
+            if !std::mem::replace(&mut seen[v], true) {
+                stack.extend(self.of(v).iter().filter(|e| e.2 != x).map(|e| e.1));
+            }
+        }
+        false
     }
 
     fn of(&self, v: usize) -> &[(usize, usize, Value)] {
