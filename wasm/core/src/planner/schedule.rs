@@ -2,10 +2,12 @@
 //! rather than on the tree's slots. Two slots with the same value are the same node to a reader: a recipe
 //! that takes "bowl contains {flour}" from the kitchen while another unit of the plan makes exactly that
 //! bowl must come after that unit. So every unit is ordered after every unit that makes one of its
-//! inputs; where that leaves the order free, the units that use a node and give it back as it was come
-//! before the one that changes it (stir in the open pot, then cover it). When that is impossible (a state cycle: the pan is greased again by a unit that needs the
-//! greased pan first), the node counts as available from the start and the later unit no longer lists
-//! it as a product. The goal is never in the kitchen at the start: a unit that needs it before it is made
+//! inputs, save a value made again after a detour (a pot poured, covered, uncovered): units that do not
+//! follow the detour wait for its first making. Where that leaves the order free, the units that use a
+//! node and give it back as it was come before the one that changes it (stir in the open pot, then cover
+//! it). When that is impossible (a state cycle: the pan is greased again by a unit that needs the greased
+//! pan first), the node counts as available from the start and the later unit no longer lists it as a
+//! product. The goal is never in the kitchen at the start: a unit that needs it before it is made
 //! is dropped. Duplicated units and units whose products nobody uses are dropped.
 
 use super::check::available_at_start;
@@ -272,7 +274,8 @@ impl Needs {
         if again.is_empty() || again.len() == makers.len() {
             return;
         }
-        // the takers the making again comes after (the cover, not a stir that FOON has keep the pot)
+        // the takers the making again comes after: the cover, not every taker (FOON's stir takes the pot
+        // without giving it back, and the uncover does not need it)
         let detour: Vec<bool> = (0..units.len())
             .map(|t| takers[t] && again.iter().any(|&m| self.needs(m, t, x)))
             .collect();
