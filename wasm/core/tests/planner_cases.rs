@@ -1824,6 +1824,56 @@ S\tin\t[bowl]
     assert_eq!(goal_contents(&p), ["rice"]);
 }
 
+#[test]
+fn a_bowl_emptied_by_pruning_is_not_poured() {
+    // the salt is not asked for: its bowl, empty, pours nothing into the pot, and the pour goes (though
+    // FOON's pot is no longer hot after it)
+    let salted = "//
+O\tpot\t0
+S\tempty
+O\tonion\t1
+S\tchopped
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{onion}
+S\thot
+//
+O\tbowl\t1
+S\tcontains\t{salt}
+O\tsalt\t1
+S\tin\t[bowl]
+O\tpot\t0
+S\tcontains\t{onion}
+S\thot
+M\tpour\t<Assumed>
+O\tbowl\t1
+S\tempty
+O\tpot\t0
+S\tcontains\t{onion,salt}
+//
+O\tpot\t0
+S\tcontains\t{onion,salt}
+M\tboil\t<Assumed>
+O\tonion soup\t1\t1
+S\tcooked
+S\tcontains\t{onion,salt}
+S\tin\t[pot]
+//
+";
+    let p = plan_of(
+        &[("recipe.txt", salted)],
+        &ExactMatch,
+        &query("soup", &[("onion", "chopped")]),
+    );
+    assert_eq!(p.removed, ["salt"]);
+    assert_eq!(
+        p.steps,
+        ["Pour the onion into the pot.", "Boil the onion in the pot."],
+        "{:#?}",
+        units(&p)
+    );
+}
+
 /// Sauces poured from their bottles (recorded as "sauce" only once poured) and a tomato blended into one.
 const SAUCES: &str = "//
 O\tketchup\t1

@@ -11,7 +11,7 @@ use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
 use crate::similarity::Similarity;
-use crate::taxonomy::{dish_class_name, is_utensil};
+use crate::taxonomy::{dish_class_name, is_transfer_motion, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::borrow::Cow;
@@ -1216,10 +1216,13 @@ fn drop_contents(tree: &mut Tree, drops: &dyn Fn(SlotId, &str) -> bool) {
 /// Whether a unit with these inputs handles any ingredient: a non-utensil input or a listed content
 /// (`gone` marks the slots pruned).
 fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &[bool]) -> bool {
-    inputs.iter().any(|&(x, _)| {
-        let slot = &tree.slots[x];
-        !gone[x] && (!slot.utensil || slot.node.holds_something())
-    })
+    inputs.iter().any(|&(x, _)| handles(tree, x, gone))
+}
+
+/// Whether a slot is an ingredient or holds one (`gone` marks the slots pruned).
+fn handles(tree: &Tree, x: SlotId, gone: &[bool]) -> bool {
+    let slot = &tree.slots[x];
+    !gone[x] && (!slot.utensil || slot.node.holds_something())
 }
 
 /// The slots of the ingredient the dish is named after (black beans cooked from black beans): those of
@@ -1312,8 +1315,12 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>, requested: &HashSet<&str>) ->
     let mut gone = vec![false; tree.slots.len()];
     // per unit, whether it handled an ingredient before pruning
     let mut had = vec![false; tree.units.len()];
+    // per unit, whether something it moved did
+    let mut moved_food = vec![false; tree.units.len()];
     for &u in &order {
-        had[u] = handles_any(tree, &tree.units[u].inputs, &gone);
+        let inputs = &tree.units[u].inputs;
+        had[u] = handles_any(tree, inputs, &gone);
+        moved_food[u] = inputs.iter().any(|&(x, m)| m && handles(tree, x, &gone));
     }
     // the dish's own name stays in the lists of its side, where it means the dish
     drop_contents(tree, &|x, item| {
@@ -1359,7 +1366,16 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>, requested: &HashSet<&str>) ->
                 .iter()
                 .any(|i| i.0 == o.0 || tree.slots[i.0].node == tree.slots[o.0].node)
         });
-        if (lost_all || no_op || outputs.is_empty()) && !makes_goal {
+        // a transfer whose moved things all lost their food (an empty bowl poured into the pot) moves
+        // nothing, and gives back only things of the names it took
+        let label = |x: SlotId| tree.slots[x].node.label.as_str();
+        let moves_nothing = moved_food[u]
+            && is_transfer_motion(&tree.units[u].motion)
+            && !inputs.iter().any(|&(x, m)| m && handles(tree, x, &gone))
+            && outputs
+                .iter()
+                .all(|o| inputs.iter().any(|i| label(i.0) == label(o.0)));
+        if (lost_all || no_op || moves_nothing || outputs.is_empty()) && !makes_goal {
             tree.units[u].alive = false;
             for &(x, _) in &outputs {
                 let utensil = tree.slots[x].utensil;
