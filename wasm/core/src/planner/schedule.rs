@@ -266,10 +266,11 @@ impl Needs {
                 && shapes.outputs(u).binary_search(&x).is_err()
         };
         let takers: Vec<bool> = units.iter().map(|&u| takes(u)).collect();
+        let mut walk = Walk::new(units.len());
         let again: Vec<usize> = makers
             .iter()
             .copied()
-            .filter(|&m| self.needs_any(m, &takers, x))
+            .filter(|&m| self.needs_any(&mut walk, m, x, |v| takers[v]))
             .collect();
         if again.is_empty() || again.len() == makers.len() {
             return;
@@ -277,10 +278,15 @@ impl Needs {
         // the takers the making again comes after: the cover, not every taker (FOON's stir takes the pot
         // without giving it back, and the uncover does not need it)
         let detour: Vec<bool> = (0..units.len())
-            .map(|t| takers[t] && again.iter().any(|&m| self.needs(m, t, x)))
+            .map(|t| {
+                takers[t]
+                    && again
+                        .iter()
+                        .any(|&m| self.needs_any(&mut walk, m, x, |v| v == t))
+            })
             .collect();
         let early: Vec<bool> = (0..units.len())
-            .map(|c| !self.needs_any(c, &detour, x))
+            .map(|c| !self.needs_any(&mut walk, c, x, |v| detour[v]))
             .collect();
         let before = self.edges.len();
         self.edges
@@ -290,27 +296,18 @@ impl Needs {
         }
     }
 
-    /// Whether unit `from` is, or needs (directly or through others), unit `to`, other than for `x`.
-    fn needs(&self, from: usize, to: usize, x: Value) -> bool {
-        let mut target = vec![false; self.from.len() - 1];
-        target[to] = true;
-        self.needs_any(from, &target, x)
-    }
-
-    /// Whether unit `from` is, or needs (directly or through others), a unit `targets` marks, other than
-    /// for the value `x` itself.
-    fn needs_any(&self, from: usize, targets: &[bool], x: Value) -> bool {
-        let mut seen = vec![false; targets.len()];
-        let mut stack = vec![from];
-        while let Some(v) = stack.pop() {
-            if targets[v] {
-                return true;
-            }
-            if !std::mem::replace(&mut seen[v], true) {
-                stack.extend(self.of(v).iter().filter(|e| e.2 != x).map(|e| e.1));
-            }
-        }
-        false
+    /// Whether unit `from` is, or needs (directly or through others, other than for the value `x`), a
+    /// unit `found` accepts.
+    fn needs_any(
+        &self,
+        walk: &mut Walk,
+        from: usize,
+        x: Value,
+        found: impl Fn(usize) -> bool,
+    ) -> bool {
+        walk.finds(from, found, |v, next| {
+            next.extend(self.of(v).iter().filter(|e| e.2 != x).map(|e| e.1));
+        })
     }
 
     fn of(&self, v: usize) -> &[(usize, usize, Value)] {
@@ -431,8 +428,13 @@ fn users_before_change(units: &[TUnitId], shapes: &Shapes, arcs: &mut Vec<(usize
     passed.dedup();
     // the arcs added, apart from the sorted ones until the end
     let mut added: Vec<(usize, usize)> = Vec::new();
-    let mut seen = vec![false; units.len()];
-    let mut stack = Vec::new();
+    let mut walk = Walk::new(units.len());
+    // along the arcs (sorted) and those added, from a unit to those after it
+    let after = |v: usize, next: &mut Vec<usize>, added: &[(usize, usize)]| {
+        let out = arcs.partition_point(|a| a.0 < v)..arcs.partition_point(|a| a.0 <= v);
+        next.extend(arcs[out].iter().map(|a| a.1));
+        next.extend(added.iter().filter(|a| a.0 == v).map(|a| a.1));
+    };
     for (c, &u) in units.iter().enumerate() {
         let outputs = shapes.outputs(u);
         for &x in shapes.inputs(u) {
@@ -441,7 +443,8 @@ fn users_before_change(units: &[TUnitId], shapes: &Shapes, arcs: &mut Vec<(usize
             }
             let from = passed.partition_point(|e| e.0 < x);
             for &(_, p) in passed[from..].iter().take_while(|e| e.0 == x) {
-                if p != c && !reaches(arcs, &added, c, p, &mut seen, &mut stack) {
+                // never closing a cycle: `p` must not come after `c` already
+                if p != c && !walk.finds(c, |v| v == p, |v, next| after(v, next, &added)) {
                     added.push((p, c));
                 }
             }
@@ -454,31 +457,41 @@ fn users_before_change(units: &[TUnitId], shapes: &Shapes, arcs: &mut Vec<(usize
     }
 }
 
-/// Whether `to` can be reached from `from` along `arcs` (sorted) and `added` (`seen` and `stack` are
-/// buffers).
-fn reaches(
-    arcs: &[(usize, usize)],
-    added: &[(usize, usize)],
-    from: usize,
-    to: usize,
-    seen: &mut [bool],
-    stack: &mut Vec<usize>,
-) -> bool {
-    seen.fill(false);
-    stack.clear();
-    stack.push(from);
-    while let Some(v) = stack.pop() {
-        if v == to {
-            return true;
+/// Buffers for walks over the units by position: a flag per unit, and the units still to visit.
+struct Walk {
+    seen: Vec<bool>,
+    stack: Vec<usize>,
+}
+
+impl Walk {
+    fn new(n: usize) -> Walk {
+        Walk {
+            seen: vec![false; n],
+            stack: Vec::new(),
         }
-        if std::mem::replace(&mut seen[v], true) {
-            continue;
-        }
-        let out = arcs.partition_point(|a| a.0 < v)..arcs.partition_point(|a| a.0 <= v);
-        stack.extend(arcs[out].iter().map(|a| a.1));
-        stack.extend(added.iter().filter(|a| a.0 == v).map(|a| a.1));
     }
-    false
+
+    /// Whether a walk from `from`, going on from each unit to those `next` adds, comes to a unit `found`
+    /// accepts.
+    fn finds(
+        &mut self,
+        from: usize,
+        found: impl Fn(usize) -> bool,
+        next: impl Fn(usize, &mut Vec<usize>),
+    ) -> bool {
+        self.seen.fill(false);
+        self.stack.clear();
+        self.stack.push(from);
+        while let Some(v) = self.stack.pop() {
+            if found(v) {
+                return true;
+            }
+            if !std::mem::replace(&mut self.seen[v], true) {
+                next(v, &mut self.stack);
+            }
+        }
+        false
+    }
 }
 
 /// Strongly connected components of the "needs" graph (Tarjan, iterative): a component id per unit.
