@@ -1369,9 +1369,10 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>, requested: &HashSet<&str>) ->
         // a transfer whose moved things all lost their food (an empty bowl poured into the pot) moves
         // nothing, and gives back only things of the names it took
         let label = |x: SlotId| tree.slots[x].node.label.as_str();
+        // (the motion's words, the dearest test, last: few units lose all they moved)
         let moves_nothing = moved_food[u]
-            && is_transfer_motion(&tree.units[u].motion)
             && !inputs.iter().any(|&(x, m)| m && handles(tree, x, &gone))
+            && is_transfer_motion(&tree.units[u].motion)
             && outputs
                 .iter()
                 .all(|o| inputs.iter().any(|i| label(i.0) == label(o.0)));
