@@ -251,7 +251,7 @@ impl<'kb> Tree<'kb> {
     }
 
     /// Adds retrieved units (all of `r.units`, in order); `slot_of` maps knowledge-base nodes to slots
-    /// that already stand for them.
+    /// that already stand for them, no two nodes to one slot.
     pub fn add_retrieved(
         &mut self,
         kb: &'kb KnowledgeBase,
@@ -268,8 +268,6 @@ impl<'kb> Tree<'kb> {
         self.slots.reserve(objects);
         self.producer.reserve(objects);
         self.units.reserve(r.units.len());
-        // (node, its slot, the tree unit) for each node and the unit chosen to make it
-        let mut made: Vec<(NodeId, SlotId, TUnitId)> = Vec::with_capacity(r.units.len() + 4);
         for &u in &r.units {
             let unit = &kb.units[u];
             let tu = self.units.len();
@@ -285,8 +283,10 @@ impl<'kb> Tree<'kb> {
                 .iter()
                 .map(|o| {
                     let s = self.kb_slot(kb, o.node, slot_of);
-                    if r.chosen.get(&o.node) == Some(&u) {
-                        made.push((o.node, s, tu));
+                    // `slot_of` gives no two nodes one slot: the unit chosen for a node makes its slot,
+                    // unless the slot had a maker already
+                    if r.chosen.get(&o.node) == Some(&u) && self.producer[s].is_none() {
+                        self.producer[s] = Some(tu);
                     }
                     (s, o.moves)
                 })
@@ -299,13 +299,6 @@ impl<'kb> Tree<'kb> {
                 sources: Some(&kb.provenance[u]),
                 alive: true,
             });
-        }
-        // in node order: when nodes share a slot, the first node's unit makes it
-        made.sort_unstable();
-        for (_, s, tu) in made {
-            if self.producer[s].is_none() {
-                self.producer[s] = Some(tu);
-            }
         }
     }
 
