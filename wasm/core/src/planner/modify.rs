@@ -1414,12 +1414,15 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>, requested: &HashSet<&str>) ->
         unit.outputs.clone_from(&outputs);
     }
     // the goal may have been passed through a removed unit
-    // labels made only by removed units leave the lists of contents as well
-    let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
-    with_units.retain(|l| !still.iter().any(|&x| tree.slots[x].node.label == *l));
+    // labels made only by removed units leave the lists of contents as well (the slots still live are
+    // listed only when there are such labels)
     if !with_units.is_empty() {
-        drop_contents(tree, &|_, item| with_units.contains(item));
-        pruned.extend(with_units);
+        let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
+        with_units.retain(|l| !still.iter().any(|&x| tree.slots[x].node.label == *l));
+        if !with_units.is_empty() {
+            drop_contents(tree, &|_, item| with_units.contains(item));
+            pruned.extend(with_units);
+        }
     }
     if namesake {
         pruned.insert(dish.to_string());
