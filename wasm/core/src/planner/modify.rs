@@ -1273,13 +1273,17 @@ fn namesake(tree: &Tree, order: &[TUnitId], live: &[SlotId]) -> (Vec<SlotId>, Ve
 /// the unit that makes it on, the name means the dish, and nodes and lists there stay.
 fn prune(tree: &mut Tree, keep: &BTreeSet<String>, requested: &HashSet<&str>) -> Vec<String> {
     let order = tree.order();
-    let live: Vec<SlotId> = tree.live_slots().collect();
+    // sized once (the slots bound the live ones, and these names and the names listed with them
+    // nearly always): a filtered list would grow step by step
+    let mut live: Vec<SlotId> = Vec::with_capacity(tree.slots.len());
+    live.extend(tree.live_slots());
     // only the labels that go are copied
-    let mut starting: Vec<&str> = live
-        .iter()
-        .filter(|&&x| !tree.produced(x) && !tree.slots[x].utensil)
-        .map(|&x| tree.slots[x].node.label.as_str())
-        .collect();
+    let mut starting: Vec<&str> = Vec::with_capacity(tree.slots.len());
+    starting.extend(
+        live.iter()
+            .filter(|&&x| !tree.produced(x) && !tree.slots[x].utensil)
+            .map(|&x| tree.slots[x].node.label.as_str()),
+    );
     // names that only the lists of starting nodes give are ingredients too (FOON's "contain {butter}"
     // makes no node of the butter a skillet holds, and the french toast made in it lists butter): not
     // asked for, they go. A name a unit's output lists first is made there (the egg white a crack

@@ -458,12 +458,14 @@ impl<'kb> Tree<'kb> {
     /// Ingredient labels in the tree (not utensils, not the goal's own label), sorted and unique.
     pub fn ingredient_labels(&self) -> Vec<&str> {
         let goal = self.slots[self.goal].node.label.as_str();
-        let mut labels: Vec<&str> = self
-            .live_slots()
-            .filter(|&s| !self.slots[s].utensil)
-            .map(|s| self.slots[s].node.label.as_str())
-            .filter(|&l| l != goal)
-            .collect();
+        // sized once (the slots bound it): a filtered list would grow step by step
+        let mut labels: Vec<&str> = Vec::with_capacity(self.slots.len());
+        labels.extend(
+            self.live_slots()
+                .filter(|&s| !self.slots[s].utensil)
+                .map(|s| self.slots[s].node.label.as_str())
+                .filter(|&l| l != goal),
+        );
         // an ingredient's slots often follow each other: fewer names to sort
         labels.dedup();
         labels.sort_unstable();
