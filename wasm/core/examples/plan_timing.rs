@@ -3,7 +3,9 @@
 //! `cargo run --release --example plan_timing -- [rounds]` (`FOON_DIR` for another FOON folder); under
 //! `perf record` or `valgrind --tool=callgrind` for a profile.
 
-use foon_core::{plan, write_plan_json, EmbeddingSimilarity, PlanRequest, PlannerIndex, Query};
+use foon_core::{
+    plan, write_plan_json, EmbeddingSimilarity, Plan, PlanRequest, PlannerIndex, Query,
+};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -30,6 +32,15 @@ fn dev_queries(dir: &Path) -> Vec<Query> {
         .iter()
         .map(|p| serde_json::from_slice(&std::fs::read(p).unwrap()).expect("query JSON"))
         .collect()
+}
+
+/// The plan's JSON into `text` (cleared), as the WASM layer writes it, then the plan dropped: a
+/// function of its own, for a profile of the output side (`--toggle-collect='*write_json*'`).
+#[inline(never)]
+fn write_json(p: Plan, text: &mut Vec<u8>) -> usize {
+    text.clear();
+    write_plan_json(&p, text);
+    text.len()
 }
 
 fn main() {
@@ -64,11 +75,7 @@ fn main() {
             let started = Instant::now();
             let p = plan(&kb, &index, &sim, &PlanRequest::new(q.clone()));
             // as the WASM layer writes it: into one buffer kept from plan to plan
-            let json = p.map(|p| {
-                text.clear();
-                write_plan_json(&p, &mut text);
-                text.len()
-            });
+            let json = p.map(|p| write_json(p, &mut text));
             times.push(started.elapsed().as_secs_f64() * 1e3);
             std::hint::black_box(json.ok());
         }
