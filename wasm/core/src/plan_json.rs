@@ -67,48 +67,78 @@ macro_rules! key {
     };
 }
 
-/// Whether JSON needs the byte escaped: a quote, a backslash, a control character.
-fn escaped(b: u8) -> bool {
-    b < 0x20 || b == b'"' || b == b'\\'
+/// Whether JSON needs any of the bytes escaped (a quote, a backslash, a control character), eight at a
+/// time: nearly every text needs none, and most are too short for a loop over bytes to be cheap.
+fn needs_escape(bytes: &[u8]) -> bool {
+    // a byte repeated eight times
+    let each = |b: u8| u64::from_le_bytes([b; 8]);
+    // in a word, a byte below `n` (at most 0x80) makes the subtraction set a top bit that no byte had
+    // (`!w`); with every byte at `n` or above, none is. A quote or a backslash is a zero after the xor.
+    let below = |w: u64, n: u8| w.wrapping_sub(each(n));
+    let any = |w: u64| {
+        let hit = below(w, 0x20) | below(w ^ each(b'"'), 1) | below(w ^ each(b'\\'), 1);
+        (hit & !w & each(0x80)) != 0
+    };
+    let n = bytes.len();
+    let half = |at: usize| u64::from(u32::from_le_bytes(bytes[at..at + 4].try_into().unwrap()));
+    // shorter than a word: overlapping pieces of it, or the first, middle and last byte with letters
+    match n {
+        0 => false,
+        1..=3 => any(u64::from(bytes[0])
+            | u64::from(bytes[n / 2]) << 8
+            | u64::from(bytes[n - 1]) << 16
+            | u64::from_le_bytes([0, 0, 0, b'a', b'a', b'a', b'a', b'a'])),
+        4..=7 => any(half(0) | half(n - 4) << 32),
+        _ => {
+            let (words, rest) = bytes.as_chunks::<8>();
+            words.iter().any(|w| any(u64::from_le_bytes(*w)))
+                || !rest.is_empty() && any(u64::from_le_bytes(bytes[n - 8..].try_into().unwrap()))
+        }
+    }
 }
 
 impl Json for str {
     fn write(&self, out: &mut Vec<u8>) {
         let bytes = self.as_bytes();
-        // nearly every text needs no escape: one pass over all of it (no early exit, so that the
-        // compiler compares many bytes at once), then one copy
-        if !bytes.iter().fold(false, |any, &b| any | escaped(b)) {
-            out.reserve(bytes.len() + 2);
-            out.push(b'"');
-            out.extend_from_slice(bytes);
-            out.push(b'"');
-            return;
+        if needs_escape(bytes) {
+            return write_escaped(bytes, out);
         }
+        out.reserve(bytes.len() + 2);
         out.push(b'"');
-        let mut run = 0;
-        for (i, &b) in bytes.iter().enumerate() {
-            let escape: &[u8] = match b {
-                b'"' => b"\\\"",
-                b'\\' => b"\\\\",
-                b'\n' => b"\\n",
-                b'\r' => b"\\r",
-                b'\t' => b"\\t",
-                0x08 => b"\\b",
-                0x0c => b"\\f",
-                0..=0x1f => b"\\u00",
-                _ => continue,
-            };
-            out.extend_from_slice(&bytes[run..i]);
-            out.extend_from_slice(escape);
-            if escape == b"\\u00" {
-                const HEX: &[u8; 16] = b"0123456789abcdef";
-                out.extend_from_slice(&[HEX[usize::from(b >> 4)], HEX[usize::from(b & 15)]]);
-            }
-            run = i + 1;
-        }
-        out.extend_from_slice(&bytes[run..]);
+        out.extend_from_slice(bytes);
         out.push(b'"');
     }
+}
+
+/// A text that needs escapes, copied in runs between them: a function of its own, so that the
+/// common case above saves and restores few registers.
+#[cold]
+#[inline(never)]
+fn write_escaped(bytes: &[u8], out: &mut Vec<u8>) {
+    out.push(b'"');
+    let mut run = 0;
+    for (i, &b) in bytes.iter().enumerate() {
+        let escape: &[u8] = match b {
+            b'"' => b"\\\"",
+            b'\\' => b"\\\\",
+            b'\n' => b"\\n",
+            b'\r' => b"\\r",
+            b'\t' => b"\\t",
+            0x08 => b"\\b",
+            0x0c => b"\\f",
+            0..=0x1f => b"\\u00",
+            _ => continue,
+        };
+        out.extend_from_slice(&bytes[run..i]);
+        out.extend_from_slice(escape);
+        if escape == b"\\u00" {
+            const HEX: &[u8; 16] = b"0123456789abcdef";
+            out.extend_from_slice(&[HEX[usize::from(b >> 4)], HEX[usize::from(b & 15)]]);
+        }
+        run = i + 1;
+    }
+    out.extend_from_slice(&bytes[run..]);
+    out.push(b'"');
 }
 
 impl Json for String {
@@ -354,5 +384,29 @@ impl Json for Units<'_> {
                 .end();
         }
         out.push(b']');
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// Byte by byte, the bytes JSON escapes.
+    fn escaped(b: u8) -> bool {
+        b < 0x20 || b == b'"' || b == b'\\'
+    }
+
+    #[test]
+    fn needs_escape_finds_any_byte_at_any_place() {
+        for len in 0..=24 {
+            for fill in [b'a', b' ', b'!', b'#', b']', 0x7f, 0x80, 0xff] {
+                for at in 0..len {
+                    for b in 0..=u8::MAX {
+                        let mut text = vec![fill; len];
+                        text[at] = b;
+                        assert_eq!(super::needs_escape(&text), escaped(b), "{text:?}");
+                    }
+                }
+                assert!(!super::needs_escape(&vec![fill; len]));
+            }
+        }
     }
 }
