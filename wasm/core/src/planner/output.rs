@@ -34,7 +34,10 @@ pub(crate) fn plan_node(n: &ObjectNode) -> PlanNode {
     PlanNode {
         label: n.label.clone(),
         states: n.states.iter().map(State::text).collect(),
-        ingredients: n.ingredients(),
+        // one `contains` list (nearly every node) is sorted and unique already: copied as it is
+        ingredients: n
+            .contents_list()
+            .map_or_else(|| n.ingredients(), <[SmolStr]>::to_vec),
         container: n.container().map(SmolStr::from),
     }
 }
