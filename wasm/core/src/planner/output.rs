@@ -64,10 +64,14 @@ pub(crate) fn build(p: Parts) -> Plan {
         })
         .collect();
     let goal_node = &tree.slots[tree.goal].node;
+    let mut relations = Relations {
+        tree,
+        known: Vec::new(),
+    };
     let mut objects = Vec::new();
     let mut steps: Vec<String> = order
         .iter()
-        .map(|&u| sentence(tree, u, &mut objects))
+        .map(|&u| sentence(tree, u, &mut objects, &mut relations))
         .collect();
     tell_apart(tree, order, &mut steps);
     let uses = Uses::new(tree, order);
@@ -79,7 +83,7 @@ pub(crate) fn build(p: Parts) -> Plan {
             continue;
         }
         done.push(&o.object);
-        if let Some(line) = progress_line(tree, order, &uses, &o.object, &mut slots) {
+        if let Some(line) = progress_line(order, &uses, &o.object, &mut slots, &mut relations) {
             progress_lines.push(line);
         }
     }
@@ -216,13 +220,14 @@ fn location(n: &ObjectNode) -> SmolStr {
 /// The ingredient's states and places from its starting node, the motions between them, and the dish.
 /// `slots`: a buffer reused from line to line (the slots the line passes through, then the vessels
 /// `product_of` follows).
-fn progress_line(
-    tree: &Tree,
+fn progress_line<'t>(
     order: &[TUnitId],
     uses: &Uses,
     label: &str,
     slots: &mut Vec<SlotId>,
+    relations: &mut Relations<'t>,
 ) -> Option<ProgressLine> {
+    let tree = relations.tree;
     // its first slot, and the first used of those no unit makes (one pass over the labels)
     let (mut first, mut start) = (None, None::<SlotId>);
     for &x in &uses.live {
@@ -313,7 +318,7 @@ fn progress_line(
                         let n = &tree.slots[o].node;
                         let state = if tree.slots[o].utensil {
                             // put in a vessel as it was: the same state, a new place
-                            let rel = relation_to(tree, &n.label);
+                            let rel = relations.to(&n.label);
                             ProgressState {
                                 physical_state: states[states.len() - 1].physical_state.clone(),
                                 location: joined([rel, n.label.as_str()].into_iter(), " "),
@@ -470,6 +475,24 @@ fn container_of<'n>(n: &'n ObjectNode, objects: &[&str]) -> Option<(&'n str, &'n
     })
 }
 
+/// How things are put in each container, found once per container: a plan asks about a few
+/// containers many times, and each answer looks through every slot.
+struct Relations<'t> {
+    tree: &'t Tree<'t>,
+    known: Vec<(&'t str, &'t str)>,
+}
+
+impl<'t> Relations<'t> {
+    fn to(&mut self, container: &'t str) -> &'t str {
+        if let Some(&(_, rel)) = self.known.iter().find(|k| k.0 == container) {
+            return rel;
+        }
+        let rel = relation_to(self.tree, container);
+        self.known.push((container, rel));
+        rel
+    }
+}
+
 /// How things are put in `container`, as the tree's nodes say ("on" a plate, "in" a bowl), else "in".
 /// Food says it first: a lid is on the blender jar, the food in it (a pot says it is on the stove).
 fn relation_to<'t>(tree: &'t Tree, container: &str) -> &'t str {
@@ -492,7 +515,12 @@ fn relation_to<'t>(tree: &'t Tree, container: &str) -> &'t str {
 
 /// One plain sentence for a unit: "Slice the tomato on the cutting board." `objects` is a buffer reused
 /// from sentence to sentence (the sentence's objects, then its tools after them).
-fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> String {
+fn sentence<'t>(
+    tree: &'t Tree,
+    u: TUnitId,
+    objects: &mut Vec<&'t str>,
+    relations: &mut Relations<'t>,
+) -> String {
     let unit = &tree.units[u];
     let node = |x: SlotId| &tree.slots[x].node;
     // the slot's flag rather than a lookup of its label
@@ -604,7 +632,7 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
                 }
                 // poured out of it (with more than tools moving): where it goes is the place
                 if (tools_only || !puts) && !from_elsewhere {
-                    holder = Some((relation_to(tree, &n.label), n.label.as_str()));
+                    holder = Some((relations.to(&n.label), n.label.as_str()));
                 }
             }
         }
@@ -647,7 +675,7 @@ fn sentence<'t>(tree: &'t Tree, u: TUnitId, objects: &mut Vec<&'t str>) -> Strin
                         return None;
                     }
                     if utensil(x) {
-                        return Some((relation_to(tree, &n.label), n.label.as_str()));
+                        return Some((relations.to(&n.label), n.label.as_str()));
                     }
                     container_of(n, objects)
                 })
