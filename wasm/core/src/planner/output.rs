@@ -163,17 +163,18 @@ fn tell_apart(tree: &Tree, order: &[TUnitId], steps: &mut [String]) {
 }
 
 /// Where the progress lines look, found in one pass over the order rather than once per ingredient.
-struct Uses {
-    /// The slots live units use, and the goal, ascending.
-    live: Vec<SlotId>,
+struct Uses<'t> {
+    /// The slots live units use, and the goal, ascending, with their labels (each line compares them
+    /// all: read once here rather than through the slot's node every time).
+    live: Vec<(SlotId, &'t str)>,
     /// Per slot: made by a unit (an output that is not also its input).
     made: Vec<bool>,
     /// Per slot: the position of the first unit using it (`usize::MAX` for none).
     first_use: Vec<usize>,
 }
 
-impl Uses {
-    fn new(tree: &Tree, order: &[TUnitId]) -> Uses {
+impl<'t> Uses<'t> {
+    fn new(tree: &'t Tree, order: &[TUnitId]) -> Uses<'t> {
         let mut made = vec![false; tree.slots.len()];
         let mut first_use = vec![usize::MAX; tree.slots.len()];
         for (pos, &u) in order.iter().enumerate().rev() {
@@ -186,7 +187,10 @@ impl Uses {
             }
         }
         Uses {
-            live: tree.live_slots().collect(),
+            live: tree
+                .live_slots()
+                .map(|x| (x, tree.slots[x].node.label.as_str()))
+                .collect(),
             made,
             first_use,
         }
@@ -230,8 +234,8 @@ fn progress_line<'t>(
     let tree = relations.tree;
     // its first slot, and the first used of those no unit makes (one pass over the labels)
     let (mut first, mut start) = (None, None::<SlotId>);
-    for &x in &uses.live {
-        if tree.slots[x].node.label != label {
+    for &(x, l) in &uses.live {
+        if l != label {
             continue;
         }
         first.get_or_insert(x);
