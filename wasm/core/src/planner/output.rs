@@ -457,10 +457,14 @@ const HANDLES: &[&str] = &[
 
 /// Whether a motion moves things into a place ("pour into the bowl", "tear and place onto the tray").
 fn moves_into(motion: &str) -> bool {
-    motion.contains("pour")
-        || motion.contains("place")
-        || PUT_MOTIONS.contains(&motion)
-        || motion == "add"
+    // a motion is a few bytes: each place compared, without the setup of `str::contains`
+    let has = |word: &[u8]| {
+        motion
+            .as_bytes()
+            .windows(word.len())
+            .any(|w| w[0] == word[0] && w == word)
+    };
+    has(b"pour") || has(b"place") || PUT_MOTIONS.contains(&motion) || motion == "add"
 }
 
 /// Where a node is (`in [bowl]` as ("in", "bowl"), `attached to [mixer]` as ("to", "mixer")), unless
