@@ -197,17 +197,13 @@ impl<'t> Uses<'t> {
     }
 }
 
-/// The parts with `sep` between them, in a string of exactly their size (`concat` and `join` take a
-/// slower, general path for these few short pieces).
-fn joined<'a>(parts: impl Iterator<Item = &'a str> + Clone, sep: &str) -> SmolStr {
-    let len = parts.clone().map(|p| p.len() + sep.len()).sum::<usize>();
-    let mut out = SmolStrBuilder::with_capacity(len.saturating_sub(sep.len()));
-    for (k, p) in parts.enumerate() {
-        if k > 0 {
-            out.push_str(sep);
-        }
-        out.push_str(p);
-    }
+/// "in bowl": two words, in a string of exactly their size (`concat` and `join` take a slower,
+/// general path for these few short pieces).
+fn spaced(first: &str, second: &str) -> SmolStr {
+    let mut out = SmolStrBuilder::with_capacity(first.len() + 1 + second.len());
+    out.push_str(first);
+    out.push_str(" ");
+    out.push_str(second);
     out.finish()
 }
 
@@ -215,7 +211,7 @@ fn location(n: &ObjectNode) -> SmolStr {
     n.states
         .iter()
         .find_map(|s| match &s.arg {
-            Some(StateArg::Container(c)) => Some(joined([s.name.as_str(), c].into_iter(), " ")),
+            Some(StateArg::Container(c)) => Some(spaced(&s.name, c)),
             _ => None,
         })
         .unwrap_or_default()
@@ -325,11 +321,11 @@ fn progress_line<'t>(
                             let rel = relations.to(&n.label);
                             ProgressState {
                                 physical_state: states[states.len() - 1].physical_state.clone(),
-                                location: joined([rel, n.label.as_str()].into_iter(), " "),
+                                location: spaced(rel, &n.label),
                             }
                         } else {
                             ProgressState {
-                                physical_state: joined(["in", n.label.as_str()].into_iter(), " "),
+                                physical_state: spaced("in", &n.label),
                                 location: location(n),
                             }
                         };
