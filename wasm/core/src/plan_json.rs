@@ -103,7 +103,6 @@ impl Json for str {
         if needs_escape(bytes) {
             return write_escaped(bytes, out);
         }
-        out.reserve(bytes.len() + 2);
         out.push(b'"');
         out.extend_from_slice(bytes);
         out.push(b'"');
