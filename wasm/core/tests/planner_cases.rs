@@ -1256,7 +1256,7 @@ O\tbowl\t0
 S\tcontains\t{tomato}
 M\tpour\t<Assumed>
 O\tbowl\t0
-S\tcontains\t{onion,tomato}
+S\tcontains\t{garlic,onion,tomato}
 //
 O\tolive\t1
 S\twhole
@@ -1264,7 +1264,7 @@ S\tin\t[jar]
 O\toil\t1
 S\tin\t[bottle]
 O\tbowl\t0
-S\tcontains\t{onion,tomato}
+S\tcontains\t{garlic,onion,tomato}
 M\tpour\t<Assumed>
 O\tolive\t1
 S\twhole
@@ -1571,7 +1571,7 @@ S\tcontains\t{bay leaf,onion}
     let p = plan_of(
         &[("recipe.txt", jarred)],
         &ExactMatch,
-        &query("soup", &[("onion", "chopped")]),
+        &query("soup", &[("onion", "chopped"), ("bacon", "whole")]),
     );
     assert_eq!(p.removed, ["bay leaf"]);
     assert!(
@@ -1863,7 +1863,7 @@ S\tin\t[pot]
     let p = plan_of(
         &[("recipe.txt", salted)],
         &ExactMatch,
-        &query("soup", &[("onion", "chopped")]),
+        &query("soup", &[("onion", "chopped"), ("bacon", "whole")]),
     );
     assert_eq!(p.removed, ["salt"]);
     assert_eq!(
@@ -2054,6 +2054,140 @@ fn the_ingredient_a_dish_is_named_after_is_pruned_when_not_asked_for_and_the_dis
     assert!(p.removed.is_empty(), "{:?}", p.removed);
     assert!(
         makes(&p, "pour", "black bean", "in [pot]"),
+        "{:#?}",
+        units(&p)
+    );
+}
+
+/// A soup blended in a jar, in whose recipe the jar full of tomato is also covered and uncovered again:
+/// FOON names the uncovered jar by its values, so the node the pour makes is also made by the uncover,
+/// from a covered jar that only the cover makes from it.
+const COVERED_AND_UNCOVERED: &str = "//
+O\ttomato\t1
+S\twhole
+O\tknife\t1
+M\tchop\t<Assumed>
+O\ttomato\t1
+S\tchopped
+//
+O\tonion\t1
+S\twhole
+O\tknife\t1
+M\tchop\t<Assumed>
+O\tonion\t1
+S\tchopped
+//
+O\tgarlic\t1
+S\twhole
+O\tknife\t1
+M\tchop\t<Assumed>
+O\tgarlic\t1
+S\tchopped
+//
+O\tblender jar\t0
+S\tempty
+O\ttomato\t1
+S\tchopped
+O\tonion\t1
+S\tchopped
+O\tgarlic\t1
+S\tchopped
+M\tpour\t<Assumed>
+O\tblender jar\t0
+S\tcontains\t{garlic,onion,tomato}
+//
+O\tblender jar\t0
+S\tcontains\t{garlic,onion,tomato}
+O\tblender cover\t1
+M\tcover\t<Assumed>
+O\tblender jar\t0
+S\tcontains\t{garlic,onion,tomato}
+S\tcovered\t[blender cover]
+O\tblender cover\t1
+S\ton\t[blender jar]
+//
+O\tblender jar\t0
+S\tcontains\t{garlic,onion,tomato}
+S\tcovered\t[blender cover]
+O\tblender cover\t1
+S\ton\t[blender jar]
+M\tuncover\t<Assumed>
+O\tblender jar\t0
+S\tcontains\t{garlic,onion,tomato}
+O\tblender cover\t1
+//
+O\tblender jar\t0
+S\tcontains\t{garlic,onion,tomato}
+M\tblend\t<Assumed>
+O\ttomato soup\t1\t1
+S\tblended
+S\tin\t[blender jar]
+//
+";
+
+#[test]
+fn a_node_is_made_the_way_that_starts_from_what_exists_not_by_undoing_a_change_made_from_it() {
+    // the uncover needs fewer inputs made than the pour, but the covered jar it needs is made only from
+    // the jar full of tomato it would make: chosen, the plan would uncover a jar nothing has covered
+    let p = plan_of(
+        &[("recipe.txt", COVERED_AND_UNCOVERED)],
+        &ExactMatch,
+        &query(
+            "soup",
+            &[("tomato", "whole"), ("onion", "whole"), ("garlic", "whole")],
+        ),
+    );
+    let motions: Vec<&str> = p.units.iter().map(|u| u.motion.as_str()).collect();
+    assert!(motions.contains(&"pour"), "{:#?}", units(&p));
+    assert!(
+        !motions.iter().any(|m| *m == "cover" || *m == "uncover"),
+        "{:#?}",
+        units(&p)
+    );
+}
+
+#[test]
+fn a_tool_that_opens_a_container_is_what_it_is_opened_with() {
+    // FOON moves the packet and the scissors, and no food: the packet is cut open, not the scissors
+    let packet = "//
+O\tpacket\t1
+S\tsealed
+S\tcontains\t{bacon}
+O\tscissors\t1
+M\tcut open\t<Assumed>
+O\tpacket\t1
+S\topened
+S\tcontains\t{bacon}
+//
+O\tpacket\t1
+S\topened
+S\tcontains\t{bacon}
+O\tbacon\t1
+S\tin\t[packet]
+O\tpan\t0
+S\tempty
+M\tpick-and-place\t<Assumed>
+O\tpan\t0
+S\tcontains\t{bacon}
+//
+O\tpan\t0
+S\tcontains\t{bacon}
+O\tonion\t1
+S\tchopped
+M\tfry\t<Assumed>
+O\tbacon soup\t1\t1
+S\tfried
+S\tin\t[pan]
+//
+";
+    let p = plan_of(
+        &[("recipe.txt", packet)],
+        &ExactMatch,
+        &query("soup", &[("onion", "chopped"), ("bacon", "whole")]),
+    );
+    assert_eq!(
+        p.steps.first().map(String::as_str),
+        Some("Cut open the packet with the scissors."),
         "{:#?}",
         units(&p)
     );

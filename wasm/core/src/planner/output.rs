@@ -641,6 +641,16 @@ fn sentence<'t>(
             }
         }
     }
+    // what moved, the tools it moved with aside ("Cut open the packet with the scissors")
+    let mut with_tools = false;
+    if objects.is_empty() {
+        for &(x, m) in &unit.inputs {
+            if m && !tool(x) {
+                push(objects, &node(x).label);
+                with_tools = true;
+            }
+        }
+    }
     if objects.is_empty() {
         for &(x, m) in &unit.inputs {
             if m {
@@ -725,7 +735,7 @@ fn sentence<'t>(
     let moved = objects.len();
     for &(x, m) in &unit.inputs {
         let n = node(x);
-        if (!m || holder.is_some() || closed || from_elsewhere)
+        if (!m || holder.is_some() || closed || from_elsewhere || with_tools)
             && utensil(x)
             && n.states.is_empty()
             && !objects[..moved].contains(&n.label.as_str())

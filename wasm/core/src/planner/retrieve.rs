@@ -144,6 +144,9 @@ struct Candidate {
     reused: bool,
     /// Of the recipe of the unit that needs the node (of the preferred subgraph at the root).
     same_recipe: bool,
+    /// Whether the unit needs a node that only the node being made can be made into (a jar uncovered
+    /// that only its covering made): asked only when the preferences before it tie.
+    detour: Option<bool>,
     /// g(u), asked only when the preferences before it tie: most nodes have a single producer, and g
     /// needs the query's similarities to every ingredient of the unit.
     g: Option<f32>,
@@ -154,10 +157,37 @@ impl Candidate {
         *self.g.get_or_insert_with(|| scorer.unit(self.unit))
     }
 
-    /// Whether this candidate is preferred to `best`: a unit already in the tree, then one of the
-    /// reference recipe (so that the tree stays one coherent recipe), then g(u); ties go to fewer
-    /// inputs to make, then to the smaller id (ids follow contents, not file order).
-    fn beats(&mut self, best: &mut Candidate, kb: &KnowledgeBase, scorer: &Scorer) -> bool {
+    /// FOON names a node by its values, so an object put back as it was (a lid taken off again) is the
+    /// node it was before: the unit undoing the change makes it from a node that only the change makes.
+    /// Chosen, it would leave that node made by nothing, used before the object was ever changed.
+    fn detour(&mut self, kb: &KnowledgeBase, index: &PlannerIndex, node: NodeId) -> bool {
+        let unit = self.unit;
+        *self.detour.get_or_insert_with(|| {
+            kb.units[unit].input_nodes().any(|i| {
+                let makers = kb.producers.get(i).map_or(&[][..], Vec::as_slice);
+                i != node
+                    && !kb.kitchen.get(i).copied().unwrap_or(true)
+                    && !index.starts_in_recipe_of(unit, i)
+                    && !makers.is_empty()
+                    && makers
+                        .iter()
+                        .all(|&p| kb.units[p].input_nodes().any(|n| n == node))
+            })
+        })
+    }
+
+    /// Whether this candidate, making `node`, is preferred to `best`: a unit already in the tree, then
+    /// one of the reference recipe (so that the tree stays one coherent recipe), then one that is no
+    /// detour, then g(u); ties go to fewer inputs to make, then to the smaller id (ids follow contents,
+    /// not file order).
+    fn beats(
+        &mut self,
+        best: &mut Candidate,
+        node: NodeId,
+        kb: &KnowledgeBase,
+        index: &PlannerIndex,
+        scorer: &Scorer,
+    ) -> bool {
         let made = |u: UnitId| {
             kb.units[u]
                 .input_nodes()
@@ -166,6 +196,10 @@ impl Candidate {
         };
         let ord = (self.reused, self.same_recipe)
             .cmp(&(best.reused, best.same_recipe))
+            .then_with(|| {
+                best.detour(kb, index, node)
+                    .cmp(&self.detour(kb, index, node))
+            })
             .then_with(|| self.g(scorer).total_cmp(&best.g(scorer)))
             .then_with(|| made(best.unit).cmp(&made(self.unit)))
             .then(best.unit.cmp(&self.unit));
@@ -257,11 +291,12 @@ pub(crate) fn retrieve_within(
                     unit: u,
                     reused: s.in_tree.contains(u),
                     same_recipe,
+                    detour: None,
                     g: None,
                 };
                 let better = match best.as_mut() {
                     None => true,
-                    Some(b) => candidate.beats(b, kb, scorer),
+                    Some(b) => candidate.beats(b, node, kb, index, scorer),
                 };
                 if better {
                     best = Some(candidate);
