@@ -335,6 +335,59 @@ fn a_state_of_the_same_category_counts_as_matched() {
     );
 }
 
+/// A carrot soup (class 1) that grates one carrot and chops another.
+const CARROTS: &str = "//
+O\tcarrot\t1
+S\twhole
+O\tgrater\t1
+M\tgrate\t<Assumed>
+O\tcarrot\t1
+S\tgrated
+//
+O\tcarrot\t1
+S\twhole
+O\tknife\t1
+M\tchop\t<Assumed>
+O\tcarrot\t1
+S\tchopped
+//
+O\tpot\t0
+S\tempty
+O\tcarrot\t1
+S\tgrated
+O\tcarrot\t1
+S\tchopped
+M\tboil\t<Assumed>
+O\tcarrot soup\t1\t1
+S\tcooked
+S\tcontains\t{carrot}
+S\tin\t[pot]
+//
+";
+
+#[test]
+fn a_state_word_of_the_same_kind_is_preferred_to_others_of_its_category() {
+    // chopped is the finely cut state salads use most, but shredded carrot is grated carrot
+    let files = [("salad.txt", SALAD), ("carrots.txt", CARROTS)];
+    let p = plan_of(
+        &files,
+        &SIM,
+        &query("salad", &[("lettuce", "chopped"), ("carrot", "shredded")]),
+    );
+    let o = outcome(&p, "carrot");
+    assert_eq!(o.matched.as_ref().unwrap().state, "grated", "{o:#?}");
+    assert!(makes(&p, "grate", "carrot", "grated"), "{:#?}", units(&p));
+    assert!(!makes(&p, "chop", "carrot", "chopped"), "{:#?}", units(&p));
+    // in the tree: minced lettuce is the tree's chopped lettuce, and the reason says why
+    let p = salad(&[("lettuce", "minced")]);
+    let o = outcome(&p, "lettuce");
+    assert_eq!(o.case, Some(1));
+    assert_eq!(
+        o.reason.as_deref(),
+        Some("state 'minced' matched by 'chopped', a word for the same state")
+    );
+}
+
 #[test]
 fn case_4_renames_and_grafts_from_the_tree() {
     let p = salad(&[("tomato", "sliced"), ("romaine", "whole")]);

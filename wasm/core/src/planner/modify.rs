@@ -4,7 +4,7 @@
 use super::index::{Picks, PlannerIndex};
 use super::retrieve::{retrieve, retrieve_within};
 use super::states::{
-    category, food_state_category, has_food_state, is_food_state, state_text, Category,
+    akin, category, food_state_category, has_food_state, is_food_state, kind, state_text, Category,
 };
 use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
 use crate::kb::KnowledgeBase;
@@ -359,17 +359,19 @@ fn settle_state<'kb>(
             "state '{s}' is not in the state taxonomy: kept the tree's state"
         ));
     } else if let Some(x) = in_state.filter(|_| best_exact(tree, slots, s).is_none()) {
+        let node = &tree.slots[x].node;
         let c = category(s);
-        let as_sold = sold == Some(c) && !has_food_state(&tree.slots[x].node);
-        w.reasons.push(format!(
-            "state '{s}' matched by category ({}){}",
-            c.name(),
-            if as_sold {
-                format!(": '{eq}' comes {}", sold_words(c))
-            } else {
-                String::new()
-            }
-        ));
+        let as_sold = sold == Some(c) && !has_food_state(node);
+        w.reasons
+            .push(match node.physical_states().find(|p| akin(p, s)) {
+                Some(same) => format!("state '{s}' matched by '{same}', a word for the same state"),
+                None if as_sold => format!(
+                    "state '{s}' matched by category ({}): '{eq}' comes {}",
+                    c.name(),
+                    sold_words(c)
+                ),
+                None => format!("state '{s}' matched by category ({})", c.name()),
+            });
     }
     if !state_ok {
         if let Some(first) = restated.get(o) {
@@ -530,7 +532,18 @@ fn best_exact(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
         .find(|&x| tree.slots[x].node.physical_states().any(|p| p == s))
 }
 
-/// Of a label's live slots, one in the state `s`: exactly, else by category; a starting state matches a
+/// Of a label's live slots, the first in a state akin to `s` (shredded for grated).
+fn best_akin(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
+    let k = kind(s)?;
+    slots.iter().copied().find(|&x| {
+        tree.slots[x]
+            .node
+            .physical_states()
+            .any(|p| kind(p) == Some(k))
+    })
+}
+
+/// Of a label's live slots, one in the state `s`: exactly, else in a state of its kind, else by category; a starting state matches a
 /// leaf in a starting state; a node without food states matches a state of the category its ingredient is
 /// sold in (`sold`: milk in a cup is liquid milk); a state outside the taxonomy matches any.
 fn best_state_slot(
@@ -539,7 +552,7 @@ fn best_state_slot(
     s: &str,
     sold: Option<Category>,
 ) -> Option<SlotId> {
-    if let Some(x) = best_exact(tree, slots, s) {
+    if let Some(x) = best_exact(tree, slots, s).or_else(|| best_akin(tree, slots, s)) {
         return Some(x);
     }
     let c = category(s);
@@ -873,8 +886,9 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
     Some(new_x)
 }
 
-/// Knowledge-base nodes of `eq` for state `s`, best first: same state, else same category (ties: the
-/// state most frequent in recipes of the dish class, then overall), preferring nodes without a place.
+/// Knowledge-base nodes of `eq` for state `s`, best first: same state, else one of its kind (grated for
+/// shredded), else same category (ties: the state most frequent in recipes of the dish class, then
+/// overall), preferring nodes without a place.
 /// The flag says whether the node is in the wanted state (else it is the ingredient as bought).
 /// Remembered by the index: the ranking follows from the knowledge base alone, the same in every plan.
 fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Picks {
@@ -889,6 +903,7 @@ fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Picks {
 fn rank_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
     let c = category(s);
     type Key = (
+        bool,
         bool,
         bool,
         bool,
@@ -914,6 +929,7 @@ fn rank_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
             }
         }
         let exact = food.contains(&s);
+        let kin = food.iter().any(|f| akin(f, s));
         let cat = c != Category::Other && cats.contains(&c);
         // a node saying nothing of its food is as bought: whole, unless its ingredient is sold otherwise
         let raw = c.is_starting()
@@ -927,6 +943,7 @@ fn rank_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
         let bare = node.container().is_none() && !node.holds_something();
         let key = (
             exact,
+            kin,
             cat,
             !node.holds_something(),
             bare,

@@ -97,19 +97,42 @@ impl Category {
     }
 }
 
-fn table() -> &'static HashMap<String, Category> {
-    static TABLE: OnceLock<HashMap<String, Category>> = OnceLock::new();
+/// A listed state word's category and kind (words of one kind say the same of the food).
+#[derive(Clone, Copy)]
+struct Entry {
+    category: Category,
+    kind: Option<&'static str>,
+}
+
+fn table() -> &'static HashMap<String, Entry> {
+    static TABLE: OnceLock<HashMap<String, Entry>> = OnceLock::new();
     TABLE.get_or_init(|| {
         STATES_TSV
             .lines()
             .map(str::trim)
             .filter(|l| !l.is_empty() && !l.starts_with('#'))
             .filter_map(|l| {
-                let (state, cat) = l.split_once('\t')?;
-                Some((normalize_word(state), Category::parse(cat.trim())?))
+                let mut columns = l.split('\t');
+                let state = columns.next()?;
+                let category = Category::parse(columns.next()?.trim())?;
+                let kind = columns.next().map(str::trim);
+                Some((normalize_word(state), Entry { category, kind }))
             })
             .collect()
     })
+}
+
+/// The kind a state word is listed with (shredded and grated are of the kind "grated"), if any.
+pub(crate) fn kind(state: &str) -> Option<&'static str> {
+    let t = table();
+    t.get(state)
+        .or_else(|| t.get(&normalize_word(state)))
+        .and_then(|e| e.kind)
+}
+
+/// Whether two state words say the same of the food: equal, or of one kind (shredded and grated).
+pub(crate) fn akin(a: &str, b: &str) -> bool {
+    a == b || kind(a).is_some_and(|k| kind(b) == Some(k))
 }
 
 /// The category of a state word (normalised or not). Unlisted words are classified by their parts
@@ -119,8 +142,8 @@ pub fn category(state: &str) -> Category {
     thread_local! {
         static SEEN: RefCell<HashMap<String, Category>> = RefCell::new(HashMap::default());
     }
-    if let Some(c) = table().get(state) {
-        return *c;
+    if let Some(e) = table().get(state) {
+        return e.category;
     }
     if let Some(c) = SEEN.with(|m| m.borrow().get(state).copied()) {
         return c;
@@ -144,14 +167,14 @@ const MAX_REMEMBERED_STATE: usize = 64;
 
 fn classify(state: &str) -> Category {
     let word = normalize_word(state);
-    if let Some(c) = table().get(&word) {
-        return *c;
+    if let Some(e) = table().get(&word) {
+        return e.category;
     }
     // the last listed word decides ("finely chopped", "cooked and sliced")
     let mut found = None;
     for part in word.split([' ', '-', ',']) {
-        if let Some(c) = table().get(part) {
-            found = Some(*c);
+        if let Some(e) = table().get(part) {
+            found = Some(e.category);
         }
     }
     found.unwrap_or(Category::Other)
@@ -232,6 +255,17 @@ mod tests {
         assert!(Category::Cooked.reaches(Category::Cut));
         assert!(!Category::Mixed.reaches(Category::Cut));
         assert!(!Category::Ground.reaches(Category::FinelyCut));
+    }
+
+    #[test]
+    fn states_of_one_kind_are_akin_and_others_of_their_category_are_not() {
+        assert!(akin("shredded", "grated"));
+        assert!(akin("minced", "chopped"));
+        assert!(akin("sliced", "sliced"));
+        assert!(!akin("shredded", "chopped"));
+        assert_eq!(category("shredded"), category("chopped"));
+        assert!(!akin("whole", "raw"));
+        assert!(!akin("spaceship", "grated"));
     }
 
     #[test]
