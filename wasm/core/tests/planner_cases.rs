@@ -2245,3 +2245,57 @@ S\tin\t[pan]
         units(&p)
     );
 }
+
+#[test]
+fn an_egg_is_not_blended_before_it_is_cracked() {
+    // the omelette cracks the egg into white and yolk and beats those: an egg asked for as a thick liquid
+    // cannot be blended whole first
+    let omelette = "//
+O\tegg\t1
+S\twhole
+O\tbowl\t0
+S\tempty
+M\tcrack\t<Assumed>
+O\tegg white\t1
+S\tin\t[bowl]
+O\tegg yolk\t1
+S\tin\t[bowl]
+O\tbowl\t0
+S\tcontains\t{egg white,egg yolk}
+//
+O\tbowl\t0
+S\tcontains\t{egg white,egg yolk}
+O\tegg white\t1
+S\tin\t[bowl]
+O\tegg yolk\t1
+S\tin\t[bowl]
+O\twhisk\t1
+M\tbeat\t<Assumed>
+O\tomelette\t1\t3
+S\tbeaten
+S\tin\t[bowl]
+//
+O\tegg\t1
+S\twhole
+O\tblender\t0
+M\tblend\t<Assumed>
+O\tegg\t1
+S\tliquid
+//
+";
+    let p = plan_of(
+        &[("omelette.txt", omelette)],
+        &ExactMatch,
+        &query("omelette", &[("egg", "thick liquid")]),
+    );
+    assert!(
+        p.units.iter().all(|u| u.motion != "blend"),
+        "{:#?}",
+        units(&p)
+    );
+    assert_eq!(p.steps.len(), 2, "{:#?}", p.steps);
+    assert_eq!(
+        outcome(&p, "egg").reason.as_deref(),
+        Some("state 'thick liquid' not given: 'crack' makes the egg into egg white and egg yolk first, which the tree takes on")
+    );
+}

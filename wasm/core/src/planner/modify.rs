@@ -715,6 +715,34 @@ fn restate<'kb>(
         (goes_on && food_category(ctx, &tree.slots[x].node).reaches(c)).then_some((x, u))
     });
     let from = cut.map_or(leaf, |(x, _)| x);
+    // a whole food its first use opens into other foods (an egg cracked into white and yolk) is not
+    // blended or cooked before: those foods are what go on
+    if cut.is_none() && !SEPARATION.contains(&c) {
+        let opened = tree.consumers(from, &order).find(|&v| {
+            tree.units[v].outputs.iter().all(|&(y, _)| {
+                let n = &tree.slots[y].node;
+                n.label != o && n.contents().all(|i| i != o)
+            }) && tree.units[v]
+                .outputs
+                .iter()
+                .any(|&(y, _)| !tree.slots[y].utensil && !tree.slots[y].node.holds_something())
+        });
+        if let Some(v) = opened {
+            let unit = &tree.units[v];
+            let foods: Vec<&str> = unit
+                .outputs
+                .iter()
+                .map(|&(y, _)| &tree.slots[y])
+                .filter(|x| !x.utensil && !x.node.holds_something())
+                .map(|x| x.node.label.as_str())
+                .collect();
+            return Err(format!(
+                "state '{s}' not given: '{}' makes the {o} into {} first, which the tree takes on",
+                unit.motion,
+                foods.join(" and ")
+            ));
+        }
+    }
     let from_node = tree.slots[from].node.clone();
     let old: Vec<String> = food_states(&from_node)
         .into_iter()
