@@ -543,9 +543,10 @@ fn best_akin(tree: &Tree, slots: &[SlotId], s: &str) -> Option<SlotId> {
     })
 }
 
-/// Of a label's live slots, one in the state `s`: exactly, else in a state of its kind, else by category; a starting state matches a
-/// leaf in a starting state; a node without food states matches a state of the category its ingredient is
-/// sold in (`sold`: milk in a cup is liquid milk); a state outside the taxonomy matches any.
+/// Of a label's live slots, one in the state `s`: exactly, else in a state of its kind, else by category;
+/// a starting state matches a leaf in a starting state; a node without food states matches a state of the
+/// category its ingredient is sold in (`sold`: milk in a cup is liquid milk); a state outside the taxonomy
+/// matches any.
 fn best_state_slot(
     tree: &Tree,
     slots: &[SlotId],
@@ -718,29 +719,25 @@ fn restate<'kb>(
     // a whole food its first use opens into other foods (an egg cracked into white and yolk) is not
     // blended or cooked before: those foods are what go on
     if cut.is_none() && !SEPARATION.contains(&c) {
-        let opened = tree.consumers(from, &order).find(|&v| {
-            tree.units[v].outputs.iter().all(|&(y, _)| {
-                let n = &tree.slots[y].node;
-                n.label != o && n.contents().all(|i| i != o)
-            }) && tree.units[v]
-                .outputs
-                .iter()
-                .any(|&(y, _)| !tree.slots[y].utensil && !tree.slots[y].node.holds_something())
-        });
-        if let Some(v) = opened {
-            let unit = &tree.units[v];
-            let foods: Vec<&str> = unit
-                .outputs
-                .iter()
-                .map(|&(y, _)| &tree.slots[y])
+        for v in tree.consumers(from, &order) {
+            let outputs = tree.units[v].outputs.iter().map(|&(y, _)| &tree.slots[y]);
+            if outputs
+                .clone()
+                .any(|x| x.node.label == o || x.node.contents().any(|i| i == o))
+            {
+                continue;
+            }
+            let foods: Vec<&str> = outputs
                 .filter(|x| !x.utensil && !x.node.holds_something())
                 .map(|x| x.node.label.as_str())
                 .collect();
-            return Err(format!(
-                "state '{s}' not given: '{}' makes the {o} into {} first, which the tree takes on",
-                unit.motion,
-                foods.join(" and ")
-            ));
+            if !foods.is_empty() {
+                return Err(format!(
+                    "state '{s}' not given: '{}' makes the {o} into {} first, which the tree takes on",
+                    tree.units[v].motion,
+                    foods.join(" and ")
+                ));
+            }
         }
     }
     let from_node = tree.slots[from].node.clone();

@@ -163,13 +163,12 @@ impl Candidate {
     fn detour(&mut self, kb: &KnowledgeBase, index: &PlannerIndex, node: NodeId) -> bool {
         let unit = self.unit;
         *self.detour.get_or_insert_with(|| {
+            // a node not in the kitchen has makers (the kitchen holds every node nothing makes)
             kb.units[unit].input_nodes().any(|i| {
-                let makers = kb.producers.get(i).map_or(&[][..], Vec::as_slice);
                 i != node
-                    && !kb.kitchen.get(i).copied().unwrap_or(true)
+                    && !kb.kitchen[i]
                     && !index.starts_in_recipe_of(unit, i)
-                    && !makers.is_empty()
-                    && makers
+                    && kb.producers[i]
                         .iter()
                         .all(|&p| kb.units[p].input_nodes().any(|n| n == node))
             })
