@@ -2257,3 +2257,72 @@ S\tliquid
         Some("state 'thick liquid' not given: 'crack' makes the egg into egg white and egg yolk first, which the tree takes on")
     );
 }
+
+#[test]
+fn a_progress_line_follows_the_food_an_ingredient_went_into_to_the_dish() {
+    // the flour goes into the batter; the batter is poured into the pan and baked into the muffin. A unit
+    // that takes the bowl and gives nothing of it back (a mixer turned on) does not end the line.
+    let muffin = "//
+O\tflour\t1
+S\tin\t[bowl]
+O\tbowl\t0
+S\tcontains\t{flour}
+O\tsugar\t1
+S\tgranulated
+M\tpour\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{flour,sugar}
+//
+O\tbowl\t0
+S\tcontains\t{flour,sugar}
+O\tmixer\t0
+S\toff
+M\tturn on\t<Assumed>
+O\tmixer\t0
+S\ton
+//
+O\tbowl\t0
+S\tcontains\t{flour,sugar}
+O\tmixer\t0
+S\ton
+M\tmix\t<Assumed>
+O\tmuffin batter\t1
+S\tcontains\t{flour,sugar}
+S\tin\t[bowl]
+//
+O\tmuffin batter\t1
+S\tcontains\t{flour,sugar}
+S\tin\t[bowl]
+O\tmuffin pan\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tmuffin batter\t1
+S\tcontains\t{flour,sugar}
+S\tin\t[muffin pan]
+//
+O\tmuffin batter\t1
+S\tcontains\t{flour,sugar}
+S\tin\t[muffin pan]
+O\toven\t0
+S\ton
+M\tbake\t<Assumed>
+O\tmuffin\t1\t3
+S\tcontains\t{flour,sugar}
+S\tbaked
+S\tin\t[muffin pan]
+//
+";
+    let p = recipe_plan(muffin, "cake", &[("flour", "ground"), ("sugar", "ground")]);
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "flour")
+        .unwrap();
+    assert_eq!(line.motion, ["mix", "pour", "bake"], "{line:#?}");
+    assert_eq!(line.end_product, "muffin");
+    let last = line.state.last().unwrap();
+    assert_eq!(
+        (last.physical_state.as_str(), last.location.as_str()),
+        ("in muffin", "in muffin pan")
+    );
+}

@@ -217,9 +217,10 @@ fn location(n: &ObjectNode) -> SmolStr {
         .unwrap_or_default()
 }
 
-/// The ingredient's states and places from its starting node, the motions between them, and the dish.
-/// `slots`: a buffer reused from line to line (the slots the line passes through, then the vessels
-/// `product_of` follows).
+/// The ingredient's states and places from its starting node, the motions between them, and the dish:
+/// once it has gone into a food (flour into the batter), the line follows that food on, to the goal
+/// (the batter poured into the pan and baked into the muffin). `slots`: a buffer reused from line to
+/// line (the slots a walk passes through, then the vessels `product_of` follows).
 fn progress_line<'t>(
     order: &[TUnitId],
     uses: &Uses,
@@ -240,6 +241,71 @@ fn progress_line<'t>(
         }
     }
     let start = start.or(first)?;
+    let mut walked = walk(order, uses, label, start, 0, slots, relations);
+    let mut states = walked.states;
+    let mut motions = walked.motions;
+    let goal = tree.slots[tree.goal].node.label.as_str();
+    let mut end_product = goal;
+    // each food it goes into is followed on; a food is followed once (FOON has cycles of states)
+    let mut followed: Vec<SlotId> = Vec::new();
+    while let Some((pos, x)) = walked.into {
+        let product = tree.slots[x].node.label.as_str();
+        end_product = product;
+        // the dish reached: what is done to it then (cut, plated) is the dish's, not the ingredient's
+        if x == tree.goal || product == goal || followed.contains(&x) || product == label {
+            break;
+        }
+        followed.push(x);
+        walked = walk(order, uses, product, x, pos + 1, slots, relations);
+        for state in walked.states.into_iter().skip(1) {
+            states.push(inside(product, state));
+        }
+        motions.extend(walked.motions);
+    }
+    Some(ProgressLine {
+        ingredient: label.into(),
+        state: states,
+        motion: motions,
+        end_product: end_product.into(),
+    })
+}
+
+/// A state of the food an ingredient went into, as the ingredient's: "[baked @ in pan]" of the batter
+/// is "[in batter, baked @ in pan]" of the flour; "[in muffin @ …]" stays as it is.
+fn inside(product: &str, state: ProgressState) -> ProgressState {
+    if state.physical_state.starts_with("in ") {
+        return state;
+    }
+    let physical_state = if state.physical_state.is_empty() {
+        spaced("in", product)
+    } else {
+        SmolStr::from(format!("in {product}, {}", state.physical_state))
+    };
+    ProgressState {
+        physical_state,
+        location: state.location,
+    }
+}
+
+/// One food's part of a progress line: its states from `start`, the motions between them, and the food
+/// it went into (its position in the order and slot), if any.
+struct Walked {
+    states: Vec<ProgressState>,
+    motions: Vec<SmolStr>,
+    into: Option<(usize, SlotId)>,
+}
+
+/// The states of `label` from slot `start`, through the units of the order from position `from` on.
+fn walk<'t>(
+    order: &[TUnitId],
+    uses: &Uses,
+    label: &str,
+    start: SlotId,
+    mut from: usize,
+    seen: &mut Vec<SlotId>,
+    relations: &mut Relations<'t>,
+) -> Walked {
+    let tree = relations.tree;
     // a line has a few states: one allocation each for them and the motions
     let mut states = Vec::with_capacity(4);
     states.push(ProgressState {
@@ -248,11 +314,9 @@ fn progress_line<'t>(
     });
     let mut motions = Vec::with_capacity(4);
     let mut at = start;
-    let seen = slots;
     seen.clear();
     seen.push(start);
-    let mut from = 0usize;
-    let mut end_product = None;
+    let mut into = None;
     let mut last_step: Option<(usize, TUnitId)> = None;
     loop {
         // no unit before the first to use it takes it
@@ -270,10 +334,17 @@ fn progress_line<'t>(
             Some((pos, u, out))
         });
         let Some((pos, u, out)) = next else {
+            // FOON lists a food in a bowl both as a node of its own and among the bowl's contents:
+            // when no unit takes the node, the units take the bowl
+            if let Some(v) = vessel_holding(tree, uses, at, label).filter(|v| !seen.contains(v)) {
+                seen.push(v);
+                at = v;
+                continue;
+            }
             // its last node sits in a vessel: what the vessel's contents become
             if let Some((pos, u)) = last_step {
                 let unit: &super::tree::TUnit<'_> = &tree.units[u];
-                end_product = unit
+                into = unit
                     .outputs
                     .iter()
                     .map(|o| o.0)
@@ -305,7 +376,7 @@ fn progress_line<'t>(
                         slot.utensil != food && slot.node.contents().any(|i| i == label)
                     })
                 };
-                let into = lists(true).or_else(|| lists(false)).or_else(|| {
+                let entered = lists(true).or_else(|| lists(false)).or_else(|| {
                     let inputs = &tree.units[u].inputs;
                     outputs.iter().find(|o| {
                         let n = &tree.slots[o.0].node;
@@ -313,7 +384,7 @@ fn progress_line<'t>(
                             && !inputs.iter().any(|i| tree.slots[i.0].node.label == n.label)
                     })
                 });
-                match into {
+                match entered {
                     Some(&(o, _)) => {
                         let n = &tree.slots[o].node;
                         let state = if tree.slots[o].utensil {
@@ -343,46 +414,64 @@ fn progress_line<'t>(
                             from = pos + 1;
                             continue;
                         }
-                        end_product = product_of(tree, order, pos, o, label, seen);
+                        into = product_of(tree, order, pos, o, label, seen);
                     }
                     None => {
+                        // a unit that takes it and gives nothing of it back (a mixer turned on
+                        // with the bowl in it): the next unit taking it goes on
                         motions.pop();
+                        from = pos + 1;
+                        continue;
                     }
                 }
                 break;
             }
         }
     }
-    Some(ProgressLine {
-        ingredient: label.into(),
-        state: states,
-        motion: motions,
-        end_product: end_product
-            .unwrap_or(&tree.slots[tree.goal].node.label)
-            .into(),
-    })
+    Walked {
+        states,
+        motions,
+        into,
+    }
+}
+
+/// The vessel that node `at` of `label` says it is in, when the vessel lists `label` among its contents
+/// and some unit uses it: the first used of those.
+fn vessel_holding(tree: &Tree, uses: &Uses, at: SlotId, label: &str) -> Option<SlotId> {
+    let container = tree.slots[at].node.container()?;
+    uses.live
+        .iter()
+        .map(|&(x, _)| x)
+        .filter(|&x| {
+            let slot = &tree.slots[x];
+            slot.utensil
+                && slot.node.label == container
+                && uses.first_use[x] != usize::MAX
+                && slot.node.contents().any(|i| i == label)
+        })
+        .min_by_key(|&x| uses.first_use[x])
 }
 
 /// The product an ingredient goes into (section IV-A): the first food node listing it among its
 /// contents, following the vessel it was put in (flour in the bowl → the batter mixed in that bowl).
-/// `vessels`: a buffer for the vessels holding it.
-fn product_of<'t>(
-    tree: &'t Tree,
+/// `vessels`: a buffer for the vessels holding it. Returns the product's position in the order and slot.
+fn product_of(
+    tree: &Tree,
     order: &[TUnitId],
     pos: usize,
     entered: SlotId,
     label: &str,
     vessels: &mut Vec<SlotId>,
-) -> Option<&'t str> {
+) -> Option<(usize, SlotId)> {
     let lists = |x: SlotId| tree.slots[x].node.contents().any(|i| i == label);
     let food = |x: SlotId| !tree.slots[x].utensil;
     if food(entered) {
-        return Some(&tree.slots[entered].node.label);
+        return Some((pos, entered));
     }
     // a vessel holding it: the first food made from that vessel's contents
     vessels.clear();
     vessels.push(entered);
-    for &u in &order[pos + 1..] {
+    for (at, &u) in order.iter().enumerate().skip(pos + 1) {
         let unit = &tree.units[u];
         if !unit.inputs.iter().any(|i| vessels.contains(&i.0)) {
             continue;
@@ -397,7 +486,7 @@ fn product_of<'t>(
         let listing = unit.outputs.iter().filter(made).find(|o| lists(o.0));
         let fresh = || unit.outputs.iter().filter(made).find(new);
         if let Some(&(x, _)) = listing.or_else(fresh) {
-            return Some(&tree.slots[x].node.label);
+            return Some((at, x));
         }
         vessels.extend(unit.outputs.iter().map(|o| o.0).filter(|&x| lists(x)));
     }
