@@ -8,6 +8,7 @@ pub mod decode;
 pub mod embedding;
 pub mod error;
 pub mod export;
+pub mod foods;
 pub mod kb;
 pub mod label;
 pub mod limits;

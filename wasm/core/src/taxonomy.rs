@@ -18,7 +18,7 @@ pub struct DishClass {
     pub keywords: Vec<String>,
 }
 
-fn data_lines(text: &str) -> impl Iterator<Item = &str> {
+pub(crate) fn data_lines(text: &str) -> impl Iterator<Item = &str> {
     text.lines()
         .map(str::trim)
         .filter(|l| !l.is_empty() && !l.starts_with('#'))

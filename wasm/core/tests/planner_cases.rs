@@ -895,15 +895,20 @@ fn an_ingredient_foon_starts_as_a_liquid_is_not_squeezed_to_be_one() {
         dressed_salad(Some("liquid"), false).ingredients[1].case,
         Some(1)
     );
-    // had FOON's recipes started it whole, the state would be made, with FOON's motion for juice
+    // had FOON's recipes started it whole, FOON's motion for juice would squeeze it: a liquid is not
+    // squeezed (food_forms.tsv), so the vinegar is taken as it is
     let p = dressed_salad(Some("whole"), true);
     let o = outcome(&p, "vinegar");
     assert_eq!(o.case, Some(3), "{o:#?}");
     assert_eq!(
         o.reason.as_deref(),
-        Some("added 'squeeze' to make it 'juice'")
+        Some("state 'juice' not given: vinegar (liquid) is not 'squeeze'; kept the tree's state")
     );
-    assert!(makes(&p, "squeeze", "vinegar", "juice"), "{:#?}", units(&p));
+    assert!(
+        !makes(&p, "squeeze", "vinegar", "juice"),
+        "{:#?}",
+        units(&p)
+    );
     assert_eq!(
         dressed_salad(Some("whole"), false).ingredients[1].case,
         Some(3)
@@ -2325,4 +2330,41 @@ S\tin\t[muffin pan]
         (last.physical_state.as_str(), last.location.as_str()),
         ("in muffin", "in muffin pan")
     );
+}
+
+#[test]
+fn a_state_only_a_motion_the_food_cannot_take_makes_is_not_given() {
+    // FOON grinds peppercorns; butter asked "ground" (a coarse word of the recipe data) is not ground
+    let recipe = "//
+O\tpeppercorn\t1
+S\twhole
+O\tgrinder\t0
+M\tgrind\t<Assumed>
+O\tpeppercorn\t1
+S\tground
+//
+O\tbutter\t1
+S\tin\t[bowl]
+O\tbowl\t0
+S\tcontains\t{butter}
+O\tsugar\t1
+S\tgranulated
+M\tmix\t<Assumed>
+O\tbatter\t1\t3
+S\tcontains\t{butter,sugar}
+S\tin\t[bowl]
+//
+";
+    let p = recipe_plan(
+        recipe,
+        "cake",
+        &[("butter", "ground"), ("sugar", "granulated")],
+    );
+    assert!(
+        p.units.iter().all(|u| u.motion != "grind"),
+        "{:#?}",
+        units(&p)
+    );
+    let reason = outcome(&p, "butter").reason.clone().unwrap_or_default();
+    assert!(reason.contains("butter (fat) is not 'grind'"), "{reason}");
 }

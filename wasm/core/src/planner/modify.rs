@@ -7,6 +7,7 @@ use super::states::{
     akin, category, food_state_category, has_food_state, is_food_state, kind, state_text, Category,
 };
 use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
+use crate::foods;
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
@@ -680,6 +681,11 @@ fn restate<'kb>(
             "no motion in FOON reaches '{s}'; kept the tree's state"
         ));
     };
+    if let Some(why) = cannot_take(o, eq, &motion) {
+        return Err(format!(
+            "state '{s}' not given: {why}; kept the tree's state"
+        ));
+    }
     if SEPARATION.contains(&c) {
         // swap the tree's own cutting step for one reaching the wanted state
         for &u in &order {
@@ -1199,6 +1205,8 @@ fn finish_branch<'kb>(
                 tree.slots[last].node = Cow::Owned(node);
                 chosen_state = s.into();
             }
+        } else if let Some(why) = ctx.index.motion_for(s).and_then(|m| cannot_take(o, eq, &m)) {
+            let _ = write!(how, ", state '{s}' not given: {why}");
         } else if let Some(motion) = ctx.index.motion_for(s) {
             let made = ObjectNode::new(eq, vec![State::plain(s)]);
             let x = add_state_unit(ctx, tree, last, made, &motion);
@@ -1222,6 +1230,15 @@ fn finish_branch<'kb>(
     tree.units[m].origin = Origin::Attached;
     let _ = write!(how, "; added at '{}'", tree.units[m].motion);
     Ok((chosen_state, how))
+}
+
+/// Why the asked food `o` (else its equivalent `eq`, when the food knowledge does not know `o`) cannot
+/// take `motion` ("a powder is not squeezed"), or None when it can: a query's state word that only such a
+/// motion makes is a coarse category of the recipe data (butter "ground", oil "juice").
+fn cannot_take(o: &str, eq: &str, motion: &str) -> Option<String> {
+    let food = if foods::form_of(o).is_some() { o } else { eq };
+    let form = foods::form_of(food)?;
+    (!foods::takes(food, motion)).then(|| format!("{o} ({}) is not '{motion}'", form.name))
 }
 
 /// A node without food states given the starting state `s`.
