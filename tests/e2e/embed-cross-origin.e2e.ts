@@ -30,7 +30,7 @@ const csp = (host: string): string =>
     `frame-src ${host}`,
     // the one rule Cytoscape adds to the page's head (or 'unsafe-inline')
     `style-src 'self' '${CYTOSCAPE_STYLE_HASH}'`,
-    "img-src 'self' data: blob:",
+    "img-src data:",
   ].join("; ");
 
 function coursePage(title: string, body: string): string {
