@@ -4,6 +4,9 @@ import { serviceWorkerManifest } from "./src/worker/sw-build.ts";
 
 const here = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
 
+/** Entries with a fixed name at the top of dist/: the service worker (its scope is its folder) and the widget. */
+const STABLE_ENTRIES = new Set(["sw", "foon-planner"]);
+
 // Pages live in src/ (the project's top level stays as fixed); static assets in public/.
 // Relative base: the built app works from any static sub-path and offline.
 export default defineConfig({
@@ -21,11 +24,16 @@ export default defineConfig({
         main: here("src/index.html"),
         embed: here("src/embed.html"),
         workbench: here("src/workbench.html"),
+        "widget-page": here("src/widget.html"),
+        // the embeddable widget keeps a stable name at the top, for pages on other hosts to link to
+        "foon-planner": here("src/widget/index.ts"),
         // the service worker keeps a fixed name at the top (its scope is the folder it is served from)
         sw: here("src/worker/service-worker.ts"),
       },
+      // foon-planner.js keeps its exports (mount, ...); the pages' entries have none
+      preserveEntrySignatures: "exports-only",
       output: {
-        entryFileNames: (chunk) => (chunk.name === "sw" ? "sw.js" : "assets/[name]-[hash].js"),
+        entryFileNames: (chunk) => (STABLE_ENTRIES.has(chunk.name) ? `${chunk.name}.js` : "assets/[name]-[hash].js"),
       },
     },
   },

@@ -46,10 +46,12 @@ function styles(): CSSStyleSheet {
   return sheet;
 }
 
-/** The bundled knowledge base, next to the built widget's assets folder. */
-export const DEFAULT_KB_URL = new URL(/* @vite-ignore */ "../kb/default.foon", import.meta.url).href;
+// Both are found relative to this script's own URL, never the page's: Vite writes each file's path relative to
+// the built chunk, so the widget finds them from any origin and sub-path it is loaded from.
+/** The bundled knowledge base. */
+export const DEFAULT_KB_URL = new URL("../../public/kb/default.foon", import.meta.url).href;
 /** The bundled food embedding table (substitutes by meaning). */
-export const DEFAULT_EMBEDDINGS_URL = new URL(/* @vite-ignore */ "../data/food-embeddings.bin", import.meta.url).href;
+export const DEFAULT_EMBEDDINGS_URL = new URL("../../public/data/food-embeddings.bin", import.meta.url).href;
 
 export function mount(element: HTMLElement, initial: WidgetOptions = {}, callbacks: MountCallbacks = {}): PlannerHandle {
   const shadow = element.shadowRoot ?? element.attachShadow({ mode: "open" });

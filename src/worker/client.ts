@@ -4,6 +4,7 @@
 import { PlannerError } from "../planner/errors";
 import type { ExportFormat, KnowledgeBaseFile, Plan, PlanRequest } from "../planner/types";
 import type { KnowledgeBaseSource, LoadedKnowledgeBase, WorkerRequest, WorkerResponse } from "./protocol";
+import plannerWorkerUrl from "./planner.worker.ts?worker&url";
 
 /** What a planner worker (or a fake one in tests) must offer the app. */
 export interface PlannerService {
@@ -22,6 +23,9 @@ interface Pending {
   retried: boolean;
 }
 
+const NOT_LOADED =
+  "its script could not be loaded (a planner on another host must send Access-Control-Allow-Origin, and the page's Content-Security-Policy must allow that host in worker-src)";
+
 /** How many restarts within `RESTART_WINDOW_MS` before the client gives up (a worker that cannot start). */
 const MAX_RESTARTS = 3;
 const RESTART_WINDOW_MS = 60_000;
@@ -33,8 +37,25 @@ export interface WorkerPlannerOptions {
   onRestart?: (reason: string) => void;
 }
 
+/** Same-origin module scripts that import a worker script from another origin, one per script URL. */
+const bootstraps = new Map<string, string>();
+
+/**
+ * The planner worker, from the worker script next to this one. A page may not start a worker from another
+ * origin's script (a widget loaded from a planner host), so then it starts a same-origin module worker (a
+ * blob) that imports the real one by its absolute URL: a CORS request, as for any module script. Inside it,
+ * `import.meta.url` is the real script's URL, so the WASM module is still found next to it.
+ */
 function plannerWorker(): Worker {
-  return new Worker(new URL("./planner.worker.ts", import.meta.url), { type: "module", name: "foon-planner" });
+  const script = new URL(plannerWorkerUrl, import.meta.url);
+  const options: WorkerOptions = { type: "module", name: "foon-planner" };
+  if (script.origin === self.location.origin) return new Worker(script, options);
+  let bootstrap = bootstraps.get(script.href);
+  if (bootstrap === undefined) {
+    bootstrap = URL.createObjectURL(new Blob([`import ${JSON.stringify(script.href)};\n`], { type: "text/javascript" }));
+    bootstraps.set(script.href, bootstrap);
+  }
+  return new Worker(bootstrap, options);
 }
 
 /** A failure that means the WASM module trapped (a panic or an out-of-memory abort): its state is lost. */
@@ -77,7 +98,8 @@ export class WorkerPlanner implements PlannerService {
     worker.onerror = (event: ErrorEvent) => {
       if (worker !== this.worker) return;
       event.preventDefault?.();
-      this.crashed(`planner worker failed: ${event.message}`);
+      // a module worker whose script cannot be loaded fails with an empty message
+      this.crashed(`planner worker failed: ${event.message || NOT_LOADED}`);
     };
   }
 
@@ -94,8 +116,8 @@ export class WorkerPlanner implements PlannerService {
     const fail = (w: Pending, message: string): void => w.resolve({ type: "error", id: w.message.id, error: { code: "internal", message } });
     if (this.restarts.length > MAX_RESTARTS) {
       for (const w of waiting) fail(w, `${reason}; the planner crashed ${MAX_RESTARTS} times in a minute and was not restarted again`);
-      // a worker is still needed for later calls; it starts fresh, without a knowledge base
-      this.start();
+      // the next call starts a fresh worker, without a knowledge base (not now: one that cannot start would loop)
+      this.stopped = true;
       return;
     }
     this.start();
@@ -134,7 +156,14 @@ export class WorkerPlanner implements PlannerService {
   /** Resolved, except while a restarted worker is loading the knowledge base again. */
   private gate: Promise<void> = Promise.resolve();
 
+  /** Given up on after too many crashes: no worker runs until the next call. */
+  private stopped = false;
+
   private send(message: WorkerRequest): Promise<WorkerResponse> {
+    if (this.stopped) {
+      this.stopped = false;
+      this.start();
+    }
     return new Promise((resolve) => {
       this.pending.set(message.id, { message, resolve, retried: false });
       const worker = this.worker;

@@ -13,6 +13,7 @@ const TYPES: Record<string, string> = {
   ".wasm": "application/wasm",
   ".json": "application/json",
   ".txt": "text/plain; charset=utf-8",
+  ".foon": "text/plain; charset=utf-8",
 };
 
 export interface StaticServer {
@@ -21,7 +22,8 @@ export interface StaticServer {
   close(): Promise<void>;
 }
 
-export async function serveStatic(root: string, prefix: string): Promise<StaticServer> {
+/** `headers` are sent with every file, e.g. the `Access-Control-Allow-Origin: *` that static hosts send. */
+export async function serveStatic(root: string, prefix: string, headers: Record<string, string> = {}): Promise<StaticServer> {
   const server: Server = createServer((req, res) => {
     const path = decodeURIComponent(new URL(req.url ?? "/", "http://x").pathname);
     if (!path.startsWith(prefix)) {
@@ -38,7 +40,7 @@ export async function serveStatic(root: string, prefix: string): Promise<StaticS
       res.writeHead(404).end();
       return;
     }
-    res.writeHead(200, { "content-type": TYPES[extname(file)] ?? "application/octet-stream", "cache-control": "no-cache" });
+    res.writeHead(200, { "content-type": TYPES[extname(file)] ?? "application/octet-stream", "cache-control": "no-cache", ...headers });
     createReadStream(file).pipe(res);
   });
   await new Promise<void>((resolve) => server.listen(0, "127.0.0.1", resolve));

@@ -106,6 +106,25 @@ describe("a crashed planner worker", () => {
     expect(workers.length).toBeLessThanOrEqual(5);
   });
 
+  it("reports a worker whose script cannot be loaded, and does not keep starting new ones", async () => {
+    const workers: FakeWorker[] = [];
+    const client = new WorkerPlanner({
+      createWorker: () => {
+        // a module worker's failed script load: an error event without a message, soon after it is made
+        const w = new FakeWorker(() => undefined);
+        queueMicrotask(() => w.crash(""));
+        workers.push(w);
+        return w as unknown as Worker;
+      },
+    });
+    await expect(client.loadUrl("kb/default.foon")).rejects.toMatchObject({ message: expect.stringContaining("Access-Control-Allow-Origin") });
+    const started = workers.length;
+    await new Promise((resolve) => setTimeout(resolve, 20));
+    expect(workers.length).toBe(started);
+    expect(started).toBeLessThanOrEqual(5);
+    expect(workers.every((w) => w.terminated)).toBe(true);
+  });
+
   it("does not restart on ordinary errors (a bad request is the caller's)", async () => {
     const { client, workers } = setup(() => null);
     await client.loadUrl("kb/default.foon");
