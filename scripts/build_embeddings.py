@@ -11,17 +11,26 @@ Usage (from the repository root):
     .venv/bin/python scripts/build_embeddings.py          # writes public/data/
     .venv/bin/python scripts/build_embeddings.py --check  # verifies the shipped files are reproduced
 
-The output is a pure function of the source file (checked against a pinned SHA-256), so the table is
-rebuilt bit for bit. Only the standard library is used.
+Vocabulary: the source's KEEP_MOST_FREQUENT most frequent words (it lists them by falling frequency), and
+every other word that is the stem of a word of a name the project knows (wasm/core/data/: food taxonomy,
+aliases, dish classes, utensils, states; the starter knowledge base's labels). The rest of the source's
+19,850 words are rare: misspellings, brand names, words of recipe prose; a query word among them is an
+unknown word, as a word missing from the source always was. The words kept keep the source's order.
 
-Format (all integers little endian), version 1:
+Each row is stored as the int8 components of its direction only (symmetric rounding to 127 steps of the
+row's largest component): the planner uses unit rows, so a row's length carries no information.
+
+The output is a pure function of the source file (checked against a pinned SHA-256) and of the project's
+name files, so the table is rebuilt bit for bit. Needs snowballstemmer (the Snowball English stemmer the
+source's words, and foon-core's lookups, are made with), pinned in requirements-embeddings.txt.
+
+Format (all integers little endian), version 2:
     magic    8 bytes  b"FOONEMB\\0"
-    version  u32      1
+    version  u32      2
     dims     u32      number of dimensions (35)
     count    u32      number of words
     wordlen  u32      length in bytes of the word blob
     words    wordlen  UTF-8 words, each followed by b"\\n", in the order of the source file
-    scales   count x f32   per-row scale: component = int8 * scale
     vectors  count x dims x i8
     crc32    u32      CRC-32 (IEEE, as zlib.crc32) of every byte before it
 """
@@ -32,9 +41,13 @@ import hashlib
 import importlib.metadata
 import math
 import pathlib
+import re
 import struct
 import sys
+import unicodedata
 import zlib
+
+import snowballstemmer
 
 PACKAGE = "ingredient-parser-nlp"
 PACKAGE_VERSION = "2.9.1"
@@ -43,10 +56,15 @@ SOURCE_PATH = "ingredient_parser/en/data/ingredient_embeddings.35d.glove.txt.gz"
 SOURCE_TEXT_SHA256 = "2de5bf75ab10e01e3feaa5dc5509076861af108987d27ccd161ef552bbdf531f"
 
 MAGIC = b"FOONEMB\0"
-VERSION = 1
+VERSION = 2
 DIMS = 35
+# The most frequent words kept whatever they are: at this rank the source's words are mostly rare
+# spellings and recipe prose (the dev queries' words all rank within it).
+KEEP_MOST_FREQUENT = 6000
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
+# Files of names the planner knows: every word of them keeps its vector.
+NAME_FILES = sorted((ROOT / "wasm" / "core" / "data").glob("*.t*")) + sorted((ROOT / "public" / "kb" / "starter").glob("*.txt"))
 OUT_DIR = ROOT / "public" / "data"
 TABLE = "food-embeddings.bin"
 
@@ -81,11 +99,34 @@ def read_vectors(path: pathlib.Path):
     return words, rows, digest
 
 
+def name_words():
+    """Lower-cased, accent-folded words of the project's name files (comment lines left out), with their stems."""
+    stemmer = snowballstemmer.stemmer("english")
+    found = set()
+    for path in NAME_FILES:
+        for line in path.read_text(encoding="utf-8").split("\n"):
+            if line.startswith("#") or line.startswith("//"):
+                continue
+            folded = unicodedata.normalize("NFKD", line.lower()).encode("ascii", "ignore").decode()
+            for word in re.split(r"[^a-z0-9]+", folded):
+                if word:
+                    found.update((word, stemmer.stemWord(word)))
+    return found
+
+
+def kept(words, rows):
+    """The words (and rows) of the table: the most frequent ones and those of the project's names."""
+    names = name_words()
+    keep = [i for i, w in enumerate(words) if i < KEEP_MOST_FREQUENT or w in names]
+    return [words[i] for i in keep], [rows[i] for i in keep]
+
+
 def quantise(row):
-    """int8 components and the f32 scale with component ~= q * scale (symmetric, round half away)."""
+    """int8 components of the row's direction: its largest component is 127 (symmetric, round half away)."""
     peak = max(abs(x) for x in row)
     if peak == 0.0:
-        return 0.0, [0] * len(row)
+        return [0] * len(row)
+    # the scale of version 1, so that the stored components are those of earlier tables
     scale = struct.unpack("<f", struct.pack("<f", peak / 127.0))[0]
     q = []
     for x in row:
@@ -93,7 +134,7 @@ def quantise(row):
         r = int(math.floor(v + 0.5))
         r = min(r, 127)
         q.append(-r if x < 0 else r)
-    return scale, q
+    return q
 
 
 def build(words, rows) -> bytes:
@@ -102,13 +143,8 @@ def build(words, rows) -> bytes:
     out += MAGIC
     out += struct.pack("<IIII", VERSION, DIMS, len(words), len(blob))
     out += blob
-    scales, vectors = bytearray(), bytearray()
     for row in rows:
-        scale, q = quantise(row)
-        scales += struct.pack("<f", scale)
-        vectors += struct.pack(f"<{DIMS}b", *q)
-    out += scales
-    out += vectors
+        out += struct.pack(f"<{DIMS}b", *quantise(row))
     out += struct.pack("<I", zlib.crc32(bytes(out)) & 0xFFFFFFFF)
     return bytes(out)
 
@@ -117,7 +153,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--check", action="store_true", help="verify the shipped files instead of writing")
     args = ap.parse_args()
-    words, rows, digest = read_vectors(source_file())
+    source_words, source_rows, digest = read_vectors(source_file())
+    words, rows = kept(source_words, source_rows)
     table = build(words, rows)
     sha = hashlib.sha256(table).hexdigest()
     outputs = {
@@ -134,7 +171,7 @@ def main():
     for n, b in outputs.items():
         (OUT_DIR / n).write_bytes(b)
     gz = len(gzip.compress(table, 9, mtime=0))
-    print(f"{len(words)} words x {DIMS} dims; source sha256 {digest}")
+    print(f"{len(words)} of the source's {len(source_words)} words x {DIMS} dims; source sha256 {digest}")
     print(f"wrote {TABLE}: {len(table)} bytes raw, {gz} bytes gzip -9; sha256 {sha}")
 
 

@@ -11,7 +11,7 @@ use rustc_hash::FxHashMap as HashMap;
 use std::sync::{Arc, Mutex};
 
 pub const MAGIC: &[u8; 8] = b"FOONEMB\0";
-pub const VERSION: u32 = 1;
+pub const VERSION: u32 = 2;
 /// Upper bounds that keep a damaged header from asking for absurd allocations.
 const MAX_DIMS: usize = 1024;
 const MAX_WORDS: usize = 1_000_000;
@@ -21,7 +21,8 @@ const STOP_WORDS: &[&str] = &[
     "a", "an", "and", "the", "of", "or", "with", "for", "in", "to", "de", "du", "la", "le", "au",
 ];
 
-/// The word-vector table: one dequantised row per stemmed word.
+/// The word-vector table: one row per stemmed word, its int8 components as stored (a row's direction:
+/// phrases are embedded from unit rows, so a row's length carries no meaning).
 pub struct EmbeddingTable {
     dims: usize,
     words: Vec<String>,
@@ -182,20 +183,11 @@ impl EmbeddingTable {
                 words.len()
             )));
         }
-        let scales = r.take(count * 4, "scales")?;
         let rows = r.take(count * dims, "vectors")?;
         if r.at != body.len() {
             return Err(bad("embedding table has trailing bytes"));
         }
-        let mut vectors = Vec::with_capacity(count * dims);
-        for (i, row) in rows.chunks_exact(dims).enumerate() {
-            let s = &scales[i * 4..i * 4 + 4];
-            let scale = f32::from_le_bytes([s[0], s[1], s[2], s[3]]);
-            if !scale.is_finite() {
-                return Err(bad("embedding table has a non-finite scale"));
-            }
-            vectors.extend(row.iter().map(|&q| q as i8 as f32 * scale));
-        }
+        let vectors = rows.iter().map(|&q| q as i8 as f32).collect();
         let mut index = HashMap::with_capacity_and_hasher(count, Default::default());
         for (i, w) in words.iter().enumerate() {
             if w.is_empty() || index.insert(w.clone(), i as u32).is_some() {
