@@ -34,6 +34,9 @@ interface Vessel {
 /** Places whose contents are not tracked (VOCABULARY.md: cutting board, colander, strainer, packaging). */
 const SURFACES = new Set(["cutting board", "colander", "strainer", "paper towel"]);
 
+/** Places a thing lies on rather than in. */
+const ON_TOP = new Set(["cutting board", "paper towel", "plate", "baking tray", "wire rack"]);
+
 /** Tools and appliances: their flag and the states they are used in. */
 const TOOLS: Record<string, { flag: 0 | 1; states: string[] }> = {
   oven: { flag: 0, states: ["on", "preheated"] },
@@ -102,7 +105,7 @@ export class Recipe {
     }
     ins.push(...this.tools(opts.with));
     this.change(thing, opts);
-    thing.where = `${SURFACES.has(to) ? "on" : "in"} [${to}]`;
+    thing.where = `${ON_TOP.has(to) ? "on" : "in"} [${to}]`;
     outs.push(this.node(thing));
     return this.unit(ins, motion, outs);
   }
@@ -152,11 +155,16 @@ export class Recipe {
     if (from) from.stale = true;
     const v = dish.where ? this.vessels.get(placeOf(dish.where)) : undefined;
     const added = topping.contains ?? [topping.label];
-    for (const i of added) v?.contents.add(i);
+    const outs: string[] = [];
+    if (v) {
+      ins.unshift(this.vesselNode(v));
+      for (const i of added) v.contents.add(i);
+      outs.push(this.vesselNode(v));
+    }
     this.things.delete(topping.label);
     dish.contains = [...new Set([...(dish.contains ?? [dish.label]), ...added])];
     this.change(dish, opts);
-    return this.unit(ins, motion, [this.node(dish)]);
+    return this.unit(ins, motion, [...outs, this.node(dish)]);
   }
 
   /** Several kitchen ingredients join one container, one step each. */

@@ -74,8 +74,7 @@ function sodaBread(): WrittenRecipe {
   r.put("pick-and-place", "dough", "baking tray");
   r.alter("cut", "dough", { plus: ["holed"], with: ["knife"] });
   r.alter("bake", "dough", { as: "soda bread", set: ["loaf", "baked"], with: ["oven"] });
-  r.put("pick-and-place", "soda bread", "wire rack");
-  r.alter("cool down", "soda bread", { plus: ["cooled"] });
+  r.alter("cool down", "soda bread", { plus: ["cooled"], with: ["wire rack"] });
   return written(r, "soda bread");
 }
 

@@ -46,3 +46,11 @@ export function choppedOnion(r: Recipe, cut = "chop:chopped", label = "onion"): 
 export function serve(r: Recipe, dish: string, to = "plate", motion = "pick-and-place", tool = "spatula"): Recipe {
   return r.put(motion, dish, to, { with: [tool] });
 }
+
+/** Noodles or pasta boiled in a pot of water and drained in a colander (the water stays behind). */
+export function boilNoodles(r: Recipe, noodle: string, state = "dried"): Recipe {
+  r.put("pour", WATER, "pot").heat("pot").alter("boil", "water", { plus: ["boiling"] });
+  r.put("pour", [noodle, state, "in [package]"], "pot");
+  r.cookEach("boil", "pot", [noodle], { set: ["cooked"], with: ["tongs"] });
+  return r.put("drain", noodle, "colander").drop("water");
+}
