@@ -1,17 +1,22 @@
 //! Food knowledge the planner reasons with: the physical form of a food (by its category in the food
-//! taxonomy) and the motions a food of that form cannot take (`data/food_forms.tsv`).
+//! taxonomy), the motions a food of that form cannot take or join a dish by (`data/food_forms.tsv`),
+//! which foods must be cooked and how a cook prepares one named only by its category
+//! (`data/food_care.tsv`), and the motions that cook (`data/heat_motions.txt`).
 
 use crate::substitute::Taxonomy;
 use rustc_hash::FxHashMap as HashMap;
 use std::sync::OnceLock;
 
 const FORMS_TSV: &str = include_str!("../data/food_forms.tsv");
+const CARE_TSV: &str = include_str!("../data/food_care.tsv");
+const HEAT_TXT: &str = include_str!("../data/heat_motions.txt");
 
 /// A physical form and the motion words it cannot take.
 #[derive(Debug)]
 pub struct Form {
     pub name: String,
     cannot: Vec<String>,
+    joins_not_by: Vec<String>,
 }
 
 struct Forms {
@@ -32,8 +37,8 @@ fn parse(text: &str) -> Forms {
     let mut of_category = HashMap::default();
     for line in crate::taxonomy::data_lines(text) {
         let mut parts = line.split('\t');
-        let (Some(name), Some(categories), Some(cannot)) =
-            (parts.next(), parts.next(), parts.next())
+        let (Some(name), Some(categories), Some(cannot), Some(joins)) =
+            (parts.next(), parts.next(), parts.next(), parts.next())
         else {
             continue;
         };
@@ -43,6 +48,7 @@ fn parse(text: &str) -> Forms {
         forms.push(Form {
             name: name.trim().to_string(),
             cannot: split_list(cannot).collect(),
+            joins_not_by: split_list(joins).filter(|w| w != "-").collect(),
         });
     }
     Forms { forms, of_category }
@@ -62,15 +68,101 @@ pub fn form_of(food: &str) -> Option<&'static Form> {
     f.of_category.get(category).map(|&i| &f.forms[i])
 }
 
+pub fn motion_words(motion: &str) -> impl Iterator<Item = &str> {
+    motion.split([' ', '*']).filter(|w| !w.is_empty())
+}
+
 /// Whether `food` can take `motion` while it is itself: no word of the motion ("squeeze and scrape")
 /// is one its form cannot take. A food of unknown form takes any motion.
 pub fn takes(food: &str, motion: &str) -> bool {
     let Some(form) = form_of(food) else {
         return true;
     };
-    !motion
-        .split([' ', '*'])
-        .any(|w| form.cannot.iter().any(|c| c == w))
+    !motion_words(motion).any(|w| form.cannot.iter().any(|c| c == w))
+}
+
+/// Whether `food` can join a dish by `motion` (a liquid is poured in, not picked and placed): it can take
+/// the motion and no word of it is one its form does not join by.
+pub fn joins_by(food: &str, motion: &str) -> bool {
+    takes(food, motion)
+        && form_of(food)
+            .is_none_or(|f| !motion_words(motion).any(|w| f.joins_not_by.iter().any(|c| c == w)))
+}
+
+/// How a food is cooked before it is eaten (`data/food_care.tsv`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Cooking {
+    /// Cooked on its own when the dish does not cook it (chicken fried, pasta boiled).
+    Alone,
+    /// Only ever cooked as part of the dish: it joins before the dish is cooked (flour).
+    InDish,
+    /// Eaten as it is.
+    No,
+}
+
+/// What `data/food_care.tsv` says of a food or a category.
+struct Care {
+    cooking: Option<Cooking>,
+    prepared: Option<String>,
+}
+
+fn cares() -> &'static HashMap<String, Care> {
+    static CARES: OnceLock<HashMap<String, Care>> = OnceLock::new();
+    CARES.get_or_init(|| {
+        crate::taxonomy::data_lines(CARE_TSV)
+            .filter_map(|line| {
+                let mut parts = line.split('\t').map(str::trim);
+                let (key, cook, prepared) = (parts.next()?, parts.next()?, parts.next()?);
+                let cooking = match cook {
+                    "alone" => Some(Cooking::Alone),
+                    "in dish" => Some(Cooking::InDish),
+                    "no" => Some(Cooking::No),
+                    _ => None, // a test names the row
+                };
+                let care = Care {
+                    cooking,
+                    prepared: (prepared != "-").then(|| prepared.to_string()),
+                };
+                Some((key.to_string(), care))
+            })
+            .collect()
+    })
+}
+
+/// The food's own row, else its taxonomy category's.
+fn care_of(food: &str) -> Option<&'static Care> {
+    let cares = cares();
+    cares.get(food).or_else(|| {
+        let taxonomy = Taxonomy::builtin();
+        cares.get(&taxonomy.category(taxonomy.lookup(food)?).name)
+    })
+}
+
+/// Whether the food knowledge knows `food` (its taxonomy category).
+pub fn knows(food: &str) -> bool {
+    Taxonomy::builtin().lookup(food).is_some()
+}
+
+/// How `food` is cooked before it is eaten; `No` for a food the data does not know.
+pub fn cooking(food: &str) -> Cooking {
+    care_of(food).and_then(|c| c.cooking).unwrap_or(Cooking::No)
+}
+
+/// Whether `food` must be cooked before it is eaten (raw chicken, dry pasta, flour).
+pub fn must_cook(food: &str) -> bool {
+    cooking(food) != Cooking::No
+}
+
+/// The state a cook brings `food` to when a query names only its category ("whole veg" onion: chopped).
+pub fn prepared_state(food: &str) -> Option<&'static str> {
+    care_of(food)?.prepared.as_deref()
+}
+
+/// Whether `motion` cooks what it acts on ("bake", "deep fry", "cook and stir").
+pub fn cooks(motion: &str) -> bool {
+    static HEAT: OnceLock<Vec<&'static str>> = OnceLock::new();
+    let heat = HEAT.get_or_init(|| crate::taxonomy::data_lines(HEAT_TXT).collect());
+    motion_words(motion).any(|w| heat.contains(&w))
 }
 
 #[cfg(test)]
@@ -85,7 +177,7 @@ mod tests {
             ("butter", "grind"),
             ("margarine", "squeeze"),
             ("vodka", "bake"),
-            ("tomato", "squeeze"),
+            ("tomato", "crack"),
             ("spaghetti", "bake"),
         ] {
             assert!(!takes(food, motion), "{food} should not take '{motion}'");
@@ -98,9 +190,92 @@ mod tests {
             ("cheddar", "grate"),
             ("flour", "sift"),
             ("milk", "pour"),
+            // a garlic press, a salt mill, a squeeze bottle
+            ("garlic", "squeeze"),
+            ("salt", "grind"),
+            ("mustard", "squeeze"),
             ("unheard-of food", "squeeze"),
         ] {
             assert!(takes(food, motion), "{food} should take '{motion}'");
+        }
+    }
+
+    #[test]
+    fn liquids_and_powders_join_a_dish_poured_or_mixed_not_placed() {
+        for (food, motion) in [
+            ("milk", "pick-and-place"),
+            ("flour", "spread"),
+            ("salt", "pick-and-place"),
+        ] {
+            assert!(
+                !joins_by(food, motion),
+                "{food} should not join by '{motion}'"
+            );
+        }
+        for (food, motion) in [
+            ("milk", "pour"),
+            ("flour", "mix"),
+            ("salt", "sprinkle"),
+            ("onion", "pick-and-place"),
+        ] {
+            assert!(joins_by(food, motion), "{food} should join by '{motion}'");
+        }
+    }
+
+    #[test]
+    fn raw_meat_grains_and_eggs_must_be_cooked_and_produce_need_not() {
+        for food in [
+            "chicken breast",
+            "ground beef",
+            "bacon",
+            "rice",
+            "spaghetti",
+            "egg",
+            "flour",
+            "potato",
+        ] {
+            assert!(must_cook(food), "{food} must be cooked");
+        }
+        for food in [
+            "ham",
+            "lettuce",
+            "tomato",
+            "cheddar",
+            "salt",
+            "unheard-of food",
+        ] {
+            assert!(!must_cook(food), "{food} need not be cooked");
+        }
+        assert_eq!(cooking("chicken breast"), Cooking::Alone);
+        assert_eq!(cooking("flour"), Cooking::InDish);
+        assert!(cooks("deep fry") && cooks("cook and stir") && cooks("bake"));
+        assert!(!cooks("mix") && !cooks("pick-and-place"));
+    }
+
+    #[test]
+    fn a_food_named_by_its_category_is_prepared_as_a_cook_does() {
+        assert_eq!(prepared_state("onion"), Some("chopped"));
+        assert_eq!(prepared_state("egg"), Some("cracked"));
+        assert_eq!(prepared_state("mango"), Some("sliced"));
+        assert_eq!(prepared_state("ham"), Some("sliced"));
+        assert_eq!(prepared_state("salt"), None);
+        assert_eq!(prepared_state("blueberry"), None);
+    }
+
+    #[test]
+    fn every_care_row_is_a_taxonomy_category_or_food() {
+        let taxonomy = Taxonomy::builtin();
+        for (key, care) in cares() {
+            assert!(
+                care.cooking.is_some(),
+                "food_care.tsv: '{key}' has no cooking of alone, in dish, no"
+            );
+            let known = taxonomy.categories.iter().any(|c| &c.name == key)
+                || taxonomy.lookup(key).is_some();
+            assert!(
+                known,
+                "food_care.tsv names '{key}', which food_taxonomy.tsv lacks"
+            );
         }
     }
 

@@ -2,13 +2,12 @@
 //! cycles, unknown dish types, empty queries, duplicate ingredients, empty names, overrides, the
 //! unmodified reference tree, and the exports.
 
+mod common;
+use common::hand::{goal_contents, outcome, plan_of, query, try_plan, units};
 use foon_core::error::ErrorCode;
 use foon_core::plan::{Origin, Status};
-use foon_core::planner::violations;
 use foon_core::similarity::{ExactMatch, Similarity};
-use foon_core::{
-    decode, foon_text, load, parse::parse_str, pddl, plan, progress_json, Plan, PlannerIndex,
-};
+use foon_core::{foon_text, parse::parse_str, pddl, progress_json, Plan};
 
 /// A similarity given as a table of pairs (symmetric); 1 for a name with itself, 0 otherwise.
 struct Pairs(&'static [(&'static str, &'static str, f32)]);
@@ -107,44 +106,6 @@ S\tin\t[pot]
 //
 ";
 
-fn kb(files: &[(&str, &str)]) -> (foon_core::KnowledgeBase, PlannerIndex) {
-    let files: Vec<(String, Vec<u8>)> = files
-        .iter()
-        .map(|(n, t)| (n.to_string(), t.as_bytes().to_vec()))
-        .collect();
-    let kb = load(&files).unwrap_or_else(|e| panic!("{e}"));
-    let index = PlannerIndex::new(&kb);
-    (kb, index)
-}
-
-fn try_plan(
-    files: &[(&str, &str)],
-    sim: &dyn Similarity,
-    request: &str,
-) -> foon_core::Result<Plan> {
-    let (kb, index) = kb(files);
-    let request = decode::plan_request(request).unwrap_or_else(|e| panic!("{e}"));
-    plan(&kb, &index, sim, &request)
-}
-
-/// A plan that must exist and be sound: no unit twice, none before its inputs, none dead, the goal made.
-fn plan_of(files: &[(&str, &str)], sim: &dyn Similarity, request: &str) -> Plan {
-    let p = try_plan(files, sim, request).unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(violations(&p), Vec::<String>::new(), "{:#?}", p.units);
-    p
-}
-
-fn query(dish: &str, items: &[(&str, &str)]) -> String {
-    let items: Vec<String> = items
-        .iter()
-        .map(|(o, s)| format!(r#"{{"object": "{o}", "state": "{s}"}}"#))
-        .collect();
-    format!(
-        r#"{{"query": {{"type": "{dish}", "ingredients": [{}]}}}}"#,
-        items.join(", ")
-    )
-}
-
 /// A sound plan for a salad of `items` against both recipes.
 fn salad(items: &[(&str, &str)]) -> Plan {
     plan_of(BOTH, &SIM, &query("salad", items))
@@ -156,29 +117,6 @@ const SIM: Pairs = Pairs(&[
     ("romaine", "lettuce", 0.85),
     ("zucchini", "cucumber", 0.8),
 ]);
-
-/// The plan's units as "motion: input (states) + ... -> output (states) + ...", in order.
-fn units(p: &Plan) -> Vec<String> {
-    let side = |nodes: &[std::sync::Arc<foon_core::plan::PlanNode>]| {
-        let mut names: Vec<String> = nodes
-            .iter()
-            .map(|n| format!("{} ({})", n.label, n.states.join(", ")))
-            .collect();
-        names.sort();
-        names.join(" + ")
-    };
-    p.units
-        .iter()
-        .map(|u| format!("{}: {} -> {}", u.motion, side(&u.inputs), side(&u.outputs)))
-        .collect()
-}
-
-fn outcome<'p>(p: &'p Plan, object: &str) -> &'p foon_core::plan::IngredientOutcome {
-    p.ingredients
-        .iter()
-        .find(|i| i.object == object)
-        .unwrap_or_else(|| panic!("no outcome for {object}: {:#?}", p.ingredients))
-}
 
 /// Whether a unit with `motion` makes `label` in `state`.
 fn makes(p: &Plan, motion: &str, label: &str, state: &str) -> bool {
@@ -197,16 +135,6 @@ fn labels(p: &Plan) -> std::collections::BTreeSet<&str> {
         .flat_map(|u| u.inputs.iter().chain(u.outputs.iter()))
         .map(|n| n.label.as_str())
         .collect()
-}
-
-/// The goal node as the plan makes it (the last unit's output with the goal's label).
-fn goal_contents(p: &Plan) -> Vec<&str> {
-    let goal = p
-        .units
-        .last()
-        .and_then(|u| u.outputs.iter().find(|n| n.label == p.goal.label))
-        .expect("the last unit makes the goal");
-    goal.ingredients.iter().map(|s| s.as_str()).collect()
 }
 
 #[test]

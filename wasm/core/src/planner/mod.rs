@@ -2,6 +2,7 @@
 //! node (Alg. 1), its task tree (Alg. 2), and the modification of that tree for the query's ingredients
 //! (Table I), followed by pruning, progress lines and recipe-like steps.
 
+mod cautions;
 mod check;
 mod goal;
 mod index;
@@ -13,6 +14,7 @@ mod score;
 pub mod states;
 mod tree;
 
+pub use cautions::{cautions, Caution, CautionKind};
 pub use check::{available_at_start, violations};
 pub use index::PlannerIndex;
 

@@ -61,12 +61,49 @@ const SEPARATION: &[Category] = &[
     Category::Ground,
 ];
 
-/// Motions that cannot take more ingredients (a robot cuts one item at a time).
+/// Motions that cannot take more ingredients (a robot cuts one item at a time; what goes into the oven
+/// or under the grill is already assembled).
 const SINGLE_ITEM_WORDS: &[&str] = &[
-    "slice", "cut", "chop", "dice", "mince", "peel", "crack", "grate", "julienne", "core",
-    "squeeze", "wash", "rinse", "open", "turn", "preheat", "detach", "attach", "remove", "drain",
-    "shave", "zest", "knead", "roll", "shape", "wrap", "unwrap", "throw", "take out", "tear",
-    "flip", "cover",
+    "slice",
+    "cut",
+    "chop",
+    "dice",
+    "mince",
+    "peel",
+    "crack",
+    "grate",
+    "julienne",
+    "core",
+    "squeeze",
+    "wash",
+    "rinse",
+    "open",
+    "turn",
+    "preheat",
+    "detach",
+    "attach",
+    "remove",
+    "drain",
+    "shave",
+    "zest",
+    "knead",
+    "roll",
+    "shape",
+    "wrap",
+    "unwrap",
+    "throw",
+    "take out",
+    "tear",
+    "flip",
+    "cover",
+    "bake",
+    "roast",
+    "grill",
+    "toast",
+    "broil",
+    "put inside",
+    "insert",
+    "microwave",
 ];
 
 fn accepts_more(motion: &str) -> bool {
@@ -1011,21 +1048,46 @@ fn private_unit(kb: &KnowledgeBase, u: UnitId, eq: &str) -> bool {
     })
 }
 
+/// Per slot, whether a unit that cooks (`foods::cooks`) takes it or what it becomes on the way on.
+fn cooked_later(tree: &Tree, order: &[TUnitId]) -> Vec<bool> {
+    let mut cooked = vec![false; tree.slots.len()];
+    // walked backwards, a unit's outputs are settled before its inputs
+    for &v in order.iter().rev() {
+        let unit = &tree.units[v];
+        let cooks = foods::cooks(&unit.motion);
+        for &(s, _) in &unit.inputs {
+            cooked[s] |= cooks || unit.outputs.iter().any(|&(x, _)| x != s && cooked[x]);
+        }
+    }
+    cooked
+}
+
+/// Whether what joins unit `u` is cooked there or later (`cooked`: `cooked_later`).
+fn cooks_what_joins(tree: &Tree, cooked: &[bool], u: TUnitId) -> bool {
+    let unit = &tree.units[u];
+    foods::cooks(&unit.motion) || unit.outputs.iter().any(|x| cooked[x.0])
+}
+
 /// The unit a new ingredient joins: one that can take more ingredients, into an output whose contents
-/// reach the goal (`carries`: the tree's `carriers`), where ingredients of the same kind go in (salt
-/// where the pepper is sprinkled), else with the dish's usual motion, closest to the goal.
+/// reach the goal (`carries`: the tree's `carriers`), by a motion the food can join by (milk poured, not
+/// placed), before a unit that cooks it when it must be cooked (`cooked`: `cooked_later`), where
+/// ingredients of the same kind go in (salt where the pepper is sprinkled), else with the dish's usual
+/// motion, closest to the goal.
+#[allow(clippy::too_many_arguments)]
 fn attach_point(
     ctx: &Context,
     tree: &Tree,
     order: &[TUnitId],
     carries: &[bool],
+    cooked: &[bool],
     o: &str,
     c: Category,
 ) -> Option<TUnitId> {
     let goal_label = tree.slots[tree.goal].node.label.as_str();
+    let raw_unsafe = foods::must_cook(o);
     // closest to the goal first: a unit further from it must do strictly better, so its kin
     // ingredients are worked out only when they could make it
-    let mut best: Option<(TUnitId, (bool, bool, bool, usize))> = None;
+    let mut best: Option<(TUnitId, AttachKey)> = None;
     for &u in order.iter().rev() {
         let unit = &tree.units[u];
         let mut holding = unit
@@ -1043,8 +1105,10 @@ fn attach_point(
             let x = &tree.slots[i.0];
             i.1 && !x.utensil && x.node.label != goal_label
         });
+        let fits = foods::joins_by(o, &unit.motion);
+        let safe = !raw_unsafe || cooks_what_joins(tree, cooked, u);
         let beats = |kin: bool, pref: usize| {
-            let key = (reaches, adds, kin, usize::MAX - pref);
+            let key = (reaches, fits, safe, adds, kin, usize::MAX - pref);
             best.as_ref().is_none_or(|(_, b)| key > *b).then_some(key)
         };
         // not even with kin ingredients and the dish's first motion: its motion is not looked up
@@ -1070,14 +1134,21 @@ fn attach_point(
             best = Some((u, key));
             // a unit adding ingredients of the same kind with the dish's first motion into the dish: none
             // beats it
-            if key == (true, true, true, usize::MAX) {
+            if key == (true, true, true, true, true, usize::MAX) {
                 break;
             }
         }
     }
-    best.map(|b| b.0)
+    // nothing that takes more reaches the dish: the unit that makes it takes the food, so its
+    // progress line ends in the dish
+    best.filter(|(_, key)| key.0)
+        .map(|b| b.0)
         .or_else(|| tree.producer.get(tree.goal).copied().flatten())
 }
+
+/// How `attach_point` ranks a unit: reaches the goal, the food joins by its motion, the food is cooked
+/// after if it must be, the unit adds an ingredient, kin ingredients join there, the dish's motion rank.
+type AttachKey = (bool, bool, bool, bool, bool, usize);
 
 /// Case 4 from the universal FOON: the equivalent's branch for the state, renamed and attached.
 /// Returns the chosen state text and a reason.
@@ -1086,8 +1157,10 @@ fn add_branch<'kb>(
     tree: &mut Tree<'kb>,
     eq: &str,
     o: &str,
-    s: &str,
+    asked: &str,
 ) -> Result<(SmolStr, String), String> {
+    let prepared = prepared_state(o, eq, asked);
+    let s = prepared.unwrap_or(asked);
     let mut picked = None;
     let candidates = pick_nodes(ctx, eq, s);
     let count = candidates.len();
@@ -1116,6 +1189,12 @@ fn add_branch<'kb>(
     how.push_str("not in the reference tree: ");
     if eq != o {
         let _ = write!(how, "'{eq}' substituted with '{o}': ");
+    }
+    if prepared.is_some() {
+        let _ = write!(
+            how,
+            "'{asked}' names only what {o} is: made '{s}', as a cook would; "
+        );
     }
     let Some((n, in_state, r)) = picked else {
         // FOON only makes it together with other ingredients (a prepared product such as taco
@@ -1153,6 +1232,17 @@ fn add_branch<'kb>(
     }
     let state = state_text(&ctx.kb.nodes[n]);
     finish_branch(ctx, tree, eq, o, s, before, last, state, in_state, how)
+}
+
+/// The state a cook brings the food to when the asked state `s` is only a category word of the recipe
+/// data ("whole veg" onion: chopped; "whole" egg: cracked), from `foods::prepared_state` of the asked food
+/// (else its equivalent); None when `s` is a real state or the food is used as it is.
+fn prepared_state(o: &str, eq: &str, s: &str) -> Option<&'static str> {
+    if category(s) != Category::Whole || matches!(s, "washed" | "clean") {
+        return None;
+    }
+    let food = if foods::knows(o) { o } else { eq };
+    foods::prepared_state(food)
 }
 
 /// The utensils the tree starts with, by knowledge-base node: a branch of `units` units shares them
@@ -1222,9 +1312,27 @@ fn finish_branch<'kb>(
     }
     let order = tree.order();
     let carries = tree.carriers(&order);
-    let Some(m) = attach_point(ctx, tree, &order, &carries, o, c) else {
+    let cooked = cooked_later(tree, &order);
+    let Some(m) = attach_point(ctx, tree, &order, &carries, &cooked, o, c) else {
         return Err(format!("no unit of the tree can take '{o}'"));
     };
+    let raw = !tree.slots[last]
+        .node
+        .physical_states()
+        .any(|st| category(st) == Category::Cooked);
+    if raw && foods::cooking(o) == foods::Cooking::Alone && !cooks_what_joins(tree, &cooked, m) {
+        // nothing in the dish cooks it: it is cooked on its own before it joins
+        let motion = ctx
+            .index
+            .motion_for("cooked")
+            .unwrap_or_else(|| "cook".into());
+        let made = ObjectNode::new(o, vec![State::plain("cooked")]);
+        last = add_state_unit(ctx, tree, last, made, &motion);
+        let _ = write!(
+            how,
+            ", '{motion}' to make it cooked (the dish does not cook it)"
+        );
+    }
     tree.units[m].inputs.push((last, true));
     tree.add_contents_downstream(m, o, &order, &carries);
     tree.units[m].origin = Origin::Attached;

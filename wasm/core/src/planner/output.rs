@@ -252,13 +252,22 @@ fn progress_line<'t>(
         let product = tree.slots[x].node.label.as_str();
         end_product = product;
         // the dish reached: what is done to it then (cut, plated) is the dish's, not the ingredient's
-        if x == tree.goal || product == goal || followed.contains(&x) || product == label {
+        if x == tree.goal || product == goal || followed.contains(&x) {
             break;
         }
         followed.push(x);
+        // made into itself again (egg white and yolk beaten into egg): its own states go on
+        let itself = product == label;
         walked = walk(order, uses, product, x, pos + 1, slots, relations);
-        for state in walked.states.into_iter().skip(1) {
-            states.push(inside(product, state));
+        if itself {
+            states.pop();
+        }
+        for state in walked.states.into_iter().skip(usize::from(!itself)) {
+            states.push(if itself {
+                state
+            } else {
+                inside(product, state)
+            });
         }
         motions.extend(walked.motions);
     }
@@ -341,15 +350,23 @@ fn walk<'t>(
                 at = v;
                 continue;
             }
-            // its last node sits in a vessel: what the vessel's contents become
-            if let Some((pos, u)) = last_step {
-                let unit: &super::tree::TUnit<'_> = &tree.units[u];
-                into = unit
+            // its last node sits in a vessel: what the vessel's contents become (the vessel the unit
+            // that last moved it, or made it, put it in, though FOON's vessel may not list it)
+            let touched = last_step.or_else(|| {
+                let u = tree.producer.get(at).copied().flatten()?;
+                Some((order.iter().position(|&v| v == u)?, u))
+            });
+            if let Some((pos, u)) = touched {
+                let container = tree.slots[at].node.container();
+                into = tree.units[u]
                     .outputs
                     .iter()
                     .map(|o| o.0)
                     .filter(|&x| tree.slots[x].utensil)
-                    .find(|&x| tree.slots[x].node.contents().any(|i| i == label))
+                    .find(|&x| {
+                        let n = &tree.slots[x].node;
+                        n.contents().any(|i| i == label) || container == Some(n.label.as_str())
+                    })
                     .and_then(|x| product_of(tree, order, pos, x, label, seen));
             }
             break;
@@ -367,8 +384,9 @@ fn walk<'t>(
                 from = pos + 1;
             }
             None => {
-                // it went into something else: what lists it (a food made of it before the vessel
-                // holding it), else a new food; not another ingredient moved along with it
+                // it went into something else: what lists it (a food made of it), else a new food
+                // (the soup simmered into tomato soup, though FOON's pot still lists the soup), else a
+                // food that took it in or the vessel holding it; not another ingredient moved along
                 let outputs = &tree.units[u].outputs;
                 let lists = |food: bool| {
                     outputs.iter().find(|o| {
@@ -376,13 +394,36 @@ fn walk<'t>(
                         slot.utensil != food && slot.node.contents().any(|i| i == label)
                     })
                 };
-                let entered = lists(true).or_else(|| lists(false)).or_else(|| {
+                let fresh = || {
                     let inputs = &tree.units[u].inputs;
                     outputs.iter().find(|o| {
                         let n = &tree.slots[o.0].node;
                         !tree.slots[o.0].utensil
                             && !inputs.iter().any(|i| tree.slots[i.0].node.label == n.label)
                     })
+                };
+                // a food that took more in (the sauce stirred into the fried rice)
+                let grew = || {
+                    let inputs = &tree.units[u].inputs;
+                    outputs.iter().find(|o| {
+                        let n = &tree.slots[o.0].node;
+                        !tree.slots[o.0].utensil
+                            && inputs.iter().any(|i| {
+                                let before = &tree.slots[i.0].node;
+                                before.label == n.label
+                                    && n.contents().count() > before.contents().count()
+                            })
+                    })
+                };
+                // followed in a vessel (the onion in the pot the broth is poured into), it stays in
+                // the vessel; the food itself taken in by another goes with that one
+                let in_vessel = tree.slots[at].utensil;
+                let entered = lists(true).or_else(fresh).or_else(|| {
+                    if in_vessel {
+                        lists(false).or_else(grew)
+                    } else {
+                        grew().or_else(|| lists(false))
+                    }
                 });
                 match entered {
                     Some(&(o, _)) => {

@@ -98,3 +98,4 @@ pub fn dev_plans(sim: &dyn foon_core::similarity::Similarity) -> Vec<(bool, foon
     }
     plans
 }
+pub mod hand;

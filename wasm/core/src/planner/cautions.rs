@@ -1,0 +1,173 @@
+//! Culinary plausibility of a finished plan, from its units and progress lines alone (not from what
+//! modification meant to do), by the food knowledge of `foods`: what a cook would stop at.
+
+use super::states::{category, Category};
+use crate::foods;
+use crate::plan::{Plan, ProgressLine, Status};
+use serde::{Deserialize, Serialize};
+
+/// A kind of culinary error a plan can have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CautionKind {
+    /// A food takes a motion its form rules out (a powder squeezed, a liquid baked).
+    MotionOnForm,
+    /// A food that must be cooked reaches the dish uncooked.
+    Uncooked,
+    /// An asked ingredient's progress line ends short of the goal dish.
+    ShortOfDish,
+    /// Produce a cook prepares goes into the dish whole and raw.
+    LeftWhole,
+}
+
+impl CautionKind {
+    pub const ALL: [CautionKind; 4] = [
+        CautionKind::MotionOnForm,
+        CautionKind::Uncooked,
+        CautionKind::ShortOfDish,
+        CautionKind::LeftWhole,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            CautionKind::MotionOnForm => "motion_on_form",
+            CautionKind::Uncooked => "uncooked",
+            CautionKind::ShortOfDish => "short_of_dish",
+            CautionKind::LeftWhole => "left_whole",
+        }
+    }
+}
+
+/// One thing a cook would stop at, with the food and what is wrong in words.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Caution {
+    pub kind: CautionKind,
+    pub food: String,
+    pub detail: String,
+}
+
+/// What a cook would stop at in `plan`; empty when nothing.
+pub fn cautions(plan: &Plan) -> Vec<Caution> {
+    let mut out = motions_on_forms(plan);
+    for line in asked_lines(plan) {
+        out.extend(line_caution(plan, line));
+    }
+    out
+}
+
+/// Units giving a food a motion its form cannot take, once per food and motion. In a unit of several
+/// foods the motion is the one of those that take it (the avocado mashed with the salt), so a food is
+/// named only when none of the others of a known form takes it either.
+fn motions_on_forms(plan: &Plan) -> Vec<Caution> {
+    let mut out: Vec<Caution> = Vec::new();
+    for unit in &plan.units {
+        let mut formed = unit
+            .inputs
+            .iter()
+            .map(|n| n.label.as_str())
+            .filter(|f| foods::form_of(f).is_some());
+        if formed.clone().any(|f| foods::takes(f, &unit.motion)) {
+            continue;
+        }
+        for food in formed.by_ref() {
+            let detail = format!("{food} cannot be '{}'", unit.motion);
+            if !out.iter().any(|c| c.detail == detail) {
+                out.push(Caution {
+                    kind: CautionKind::MotionOnForm,
+                    food: food.to_string(),
+                    detail,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// The progress lines of the planned query ingredients.
+fn asked_lines(plan: &Plan) -> impl Iterator<Item = &ProgressLine> {
+    plan.progress_lines.iter().filter(|l| {
+        plan.ingredients
+            .iter()
+            .any(|o| o.status == Status::Planned && o.object == l.ingredient)
+    })
+}
+
+/// The first of: the line ends short of the dish, a must-cook food is never cooked, produce is never
+/// prepared.
+fn line_caution(plan: &Plan, line: &ProgressLine) -> Option<Caution> {
+    let food = line.ingredient.to_string();
+    let caution = |kind, detail| {
+        Some(Caution {
+            kind,
+            food: food.clone(),
+            detail,
+        })
+    };
+    if line.end_product != plan.goal.label {
+        let last = line.state.last().map_or("", |s| s.physical_state.as_str());
+        let detail = format!(
+            "{food} ends in {} ({last}), not in {}",
+            line.end_product, plan.goal.label
+        );
+        return caution(CautionKind::ShortOfDish, detail);
+    }
+    let cooked = reaches(line, Category::Cooked) || line.motion.iter().any(|m| foods::cooks(m));
+    if foods::must_cook(&food) && !cooked && !reaches(line, Category::Preserved) {
+        return caution(
+            CautionKind::Uncooked,
+            format!("{food} reaches {} uncooked", plan.goal.label),
+        );
+    }
+    let prepared = foods::prepared_state(&food);
+    if prepared.is_some_and(|p| !cooked && !changed(line, p)) {
+        let detail = format!("{food} goes into {} whole", plan.goal.label);
+        return caution(CautionKind::LeftWhole, detail);
+    }
+    None
+}
+
+/// The words of the line's physical states ("in batter, baked" is "in batter" and "baked").
+fn state_words(line: &ProgressLine) -> impl Iterator<Item = &str> {
+    line.state
+        .iter()
+        .flat_map(|s| s.physical_state.split(", "))
+        .filter(|w| !w.is_empty())
+}
+
+fn reaches(line: &ProgressLine, c: Category) -> bool {
+    state_words(line).any(|w| category(w) == c)
+}
+
+/// Motion words that break a food down whole as it is (a banana blended into the smoothie).
+const BREAKING_DOWN: &[&str] = &[
+    "blend", "mash", "puree", "purée", "process", "juice", "crush",
+];
+
+/// Whether the food was prepared along the line: its own states (before it joins anything) cut,
+/// ground, juiced, mashed or shaped, or brought to `prepared` (an egg cracked), or a motion broke it
+/// down.
+fn changed(line: &ProgressLine, prepared: &str) -> bool {
+    let own = line
+        .state
+        .iter()
+        .map(|s| s.physical_state.as_str())
+        .filter(|s| !s.starts_with("in "))
+        .flat_map(|s| s.split(", "));
+    let prepared_itself = own.clone().any(|w| {
+        w == prepared
+            || matches!(
+                category(w),
+                Category::Cut
+                    | Category::FinelyCut
+                    | Category::Ground
+                    | Category::Liquid
+                    | Category::Mixed
+                    | Category::Shaped
+            )
+    });
+    prepared_itself
+        || line
+            .motion
+            .iter()
+            .any(|m| foods::motion_words(m).any(|w| BREAKING_DOWN.contains(&w)))
+}

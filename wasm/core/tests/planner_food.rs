@@ -1,0 +1,429 @@
+//! The planner's food knowledge on small hand-made knowledge bases: raw meat cooked before it joins a
+//! dish that does not cook it, flour joined before the dish is baked, produce named only by its category
+//! prepared as a cook would, progress lines that reach the dish, and the cautions a plan reports.
+
+mod common;
+use common::hand::{outcome, plan_of, query, try_plan};
+use foon_core::planner::{cautions, CautionKind};
+use foon_core::similarity::ExactMatch;
+use foon_core::Plan;
+
+/// A salad (class 15): lettuce chopped and mixed in a bowl.
+const LETTUCE_SALAD: &str = "//
+O\tsalad bowl\t0
+S\tempty
+O\tlettuce\t1
+S\tchopped
+M\tmix\t<Assumed>
+O\tgreen salad\t1\t15
+S\tmixed
+S\tcontains\t{lettuce}
+S\tin\t[salad bowl]
+//
+";
+
+/// Elsewhere in FOON: chicken sliced raw, an onion chopped.
+const PREPARED: &str = "//
+O\tchicken breast\t1
+S\traw
+O\tknife\t1
+S\tclean
+M\tslice\t<Assumed>
+O\tchicken breast\t1
+S\tsliced
+S\traw
+//
+O\tonion\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tchop\t<Assumed>
+O\tonion\t1
+S\tchopped
+//
+";
+
+fn kinds(p: &Plan) -> Vec<CautionKind> {
+    cautions(p).into_iter().map(|c| c.kind).collect()
+}
+
+/// The motions of `food`'s progress line.
+fn line_motions<'p>(p: &'p Plan, food: &str) -> Vec<&'p str> {
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == food)
+        .unwrap_or_else(|| panic!("no line for {food}: {:#?}", p.progress_lines));
+    line.motion.iter().map(|m| m.as_str()).collect()
+}
+
+#[test]
+fn raw_chicken_is_cooked_before_it_joins_a_salad_that_does_not_cook_it() {
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("prep.txt", PREPARED)],
+        &ExactMatch,
+        &query(
+            "salad",
+            &[("lettuce", "chopped"), ("chicken breast", "sliced")],
+        ),
+    );
+    let motions = line_motions(&p, "chicken breast");
+    assert_eq!(motions, ["slice", "cook", "mix"], "{:#?}", p.units);
+    let reason = outcome(&p, "chicken breast").reason.as_deref().unwrap();
+    assert!(reason.contains("'cook' to make it cooked"), "{reason}");
+    assert_eq!(kinds(&p), []);
+}
+
+#[test]
+fn the_unmodified_tree_of_a_salad_with_raw_chicken_is_cautioned() {
+    let salad = LETTUCE_SALAD.replace(
+        "S\tchopped\nM",
+        "S\tchopped\nO\tchicken breast\t1\nS\tsliced\nM",
+    );
+    let salad = salad.replace("{lettuce}", "{chicken breast,lettuce}");
+    let mut request = query(
+        "salad",
+        &[("lettuce", "chopped"), ("chicken breast", "sliced")],
+    );
+    request = request.replace("}}", "}, \"modify\": false}");
+    let p = try_plan(&[("salad.txt", &salad)], &ExactMatch, &request).unwrap();
+    let found = cautions(&p);
+    assert_eq!(found.len(), 1, "{found:#?}");
+    assert_eq!(found[0].kind, CautionKind::Uncooked);
+    assert_eq!(
+        found[0].detail,
+        "chicken breast reaches green salad uncooked"
+    );
+}
+
+/// A cake (class 5): eggs beaten into a batter, baked, then syrup poured over the cake.
+const SYRUP_CAKE: &str = "//
+O\tbowl\t0
+S\tempty
+O\tegg\t1
+S\tcracked
+M\tbeat\t<Assumed>
+O\tbatter\t1
+S\tbeaten
+S\tcontains\t{egg}
+S\tin\t[bowl]
+//
+O\tbatter\t1
+S\tbeaten
+S\tcontains\t{egg}
+S\tin\t[bowl]
+O\toven\t0
+S\ton
+M\tbake\t<Assumed>
+O\tsponge\t1
+S\tbaked
+S\tcontains\t{egg}
+//
+O\tsponge\t1
+S\tbaked
+S\tcontains\t{egg}
+O\tsyrup\t1
+S\tliquid
+M\tpour\t<Assumed>
+O\tsyrup cake\t1\t5
+S\tcontains\t{egg,syrup}
+//
+";
+
+/// Flour as bought, in a recipe of its own.
+const FLOUR: &str = "//
+O\tflour\t1
+S\tpowder
+S\tin\t[bag]
+O\tmeasuring cup\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tflour\t1
+S\tpowder
+S\tin\t[measuring cup]
+//
+";
+
+#[test]
+fn flour_joins_the_cake_before_it_is_baked_not_with_the_syrup_after() {
+    let p = plan_of(
+        &[("cake.txt", SYRUP_CAKE), ("flour.txt", FLOUR)],
+        &ExactMatch,
+        &query(
+            "cake",
+            &[("egg", "cracked"), ("syrup", "liquid"), ("flour", "powder")],
+        ),
+    );
+    let motions = line_motions(&p, "flour");
+    assert!(motions.contains(&"bake"), "{motions:?}\n{:#?}", p.units);
+    assert!(
+        !motions.contains(&"cook"),
+        "flour is not cooked on its own: {motions:?}"
+    );
+    assert_eq!(kinds(&p), []);
+}
+
+#[test]
+fn an_onion_named_only_whole_veg_is_chopped_as_a_cook_would() {
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("prep.txt", PREPARED)],
+        &ExactMatch,
+        &query("salad", &[("lettuce", "chopped"), ("onion", "whole veg")]),
+    );
+    assert_eq!(line_motions(&p, "onion"), ["chop", "mix"], "{:#?}", p.units);
+    let reason = outcome(&p, "onion").reason.as_deref().unwrap();
+    assert!(
+        reason.contains("'whole veg' names only what onion is: made 'chopped'"),
+        "{reason}"
+    );
+    assert_eq!(kinds(&p), []);
+}
+
+#[test]
+fn an_onion_asked_whole_in_the_tree_is_cautioned_as_left_whole() {
+    let salad = LETTUCE_SALAD.replace("S\tchopped\nM", "S\tchopped\nO\tonion\t1\nS\twhole\nM");
+    let salad = salad.replace("{lettuce}", "{lettuce,onion}");
+    let p = plan_of(
+        &[("salad.txt", &salad)],
+        &ExactMatch,
+        &query("salad", &[("lettuce", "chopped"), ("onion", "whole")]),
+    );
+    assert_eq!(kinds(&p), [CautionKind::LeftWhole]);
+}
+
+/// An omelette (class 23): the egg cracked into white and yolk, beaten back into egg, cooked in a pan.
+const OMELETTE: &str = "//
+O\tbowl\t0
+S\tempty
+O\tegg\t1
+S\twhole
+M\tcrack\t<Assumed>
+O\tegg white\t1
+S\tin\t[bowl]
+O\tegg yolk\t1
+S\tin\t[bowl]
+//
+O\tegg white\t1
+S\tin\t[bowl]
+O\tegg yolk\t1
+S\tin\t[bowl]
+O\twhisk\t1
+M\tbeat\t<Assumed>
+O\tegg\t1
+S\tbeaten
+S\tin\t[bowl]
+//
+O\tegg\t1
+S\tbeaten
+S\tin\t[bowl]
+O\tpan\t0
+S\thot
+M\tcook\t<Assumed>
+O\tomelette\t1\t23
+S\tcooked
+S\tcontains\t{egg}
+//
+";
+
+#[test]
+fn an_egg_beaten_back_into_egg_is_followed_on_into_the_omelette() {
+    let p = plan_of(
+        &[("omelette.txt", OMELETTE)],
+        &ExactMatch,
+        &query("omelette", &[("egg", "whole")]),
+    );
+    let line = &p.progress_lines[0];
+    assert_eq!(line.end_product, "omelette", "{line:#?}");
+    assert_eq!(line_motions(&p, "egg"), ["crack", "beat", "cook"]);
+    assert_eq!(kinds(&p), []);
+}
+
+/// A soup (class 1): tomato poured into a pot, cooked into soup, simmered into tomato soup; FOON's pot
+/// still lists the soup it no longer holds.
+const TOMATO_SOUP: &str = "//
+O\tpot\t0
+S\tempty
+O\ttomato\t1
+S\tchopped
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{tomato}
+O\tsoup\t1
+S\tcontains\t{tomato}
+S\tin\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{tomato}
+O\tsoup\t1
+S\tcontains\t{tomato}
+S\tin\t[pot]
+M\tsimmer\t<Assumed>
+O\tpot\t0
+S\tcontains\t{soup}
+O\ttomato soup\t1\t1
+S\tcooked
+S\tcontains\t{tomato}
+S\tin\t[pot]
+//
+";
+
+#[test]
+fn a_soup_simmered_into_another_is_followed_though_the_pot_still_lists_it() {
+    let p = plan_of(
+        &[("soup.txt", TOMATO_SOUP)],
+        &ExactMatch,
+        &query("soup", &[("tomato", "chopped")]),
+    );
+    let line = &p.progress_lines[0];
+    assert_eq!(line.end_product, "tomato soup", "{line:#?}");
+    assert_eq!(kinds(&p), []);
+}
+
+#[test]
+fn a_powder_squeezed_is_cautioned() {
+    let squeezed = "//
+O\tsugar\t1
+S\tgranulated
+O\tbowl\t0
+S\tempty
+M\tsqueeze\t<Assumed>
+O\tsweet salad\t1\t15
+S\tcontains\t{sugar}
+S\tin\t[bowl]
+//
+";
+    let p = plan_of(
+        &[("salad.txt", squeezed)],
+        &ExactMatch,
+        &query("salad", &[("sugar", "granulated")]),
+    );
+    let found = cautions(&p);
+    assert_eq!(found.len(), 1, "{found:#?}");
+    assert_eq!(found[0].kind, CautionKind::MotionOnForm);
+    assert_eq!(found[0].detail, "sugar cannot be 'squeeze'");
+}
+
+/// Fried rice (class 19): soy sauce mixed into a sauce, stirred into the rice in the pan; FOON's pan
+/// lists the sauce, and the fried rice takes it in.
+const FRIED_RICE: &str = "//
+O\tfrying pan\t0
+S\tempty
+O\trice\t1
+S\tcooked
+M\tpour\t<Assumed>
+O\tfrying pan\t0
+S\tcontains\t{rice}
+O\tfried rice\t1
+S\tcontains\t{rice}
+S\tin\t[frying pan]
+//
+O\tbowl\t0
+S\tempty
+O\tsoy sauce\t1
+S\tliquid
+M\tmix\t<Assumed>
+O\tsauce\t1
+S\tmixed
+S\tcontains\t{soy sauce}
+S\tin\t[bowl]
+//
+O\tfrying pan\t0
+S\tcontains\t{rice}
+O\tfried rice\t1
+S\tcontains\t{rice}
+S\tin\t[frying pan]
+O\tsauce\t1
+S\tmixed
+S\tcontains\t{soy sauce}
+S\tin\t[bowl]
+M\tcook and stir\t<Assumed>
+O\tfrying pan\t0
+S\tcontains\t{fried rice,sauce}
+O\tfried rice\t1
+S\tcooked
+S\tcontains\t{rice,soy sauce}
+S\tin\t[frying pan]
+//
+O\tfried rice\t1
+S\tcooked
+S\tcontains\t{rice,soy sauce}
+S\tin\t[frying pan]
+O\tplate\t0
+S\tempty
+M\tpick-and-place\t<Assumed>
+O\tegg fried rice\t1\t19
+S\tcontains\t{rice,soy sauce}
+S\ton\t[plate]
+//
+";
+
+#[test]
+fn a_sauce_stirred_into_the_rice_is_followed_into_the_dish() {
+    let p = plan_of(
+        &[("rice.txt", FRIED_RICE)],
+        &ExactMatch,
+        &query("rice", &[("rice", "cooked"), ("soy sauce", "liquid")]),
+    );
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "soy sauce")
+        .unwrap();
+    assert_eq!(line.end_product, "egg fried rice", "{line:#?}");
+    assert_eq!(kinds(&p), []);
+}
+
+/// A salad (class 15) of lettuce poured into a bowl, croutons then placed on it.
+const CROUTON_SALAD: &str = "//
+O\tbowl\t0
+S\tempty
+O\tlettuce\t1
+S\tchopped
+M\tpour\t<Assumed>
+O\tsalad base\t1
+S\tcontains\t{lettuce}
+S\tin\t[bowl]
+//
+O\tsalad base\t1
+S\tcontains\t{lettuce}
+S\tin\t[bowl]
+O\tcrouton\t1
+S\ttoasted
+M\tpick-and-place\t<Assumed>
+O\tcrouton salad\t1\t15
+S\tcontains\t{crouton,lettuce}
+S\tin\t[bowl]
+//
+";
+
+/// Olive oil as bought, in a recipe of its own.
+const OIL: &str = "//
+O\tolive oil\t1
+S\tliquid
+S\tin\t[bottle]
+O\tcup\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tolive oil\t1
+S\tliquid
+S\tin\t[cup]
+//
+";
+
+#[test]
+fn oil_is_poured_in_where_the_salad_takes_liquids_not_placed_with_the_croutons() {
+    let p = plan_of(
+        &[("salad.txt", CROUTON_SALAD), ("oil.txt", OIL)],
+        &ExactMatch,
+        &query(
+            "salad",
+            &[
+                ("lettuce", "chopped"),
+                ("crouton", "toasted"),
+                ("olive oil", "liquid"),
+            ],
+        ),
+    );
+    let reason = outcome(&p, "olive oil").reason.as_deref().unwrap();
+    assert!(reason.ends_with("added at 'pour'"), "{reason}");
+}
