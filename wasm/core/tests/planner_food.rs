@@ -427,3 +427,149 @@ fn oil_is_poured_in_where_the_salad_takes_liquids_not_placed_with_the_croutons()
     let reason = outcome(&p, "olive oil").reason.as_deref().unwrap();
     assert!(reason.ends_with("added at 'pour'"), "{reason}");
 }
+
+/// An omelette (class 23) whose cracked egg FOON lists only as the bowl's egg white and yolk.
+const CRACKED_INTO_BOWL: &str = "//
+O\tbowl\t0
+S\tempty
+O\tegg\t1
+S\twhole
+M\tcrack\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{egg white,egg yolk}
+//
+O\tbowl\t0
+S\tcontains\t{egg white,egg yolk}
+O\tfork\t1
+M\tbeat\t<Assumed>
+O\tegg\t1
+S\tbeaten
+S\tin\t[bowl]
+//
+O\tegg\t1
+S\tbeaten
+S\tin\t[bowl]
+O\tpan\t0
+S\thot
+M\tfry\t<Assumed>
+O\tplain omelette\t1\t23
+S\tcooked
+S\tcontains\t{egg}
+//
+";
+
+#[test]
+fn an_egg_the_bowl_lists_as_white_and_yolk_is_followed_into_the_omelette() {
+    let p = plan_of(
+        &[("omelette.txt", CRACKED_INTO_BOWL)],
+        &ExactMatch,
+        &query("omelette", &[("egg", "whole")]),
+    );
+    assert_eq!(line_motions(&p, "egg"), ["crack", "beat", "fry"]);
+    assert_eq!(kinds(&p), []);
+}
+
+/// A soup (class 1): chicken put into a pot, the pot boiled, the soup poured out of it.
+const CHICKEN_POT: &str = "//
+O\tpot\t0
+S\tempty
+O\tchicken breast\t1
+S\tsliced
+M\tpick-and-place\t<Assumed>
+O\tpot\t0
+S\tcontains\t{chicken breast}
+//
+O\tpot\t0
+S\tcontains\t{chicken breast}
+O\tstove\t0
+S\ton
+M\tboil\t<Assumed>
+O\tpot\t0
+S\tcontains\t{chicken breast}
+S\tcooked
+//
+O\tpot\t0
+S\tcontains\t{chicken breast}
+S\tcooked
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tchicken soup\t1\t1
+S\tcontains\t{chicken breast}
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn food_cooked_in_its_pot_is_cooked_in_its_progress_line() {
+    let p = plan_of(
+        &[("soup.txt", CHICKEN_POT)],
+        &ExactMatch,
+        &query("soup", &[("chicken breast", "sliced")]),
+    );
+    let line = &p.progress_lines[0];
+    let states: Vec<&str> = line
+        .state
+        .iter()
+        .map(|s| s.physical_state.as_str())
+        .collect();
+    assert!(states.contains(&"sliced, cooked"), "{line:#?}");
+    assert_eq!(
+        line_motions(&p, "chicken breast"),
+        ["pick-and-place", "boil", "pour"]
+    );
+    assert_eq!(kinds(&p), []);
+}
+
+/// A salad (class 15): tofu coated with flour ("floured {flour}"), fried, tossed with lettuce.
+const FLOURED: &str = "//
+O\tflour\t1
+S\tpowder
+O\ttofu\t1
+S\tcubed
+M\tcoat\t<Assumed>
+O\ttofu\t1
+S\tcubed
+S\tfloured\t{flour}
+//
+O\ttofu\t1
+S\tcubed
+S\tfloured\t{flour}
+O\tpan\t0
+S\thot
+M\tfry\t<Assumed>
+O\ttofu\t1
+S\tfried
+//
+O\ttofu\t1
+S\tfried
+O\tlettuce\t1
+S\tchopped
+M\tmix\t<Assumed>
+O\ttofu salad\t1\t15
+S\tcontains\t{lettuce,tofu}
+//
+";
+
+#[test]
+fn flour_coating_a_food_goes_on_with_that_food() {
+    let p = plan_of(
+        &[("salad.txt", FLOURED)],
+        &ExactMatch,
+        &query(
+            "salad",
+            &[
+                ("flour", "powder"),
+                ("tofu", "cubed"),
+                ("lettuce", "chopped"),
+            ],
+        ),
+    );
+    assert_eq!(
+        line_motions(&p, "flour"),
+        ["coat", "fry", "mix"],
+        "{:#?}",
+        p.progress_lines
+    );
+    assert_eq!(kinds(&p), []);
+}

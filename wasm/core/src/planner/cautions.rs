@@ -103,6 +103,10 @@ fn line_caution(plan: &Plan, line: &ProgressLine) -> Option<Caution> {
             detail,
         })
     };
+    if line.motion.is_empty() {
+        let detail = format!("{food} is never used on the way to {}", plan.goal.label);
+        return caution(CautionKind::ShortOfDish, detail);
+    }
     if line.end_product != plan.goal.label {
         let last = line.state.last().map_or("", |s| s.physical_state.as_str());
         let detail = format!(
@@ -111,7 +115,9 @@ fn line_caution(plan: &Plan, line: &ProgressLine) -> Option<Caution> {
         );
         return caution(CautionKind::ShortOfDish, detail);
     }
-    let cooked = reaches(line, Category::Cooked) || line.motion.iter().any(|m| foods::cooks(m));
+    let cooked = reaches(line, Category::Cooked)
+        || line.motion.iter().any(|m| foods::cooks(m))
+        || dish_cooked(plan);
     if foods::must_cook(&food) && !cooked && !reaches(line, Category::Preserved) {
         return caution(
             CautionKind::Uncooked,
@@ -124,6 +130,14 @@ fn line_caution(plan: &Plan, line: &ProgressLine) -> Option<Caution> {
         return caution(CautionKind::LeftWhole, detail);
     }
     None
+}
+
+/// Whether a unit cooks the dish itself once it is made (the pancake flipped, then cooked): what is in it
+/// is cooked with it.
+fn dish_cooked(plan: &Plan) -> bool {
+    plan.units
+        .iter()
+        .any(|u| foods::cooks(&u.motion) && u.inputs.iter().any(|n| n.label == plan.goal.label))
 }
 
 /// The words of the line's physical states ("in batter, baked" is "in batter" and "baked").

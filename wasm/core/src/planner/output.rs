@@ -1,7 +1,7 @@
 //! From the modified tree to the plan: units in execution order, progress lines (section IV-A) and one
 //! plain sentence per unit.
 
-use super::states::state_text;
+use super::states::{category, state_text, Category};
 use super::tree::{SlotId, TUnitId, Tree};
 use crate::kb::{Goal, KnowledgeBase};
 use crate::model::{ObjectNode, State, StateArg};
@@ -391,7 +391,7 @@ fn walk<'t>(
                 let lists = |food: bool| {
                     outputs.iter().find(|o| {
                         let slot = &tree.slots[o.0];
-                        slot.utensil != food && slot.node.contents().any(|i| i == label)
+                        slot.utensil != food && names_in_a_list(&slot.node, label)
                     })
                 };
                 let fresh = || {
@@ -429,10 +429,12 @@ fn walk<'t>(
                     Some(&(o, _)) => {
                         let n = &tree.slots[o].node;
                         let state = if tree.slots[o].utensil {
-                            // put in a vessel as it was: the same state, a new place
+                            // put in a vessel as it was: the same state, a new place; cooked there
+                            // when the vessel's contents are
                             let rel = relations.to(&n.label);
+                            let before = &states[states.len() - 1].physical_state;
                             ProgressState {
-                                physical_state: states[states.len() - 1].physical_state.clone(),
+                                physical_state: with_vessel_cooking(before, n),
                                 location: spaced(rel, &n.label),
                             }
                         } else {
@@ -473,6 +475,32 @@ fn walk<'t>(
         states,
         motions,
         into,
+    }
+}
+
+/// Whether a state list of `n` names `label` or a part of it (the egg cracked into "egg white" and
+/// "egg yolk"): its contents, or what coats it ("floured {flour}").
+fn names_in_a_list(n: &ObjectNode, label: &str) -> bool {
+    let part = |i: &str| {
+        i.strip_prefix(label)
+            .is_some_and(|rest| rest.is_empty() || rest.starts_with(' '))
+    };
+    n.states.iter().any(|s| match &s.arg {
+        Some(StateArg::Ingredients(list)) => list.iter().any(|i| part(i)),
+        _ => false,
+    })
+}
+
+/// A food's state `before` in vessel `v`, with the cooking the vessel says its contents had ("halved"
+/// in a pot "cooked": "halved, cooked").
+fn with_vessel_cooking(before: &SmolStr, v: &ObjectNode) -> SmolStr {
+    let cooked = v
+        .physical_states()
+        .find(|s| category(s) == Category::Cooked && !before.split(", ").any(|w| w == *s));
+    match cooked {
+        Some(s) if before.is_empty() => s.into(),
+        Some(s) => format!("{before}, {s}").into(),
+        None => before.clone(),
     }
 }
 
