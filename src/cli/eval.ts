@@ -9,7 +9,7 @@ import { parseArgs } from "node:util";
 import { describeError } from "../planner/index";
 import { loadPlannerFromDisk, ROOT, STARTER_KB_DIR } from "../planner/node";
 import { metricsTable } from "../eval/aggregate";
-import { brokenInvariants, formatTable, recipesCsv, summaryCsv, type EvalResults } from "../eval/format";
+import { brokenInvariants, cautionExamples, formatTable, recipesCsv, summaryCsv, type EvalResults } from "../eval/format";
 import { planFunction } from "../eval/planner-adapter";
 import { runBatch } from "../eval/runner";
 import { readQueries } from "./queries";
@@ -77,6 +77,8 @@ export function evalCommand(args: string[]): void {
     const title = `${v === "modified" ? "With" : "Without"} tree modification — ${queries.length} queries, knowledge base ${kbName}`;
     process.stdout.write(formatTable(table.filter((r) => r.variant === v), title) + "\n");
   }
+  const examples = cautionExamples(table);
+  if (examples.length > 0) process.stdout.write(examples.join("\n") + "\n\n");
 
   const name = `eval-${variants.length === 2 ? "both" : variants[0]!}`;
   mkdirSync(out, { recursive: true });

@@ -1,6 +1,7 @@
 // The metrics table: batch records aggregated per dish type and overall, per variant.
 
 import { emptyCases } from "./coverage";
+import { CAUTION_KINDS, emptyCautionCounts } from "./plausibility";
 import { LITTLE_REFERENCE, type CaseCounts, type EvalRecord, type MetricsRow, type PlanMetrics, type Variant } from "./types";
 
 export const ALL = "all";
@@ -23,6 +24,20 @@ function addCases(total: CaseCounts, add: CaseCounts): void {
   total.c3 += add.c3;
   total.c4 += add.c4;
   total.none += add.none;
+}
+
+/** Examples of cautions kept per group row. */
+export const CAUTION_EXAMPLES = 5;
+
+function cautionsOf(records: readonly EvalRecord[]): Pick<MetricsRow, "cautions" | "caution_examples"> {
+  const cautions = emptyCautionCounts();
+  const examples: string[] = [];
+  for (const r of records) {
+    if (!r.ok) continue;
+    for (const kind of CAUTION_KINDS) cautions[kind] += r.metrics.cautions[kind];
+    for (const d of r.metrics.caution_details) if (examples.length < CAUTION_EXAMPLES) examples.push(`${r.recipe.type}/${r.recipe.id} ${d}`);
+  }
+  return { cautions, caution_examples: examples };
 }
 
 export function metricsRow(group: string, variant: Variant, records: readonly EvalRecord[]): MetricsRow {
@@ -60,6 +75,7 @@ export function metricsRow(group: string, variant: Variant, records: readonly Ev
     low_confidence: lowConfidence,
     low_confidence_share: substitutions === 0 ? 0 : lowConfidence / substitutions,
     unplannable: sum(metrics.map((m) => m.unplannable)),
+    ...cautionsOf(records),
     ms_mean: mean(ms),
     ms_p95: percentile(ms, 95),
     ms_max: ms.length === 0 ? 0 : Math.max(...ms),

@@ -2,6 +2,7 @@
 // one line per metric, one column per dish type and `all`. Plus CSV and JSON of the results.
 
 import { toCsv, type Cell } from "./csv";
+import { CAUTION_KINDS, CAUTION_LABELS } from "./plausibility";
 import { LITTLE_REFERENCE, type EvalRecord, type MetricsRow, type Variant } from "./types";
 
 const pct = (x: number): string => `${(x * 100).toFixed(1)}%`;
@@ -40,6 +41,7 @@ export const METRIC_LINES: readonly MetricLine[] = [
   { key: "case_none", label: "no case", format: (r) => String(r.cases.none) },
   { key: "unplannable", label: "unplannable ingredients", format: (r) => String(r.unplannable) },
   { key: "low_confidence_share", label: "low-confidence substitutions", format: (r) => `${pct(r.low_confidence_share)} (${r.low_confidence}/${r.substitutions})` },
+  ...CAUTION_KINDS.map((kind): MetricLine => ({ key: kind, label: CAUTION_LABELS[kind], format: (r) => String(r.cautions[kind]) })),
   { key: "ms_mean", label: "time mean (ms)", format: (r) => fixed(1)(r.ms_mean) },
   { key: "ms_p95", label: "time p95 (ms)", format: (r) => fixed(1)(r.ms_p95) },
   { key: "ms_max", label: "time max (ms)", format: (r) => fixed(1)(r.ms_max) },
@@ -56,6 +58,11 @@ export function formatTable(rows: readonly MetricsRow[], title: string): string 
   return [title, render(header), ...body.map(render)].join("\n") + "\n";
 }
 
+/** The cautions of the `all` row of each variant, as lines to print under the table. */
+export function cautionExamples(rows: readonly MetricsRow[]): string[] {
+  return rows.filter((r) => r.group === "all" && r.caution_examples.length > 0).flatMap((r) => [`${r.variant}, first cautions:`, ...r.caution_examples.map((e) => `  ${e}`)]);
+}
+
 /** Structural invariants that break, as messages (empty when all hold). */
 export function brokenInvariants(rows: readonly MetricsRow[]): string[] {
   return rows
@@ -68,7 +75,7 @@ export function brokenInvariants(rows: readonly MetricsRow[]): string[] {
 const SUMMARY_COLUMNS = [
   "variant", "group", "queries", "plans", "errors", "errors_by_code", "units_mean", "duplicate_units", "units_before_inputs",
   "dead_units", "goal_missing", "object_share", "dish_share", "pair_share", "extra_mean", "plans_with_extra", "plans_little_reference", "case1", "case2", "case3",
-  "case4", "case_none", "unplannable", "substitutions", "low_confidence", "low_confidence_share", "ms_mean", "ms_p95",
+  "case4", "case_none", "unplannable", "substitutions", "low_confidence", "low_confidence_share", ...CAUTION_KINDS, "ms_mean", "ms_p95",
   "ms_max", "ms_total",
 ] as const;
 
@@ -79,7 +86,7 @@ export function summaryCsv(rows: readonly MetricsRow[]): string {
       r.variant, r.group, r.queries, r.plans, r.errors, Object.entries(r.errors_by_code).map(([c, n]) => `${c}:${n}`).join(" "),
       r.units_mean, r.duplicate_units, r.units_before_inputs, r.dead_units, r.goal_missing, r.object_share, r.dish_share, r.pair_share,
       r.extra_mean, r.plans_with_extra, r.plans_little_reference, r.cases.c1, r.cases.c2, r.cases.c3, r.cases.c4, r.cases.none, r.unplannable,
-      r.substitutions, r.low_confidence, r.low_confidence_share, r.ms_mean, r.ms_p95, r.ms_max, r.ms_total,
+      r.substitutions, r.low_confidence, r.low_confidence_share, ...CAUTION_KINDS.map((k) => r.cautions[k]), r.ms_mean, r.ms_p95, r.ms_max, r.ms_total,
     ]),
   );
 }
@@ -87,7 +94,7 @@ export function summaryCsv(rows: readonly MetricsRow[]): string {
 const RECIPE_COLUMNS = [
   "type", "id", "variant", "ok", "error_code", "error", "ms", "units", "duplicate_units", "units_before_inputs", "dead_units",
   "goal_produced", "query_objects", "objects_in_tree", "objects_in_dish", "query_pairs", "pairs_in_tree", "extra_ingredients", "reference_units", "case1", "case2",
-  "case3", "case4", "case_none", "substitutions", "low_confidence", "unplannable", "violations",
+  "case3", "case4", "case_none", "substitutions", "low_confidence", "unplannable", "violations", "cautions",
 ] as const;
 
 export function recipesCsv(records: readonly EvalRecord[]): string {
@@ -101,6 +108,7 @@ export function recipesCsv(records: readonly EvalRecord[]): string {
         ...head, null, null, r.ms, m.units, m.duplicate_units, m.units_before_inputs, m.dead_units, m.goal_produced,
         m.query_objects, m.objects_in_tree, m.objects_in_dish, m.query_pairs, m.pairs_in_tree, m.extra_ingredients.join(";"), m.reference_units, m.cases.c1,
         m.cases.c2, m.cases.c3, m.cases.c4, m.cases.none, m.substitutions, m.low_confidence, m.unplannable, m.violations.join(" | "),
+        m.caution_details.join(" | "),
       ];
     }),
   );

@@ -2,9 +2,10 @@
 
 import type { Plan } from "../planner/types";
 import { coverageMetrics } from "./coverage";
+import { plausibilityMetrics } from "./plausibility";
 import { structureMetrics } from "./structure";
 import type { PlanMetrics } from "./types";
 
 export function planMetrics(plan: Plan): PlanMetrics {
-  return { ...structureMetrics(plan.units, plan.goal), ...coverageMetrics(plan) };
+  return { ...structureMetrics(plan.units, plan.goal), ...coverageMetrics(plan), ...plausibilityMetrics(plan) };
 }

@@ -2,7 +2,7 @@
 // Shared by the CLI (src/cli/eval.ts) and the browser workbench (src/workbench/), so both compute
 // the same numbers from the same code.
 
-import type { ErrorCode, Query } from "../planner/types";
+import type { CautionKind, ErrorCode, Query } from "../planner/types";
 
 /** A plan with tree modification (the method) or the reference tree as retrieved. */
 export type Variant = "modified" | "unmodified";
@@ -55,7 +55,14 @@ export interface CaseCounts {
   none: number;
 }
 
-export interface PlanMetrics extends StructureMetrics, CoverageMetrics {}
+/** What the planner's food knowledge finds a cook would stop at (`src/eval/plausibility.ts`). */
+export interface PlausibilityMetrics {
+  cautions: Record<CautionKind, number>;
+  /** "kind: detail", one per caution. */
+  caution_details: string[];
+}
+
+export interface PlanMetrics extends StructureMetrics, CoverageMetrics, PlausibilityMetrics {}
 
 export interface RecipeRef {
   id: string;
@@ -107,6 +114,10 @@ export interface MetricsRow {
   /** low_confidence / substitutions, 0..1 (0 without substitutions). */
   low_confidence_share: number;
   unplannable: number;
+  /** Cautions per kind, summed over plans. */
+  cautions: Record<CautionKind, number>;
+  /** The first few cautions of the group, "type/id kind: detail". */
+  caution_examples: string[];
   ms_mean: number;
   ms_p95: number;
   ms_max: number;

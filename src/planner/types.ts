@@ -118,6 +118,16 @@ export interface ProgressLine {
   end_product: string;
 }
 
+/** A kind of culinary error the planner's food knowledge finds in a plan (`planner::cautions`). */
+export type CautionKind = "motion_on_form" | "uncooked" | "short_of_dish" | "left_whole";
+
+/** What a cook would stop at in a plan: the food and what is wrong, in words. */
+export interface Caution {
+  kind: CautionKind;
+  food: string;
+  detail: string;
+}
+
 export interface Plan {
   format_version: number;
   query: Query;
@@ -137,6 +147,7 @@ export interface Plan {
   removed: string[];
   progress_lines: ProgressLine[];
   steps: string[];
+  cautions: Caution[];
 }
 
 /** Export formats of a plan. */

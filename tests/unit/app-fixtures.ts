@@ -50,5 +50,6 @@ export function fixturePlan(): Plan {
       { ingredient: "chili pepper", state: [{ physical_state: "whole", location: "" }, { physical_state: "chopped", location: "" }, { physical_state: "chopped", location: "in bowl" }, { physical_state: "in salsa", location: "in bowl" }], motion: ["chop", "pour", "mix"], end_product: "salsa" },
     ],
     steps: ["Dice the tomato.", "Chop the chili pepper.", "Pour the tomato and the chili pepper into the bowl.", "Mix them."],
+    cautions: [],
   };
 }

@@ -1,6 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { metricsTable, percentile } from "../../src/eval/aggregate";
-import { brokenInvariants, formatTable, recipesCsv, summaryCsv } from "../../src/eval/format";
+import { brokenInvariants, cautionExamples, formatTable, recipesCsv, summaryCsv } from "../../src/eval/format";
 import { parseCsv } from "../../src/eval/csv";
 import { planMetrics } from "../../src/eval/metrics";
 import { runBatch } from "../../src/eval/runner";
@@ -70,6 +70,19 @@ describe("batch records and the metrics table", () => {
     const recipes = parseCsv(recipesCsv(records));
     expect(recipes).toHaveLength(7);
     expect(new Set(recipes.map((r) => r.length)).size).toBe(1);
+  });
+
+  it("counts each plan's cautions by kind, with examples, beside the structural metrics", () => {
+    const uncooked = (request: PlanRequest) => ({
+      ...plan(cleanUnits(), request.query),
+      cautions: [{ kind: "uncooked" as const, food: "chicken", detail: "chicken reaches salad uncooked" }],
+    });
+    const rows = metricsTable([...runBatch(uncooked, [q("salad", "u")], ["modified"], now), ...runBatch(fakePlanner, [q("soup", "v")], ["modified"], now)], "modified");
+    expect(rows.map((r) => [r.group, r.cautions.uncooked, r.cautions.motion_on_form])).toEqual([["salad", 1, 0], ["soup", 0, 0], ["all", 1, 0]]);
+    expect(formatTable(rows, "title")).toMatch(/must-cook foods reaching the dish uncooked\s+1\s+0\s+1/);
+    expect(cautionExamples(rows)).toEqual(["modified, first cautions:", "  salad/u uncooked: chicken reaches salad uncooked"]);
+    const summary = parseCsv(summaryCsv(rows));
+    expect(summary[3]![summary[0]!.indexOf("uncooked")]).toBe("1");
   });
 
   it("percentile by nearest rank", () => {

@@ -48,5 +48,6 @@ export function plan(units: PlanUnit[] = cleanUnits(), query: Partial<Query> = {
     removed: [],
     progress_lines: q.ingredients.map((i) => ({ ingredient: i.object, state: [{ physical_state: "whole", location: "" }, { physical_state: i.state, location: "bowl" }], motion: ["dice"], end_product: "salad" })),
     steps: units.map((u) => u.motion),
+    cautions: [],
   };
 }

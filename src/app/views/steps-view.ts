@@ -20,15 +20,27 @@ const ORIGIN_WORDS: Record<string, string> = {
 export function mountStepsView(host: HTMLElement, store: Store, actions: StepsViewActions): () => void {
   const titleId = uid("steps-title");
   const list = el("ol", { class: "steps", role: "listbox", "aria-labelledby": titleId });
-  host.replaceChildren(el("h2", { id: titleId, text: "Steps" }), list);
+  const cautions = el("div", { class: "cautions", role: "note", hidden: true });
+  host.replaceChildren(el("h2", { id: titleId, text: "Steps" }), cautions, list);
   let plan: Plan | null = null;
 
   function items(): HTMLLIElement[] {
     return [...list.querySelectorAll<HTMLLIElement>("li")];
   }
 
+  // what the planner's food knowledge says a cook would stop at: the plan is shown, never silently wrong
+  function renderCautions(next: Plan | null): void {
+    const found = next?.cautions ?? [];
+    cautions.hidden = found.length === 0;
+    cautions.replaceChildren(
+      el("p", { text: "A cook would check:" }),
+      el("ul", {}, ...found.map((c) => el("li", { "data-kind": c.kind, text: c.detail }))),
+    );
+  }
+
   function render(next: Plan | null): void {
     plan = next;
+    renderCautions(next);
     if (next === null || next.units.length === 0) {
       list.replaceChildren(el("li", { class: "muted", role: "option", "aria-disabled": "true", text: next === null ? "No plan yet." : "The plan has no steps." }));
       return;

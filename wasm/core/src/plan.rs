@@ -167,6 +167,46 @@ pub struct ProgressLine {
     pub end_product: SmolStr,
 }
 
+/// A kind of culinary error a plan can have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CautionKind {
+    /// A food takes a motion its form rules out (a powder squeezed, a liquid baked).
+    MotionOnForm,
+    /// A food that must be cooked reaches the dish uncooked.
+    Uncooked,
+    /// An asked ingredient's progress line ends short of the goal dish.
+    ShortOfDish,
+    /// Produce a cook prepares goes into the dish whole and raw.
+    LeftWhole,
+}
+
+impl CautionKind {
+    pub const ALL: [CautionKind; 4] = [
+        CautionKind::MotionOnForm,
+        CautionKind::Uncooked,
+        CautionKind::ShortOfDish,
+        CautionKind::LeftWhole,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            CautionKind::MotionOnForm => "motion_on_form",
+            CautionKind::Uncooked => "uncooked",
+            CautionKind::ShortOfDish => "short_of_dish",
+            CautionKind::LeftWhole => "left_whole",
+        }
+    }
+}
+
+/// One thing a cook would stop at, with the food and what is wrong in words.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Caution {
+    pub kind: CautionKind,
+    pub food: String,
+    pub detail: String,
+}
+
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Plan {
     pub format_version: u32,
@@ -186,4 +226,6 @@ pub struct Plan {
     pub progress_lines: Vec<ProgressLine>,
     /// One plain sentence per unit, same order as `units`.
     pub steps: Vec<String>,
+    /// What a cook would stop at in the plan (`planner::cautions`), in the order found.
+    pub cautions: Vec<Caution>,
 }

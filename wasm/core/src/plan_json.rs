@@ -6,8 +6,8 @@
 //! for escapes, and writing took twice as long.
 
 use crate::plan::{
-    Alternative, DishClassRef, GoalInfo, IngredientOutcome, Match, Origin, Plan, PlanNode,
-    PlanUnit, ProgressLine, ProgressState, Query, QueryIngredient, Status,
+    Alternative, Caution, CautionKind, DishClassRef, GoalInfo, IngredientOutcome, Match, Origin,
+    Plan, PlanNode, PlanUnit, ProgressLine, ProgressState, Query, QueryIngredient, Status,
 };
 use smol_str::SmolStr;
 use std::sync::Arc;
@@ -226,6 +226,12 @@ name!(Origin {
     Attached => "attached"
 });
 name!(Status { Planned => "planned", Unplannable => "unplannable" });
+name!(CautionKind {
+    MotionOnForm => "motion_on_form",
+    Uncooked => "uncooked",
+    ShortOfDish => "short_of_dish",
+    LeftWhole => "left_whole"
+});
 
 /// Structs field by field, in declaration order and with their serde names. The struct is taken apart
 /// without `..`, so a field added to `plan.rs` and not here does not compile.
@@ -278,8 +284,10 @@ fields!(Plan {
     "ingredients" => ingredients,
     "removed" => removed,
     "progress_lines" => progress_lines,
-    "steps" => steps
+    "steps" => steps,
+    "cautions" => cautions
 });
+fields!(Caution { "kind" => kind, "food" => food, "detail" => detail });
 
 // the two with a field left out when empty (`skip_serializing_if`), taken apart like the others
 impl Json for Query {

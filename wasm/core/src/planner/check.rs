@@ -197,6 +197,7 @@ mod tests {
             removed: Vec::new(),
             progress_lines: Vec::new(),
             steps: Vec::new(),
+            cautions: Vec::new(),
         }
     }
 

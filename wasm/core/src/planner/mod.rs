@@ -14,7 +14,8 @@ mod score;
 pub mod states;
 mod tree;
 
-pub use cautions::{cautions, Caution, CautionKind};
+pub use crate::plan::{Caution, CautionKind};
+pub use cautions::cautions;
 pub use check::{available_at_start, violations};
 pub use index::PlannerIndex;
 
@@ -98,7 +99,7 @@ pub fn plan(
             name: name.to_string(),
         })
     });
-    Ok(output::build(output::Parts {
+    let mut plan = output::build(output::Parts {
         kb,
         tree: &tree,
         order: &scheduled.order,
@@ -112,7 +113,9 @@ pub fn plan(
         outcomes,
         removed,
         format_version: FORMAT_VERSION,
-    }))
+    });
+    plan.cautions = cautions::cautions(&plan);
+    Ok(plan)
 }
 
 /// Says so when the plan keeps next to nothing of the reference task tree (at most two of its units,

@@ -111,6 +111,7 @@ pub(crate) fn build(p: Parts) -> Plan {
         removed: p.removed,
         progress_lines,
         steps,
+        cautions: Vec::new(),
     }
 }
 
