@@ -16,6 +16,8 @@ pub struct DishClass {
     /// `name` in normal form, as dish types are compared with it.
     pub normal_name: String,
     pub keywords: Vec<String>,
+    /// Classes made the same way, whose recipes may serve as reference when none of this one fits.
+    pub kin: Vec<String>,
 }
 
 pub(crate) fn data_lines(text: &str) -> impl Iterator<Item = &str> {
@@ -33,21 +35,41 @@ pub fn dish_classes() -> &'static [DishClass] {
                 let mut parts = line.split('\t');
                 let index = parts.next()?.parse().ok()?;
                 let name = parts.next()?.to_string();
-                let keywords = parts
-                    .next()
-                    .unwrap_or("")
-                    .split(',')
-                    .map(normalize_label)
-                    .filter(|k| !k.is_empty())
-                    .collect();
+                let mut list = || -> Vec<String> {
+                    parts
+                        .next()
+                        .unwrap_or("")
+                        .split(',')
+                        .map(normalize_label)
+                        .filter(|k| !k.is_empty() && k != "-")
+                        .collect()
+                };
+                let keywords = list();
+                let kin = list();
                 Some(DishClass {
                     index,
                     normal_name: normalize_label(&name),
                     name,
                     keywords,
+                    kin,
                 })
             })
             .collect()
+    })
+}
+
+/// The indices of the classes kin to class `index` (`DishClass::kin`).
+pub fn kin_classes(index: u32) -> impl Iterator<Item = u32> {
+    let classes = dish_classes();
+    let kin = classes
+        .iter()
+        .find(|c| c.index == index)
+        .map_or(&[][..], |c| &c.kin[..]);
+    kin.iter().filter_map(|k| {
+        classes
+            .iter()
+            .find(|c| &c.normal_name == k)
+            .map(|c| c.index)
     })
 }
 
@@ -167,6 +189,21 @@ pub const RAW_STATES: &[&str] = &[
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_kin_class_is_a_class() {
+        for c in dish_classes() {
+            assert_eq!(
+                kin_classes(c.index).count(),
+                c.kin.len(),
+                "dish_classes.tsv: a kin class of '{}' is not a class: {:?}",
+                c.name,
+                c.kin
+            );
+        }
+        let bread = dish_class_of("bread").unwrap();
+        assert!(kin_classes(bread).any(|k| dish_class_name(k) == Some("pizza")));
+    }
 
     #[test]
     fn has_thirty_classes_in_order() {

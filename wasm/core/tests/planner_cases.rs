@@ -516,6 +516,47 @@ fn the_dish_type_picks_the_reference_goal() {
     assert_eq!(salad.goal.label, "garden salad");
 }
 
+/// A recipe (FOON lines) mixing `foods` in a bowl into `dish` of class `class`.
+fn mixed_dish(foods: &[&str], dish: &str, class: u32) -> String {
+    let inputs: String = foods
+        .iter()
+        .map(|f| format!("O\t{f}\t1\nS\tfresh\n"))
+        .collect();
+    format!(
+        "//\nO\tbowl\t0\nS\tempty\n{inputs}M\tmix\t<Assumed>\nO\t{dish}\t1\t{class}\nS\tcontains\t{{{}}}\n//\n",
+        foods.join(",")
+    )
+}
+
+#[test]
+fn a_dish_type_with_no_recipe_like_the_query_borrows_one_of_a_kin_type() {
+    // bread (class 0) asked of flour, water and yeast: the only bread is a garlic toast; a pizza dough
+    // (class 3, kin to bread) fits, and a soup (class 1, not kin) fits as well but is not taken
+    let toast = mixed_dish(&["bread", "garlic", "butter"], "garlic toast", 0);
+    let pizza = mixed_dish(&["flour", "water", "yeast", "cheese"], "cheese pizza", 3);
+    let soup = mixed_dish(&["flour", "water", "yeast"], "yeast soup", 1);
+    let files = [
+        ("toast.txt", toast.as_str()),
+        ("pizza.txt", &pizza),
+        ("soup.txt", &soup),
+    ];
+    let items = [("flour", "fresh"), ("water", "fresh"), ("yeast", "fresh")];
+    let p = plan_of(&files, &ExactMatch, &query("bread", &items));
+    assert_eq!(p.goal.label, "cheese pizza");
+    assert!(
+        p.notes
+            .iter()
+            .any(|n| n.contains("a dish made the same way")),
+        "{:?}",
+        p.notes
+    );
+    // a bread recipe that fits well is kept, though the pizza fits better still
+    let loaf = mixed_dish(&["flour", "water", "yeast", "salt"], "loaf", 0);
+    let files = [("loaf.txt", loaf.as_str()), ("pizza.txt", &pizza)];
+    let p = plan_of(&files, &ExactMatch, &query("bread", &items));
+    assert_eq!(p.goal.label, "loaf");
+}
+
 #[test]
 fn an_empty_query_is_a_typed_error() {
     let err = try_plan(

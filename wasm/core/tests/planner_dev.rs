@@ -13,12 +13,12 @@ use std::collections::BTreeMap;
 
 #[test]
 fn every_dev_query_plans_soundly_with_exact_matching() {
-    check_dev_queries(&ExactMatch, "exact", (63, 22));
+    check_dev_queries(&ExactMatch, "exact", (30, 16));
 }
 
 #[test]
 fn every_dev_query_plans_soundly_with_embeddings() {
-    check_dev_queries(&embeddings(), "embeddings", (54, 34));
+    check_dev_queries(&embeddings(), "embeddings", (21, 27));
 }
 
 /// `most_cautions`: at most so many uncooked and left-whole cautions in the modified plans.

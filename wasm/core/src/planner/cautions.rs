@@ -4,6 +4,7 @@
 use super::states::{category, Category};
 use crate::foods;
 use crate::plan::{Caution, CautionKind, Plan, ProgressLine, Status};
+use crate::taxonomy::is_utensil;
 
 /// What a cook would stop at in `plan`; empty when nothing.
 pub fn cautions(plan: &Plan) -> Vec<Caution> {
@@ -15,20 +16,20 @@ pub fn cautions(plan: &Plan) -> Vec<Caution> {
 }
 
 /// Units giving a food a motion its form cannot take, once per food and motion. In a unit of several
-/// foods the motion is the one of those that take it (the avocado mashed with the salt), so a food is
-/// named only when none of the others of a known form takes it either.
+/// foods the motion is the one of those that take it (the avocado mashed with the salt, the pastry cut
+/// with its filling), so a food is named only when no other food of the unit takes it either.
 fn motions_on_forms(plan: &Plan) -> Vec<Caution> {
     let mut out: Vec<Caution> = Vec::new();
     for unit in &plan.units {
-        let mut formed = unit
+        let mut food = unit
             .inputs
             .iter()
             .map(|n| n.label.as_str())
-            .filter(|f| foods::form_of(f).is_some());
-        if formed.clone().any(|f| foods::takes(f, &unit.motion)) {
+            .filter(|l| !is_utensil(l));
+        if food.clone().any(|f| foods::takes(f, &unit.motion)) {
             continue;
         }
-        for food in formed.by_ref() {
+        for food in food.by_ref() {
             let detail = format!("{food} cannot be '{}'", unit.motion);
             if !out.iter().any(|c| c.detail == detail) {
                 out.push(Caution {

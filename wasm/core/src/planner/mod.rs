@@ -49,13 +49,12 @@ pub fn plan(
         }
     }
     let scorer = score::Scorer::new(similarity, index, &labels);
-    let chosen =
-        goal::select(kb, index, &scorer, class, &mut notes, &query.dish_type).ok_or_else(|| {
-            FoonError::new(
-                ErrorCode::NoGoal,
-                "the knowledge base has no goal node with a functional unit that makes it",
-            )
-        })?;
+    let chosen = goal::select(kb, index, &scorer, class, &mut notes, &query).ok_or_else(|| {
+        FoonError::new(
+            ErrorCode::NoGoal,
+            "the knowledge base has no goal node with a functional unit that makes it",
+        )
+    })?;
     let reference = retrieve::retrieve(
         kb,
         index,

@@ -444,17 +444,21 @@ fn walk<'t>(
                                 location: location(n),
                             }
                         };
-                        if states.last() == Some(&state) {
+                        let cooks = crate::foods::cooks(&tree.units[u].motion);
+                        if states.last() == Some(&state) && !cooks {
                             // already there (FOON lists what a bowl holds among the inputs of
-                            // the next thing added to it): no step of its own
+                            // the next thing added to it): no step of its own, unless it cooks
                             motions.pop();
                         } else {
                             states.push(state);
                         }
                         if tree.slots[o].utensil {
-                            // in a vessel: what is done to the vessel's contents is done to it
+                            // in a vessel: what is done to the vessel's contents is done to it (in the
+                            // vessel the unit took, where FOON uses that again rather than its output)
                             seen.push(o);
-                            at = o;
+                            if uses.first_use[o] != usize::MAX || !tree.slots[at].utensil {
+                                at = o;
+                            }
                             from = pos + 1;
                             continue;
                         }
