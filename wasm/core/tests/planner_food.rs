@@ -573,3 +573,19 @@ fn flour_coating_a_food_goes_on_with_that_food() {
     );
     assert_eq!(kinds(&p), []);
 }
+
+#[test]
+fn an_onion_asked_peeled_is_still_chopped_before_it_joins_the_salad() {
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("prep.txt", PREPARED)],
+        &ExactMatch,
+        &query("salad", &[("lettuce", "chopped"), ("onion", "peeled")]),
+    );
+    assert_eq!(line_motions(&p, "onion"), ["chop", "mix"], "{:#?}", p.units);
+    let reason = outcome(&p, "onion").reason.as_deref().unwrap();
+    assert!(
+        reason.contains("'chop' to make it 'chopped', as a cook would"),
+        "{reason}"
+    );
+    assert_eq!(kinds(&p), []);
+}

@@ -67,7 +67,12 @@ fn line_caution(plan: &Plan, line: &ProgressLine) -> Option<Caution> {
         let detail = format!("{food} is never used on the way to {}", plan.goal.label);
         return caution(CautionKind::ShortOfDish, detail);
     }
-    if line.end_product != plan.goal.label {
+    let inside = format!("in {}", plan.goal.label);
+    let entered = line
+        .state
+        .iter()
+        .any(|s| s.physical_state.split(", ").any(|w| w == inside));
+    if line.end_product != plan.goal.label || !entered {
         let last = line.state.last().map_or("", |s| s.physical_state.as_str());
         let detail = format!(
             "{food} ends in {} ({last}), not in {}",
@@ -112,14 +117,18 @@ fn reaches(line: &ProgressLine, c: Category) -> bool {
     state_words(line).any(|w| category(w) == c)
 }
 
-/// Motion words that break a food down whole as it is (a banana blended into the smoothie).
-const BREAKING_DOWN: &[&str] = &[
-    "blend", "mash", "puree", "purée", "process", "juice", "crush",
+/// Motion words that break down a food and what it is in (a banana blended into the smoothie).
+const BREAKING_DOWN: &[&str] = &["blend", "mash", "puree", "purée", "process", "crush"];
+
+/// Motion words that cut a food itself (ginger grated into the pot, an egg cracked into the bowl).
+const CUTTING: &[&str] = &[
+    "cut", "chop", "slice", "dice", "mince", "grate", "shred", "julienne", "zest", "tear", "crack",
+    "squeeze", "juice",
 ];
 
 /// Whether the food was prepared along the line: its own states (before it joins anything) cut,
-/// ground, juiced, mashed or shaped, or brought to `prepared` (an egg cracked), or a motion broke it
-/// down.
+/// ground, juiced, mashed, shaped or dried, or brought to `prepared` (an egg cracked), or a motion cut it
+/// while it was itself or broke it down later.
 fn changed(line: &ProgressLine, prepared: &str) -> bool {
     let own = line
         .state
@@ -137,11 +146,16 @@ fn changed(line: &ProgressLine, prepared: &str) -> bool {
                     | Category::Liquid
                     | Category::Mixed
                     | Category::Shaped
+                    | Category::Preserved
             )
     });
-    prepared_itself
-        || line
-            .motion
-            .iter()
-            .any(|m| foods::motion_words(m).any(|w| BREAKING_DOWN.contains(&w)))
+    // motion i leads from state i, which is the food itself until it is "in" something
+    let cut = line.motion.iter().zip(&line.state).any(|(m, s)| {
+        !s.physical_state.starts_with("in ") && foods::motion_words(m).any(|w| CUTTING.contains(&w))
+    });
+    let broken = line
+        .motion
+        .iter()
+        .any(|m| foods::motion_words(m).any(|w| BREAKING_DOWN.contains(&w)));
+    prepared_itself || cut || broken
 }

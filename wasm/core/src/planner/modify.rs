@@ -1307,6 +1307,7 @@ fn finish_branch<'kb>(
             let _ = write!(how, ", no motion in FOON reaches '{s}'");
         }
     }
+    last = prepare_whole(ctx, tree, eq, o, last, &mut how);
     if eq != o {
         tree.rename_in(before..tree.slots.len(), eq, o);
     }
@@ -1316,28 +1317,77 @@ fn finish_branch<'kb>(
     let Some(m) = attach_point(ctx, tree, &order, &carries, &cooked, o, c) else {
         return Err(format!("no unit of the tree can take '{o}'"));
     };
-    let raw = !tree.slots[last]
-        .node
-        .physical_states()
-        .any(|st| category(st) == Category::Cooked);
-    if raw && foods::cooking(o) == foods::Cooking::Alone && !cooks_what_joins(tree, &cooked, m) {
-        // nothing in the dish cooks it: it is cooked on its own before it joins
-        let motion = ctx
-            .index
-            .motion_for("cooked")
-            .unwrap_or_else(|| "cook".into());
-        let made = ObjectNode::new(o, vec![State::plain("cooked")]);
-        last = add_state_unit(ctx, tree, last, made, &motion);
-        let _ = write!(
-            how,
-            ", '{motion}' to make it cooked (the dish does not cook it)"
-        );
+    if !cooks_what_joins(tree, &cooked, m) {
+        last = cook_alone(ctx, tree, o, last, &mut how);
     }
     tree.units[m].inputs.push((last, true));
     tree.add_contents_downstream(m, o, &order, &carries);
     tree.units[m].origin = Origin::Attached;
     let _ = write!(how, "; added at '{}'", tree.units[m].motion);
     Ok((chosen_state, how))
+}
+
+/// Produce still whole (asked "peeled", "washed") brought on to the state a cook gives it
+/// (`foods::prepared_state`: a cucumber chopped, an egg cracked) by FOON's motion for that state.
+/// Returns the slot the branch now ends in.
+fn prepare_whole<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    eq: &str,
+    o: &str,
+    last: SlotId,
+    how: &mut String,
+) -> SlotId {
+    let food = if foods::knows(o) { o } else { eq };
+    let Some(p) = foods::prepared_state(food) else {
+        return last;
+    };
+    let node = &tree.slots[last].node;
+    let whole = node.physical_states().all(|st| {
+        st != p
+            && matches!(
+                category(st),
+                Category::Whole | Category::Trimmed | Category::Other
+            )
+    });
+    let motion = ctx
+        .index
+        .motion_for(p)
+        .filter(|m| cannot_take(o, eq, m).is_none());
+    let (true, Some(motion)) = (whole, motion) else {
+        return last;
+    };
+    let made = ObjectNode::new(eq, vec![State::plain(p)]);
+    let _ = write!(how, ", then '{motion}' to make it '{p}', as a cook would");
+    add_state_unit(ctx, tree, last, made, &motion)
+}
+
+/// A food that must be cooked on its own (`foods::Cooking::Alone`) and is still raw at `last`, cooked
+/// before it joins a dish that does not cook it. Returns the slot the branch now ends in.
+fn cook_alone<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    o: &str,
+    last: SlotId,
+    how: &mut String,
+) -> SlotId {
+    let raw = !tree.slots[last]
+        .node
+        .physical_states()
+        .any(|st| category(st) == Category::Cooked);
+    if !raw || foods::cooking(o) != foods::Cooking::Alone {
+        return last;
+    }
+    let motion = ctx
+        .index
+        .motion_for("cooked")
+        .unwrap_or_else(|| "cook".into());
+    let made = ObjectNode::new(o, vec![State::plain("cooked")]);
+    let _ = write!(
+        how,
+        ", '{motion}' to make it cooked (the dish does not cook it)"
+    );
+    add_state_unit(ctx, tree, last, made, &motion)
 }
 
 /// Why the asked food `o` (else its equivalent `eq`, when the food knowledge does not know `o`) cannot

@@ -369,6 +369,14 @@ fn walk<'t>(
                         n.contents().any(|i| i == label) || container == Some(n.label.as_str())
                     })
                     .and_then(|x| product_of(tree, order, pos, x, label, seen));
+                // the food made of the vessel's contents: the line says so
+                if let Some((at, x)) = into {
+                    motions.push(tree.units[order[at]].motion.as_ref().into());
+                    states.push(ProgressState {
+                        physical_state: spaced("in", &tree.slots[x].node.label),
+                        location: location(&tree.slots[x].node),
+                    });
+                }
             }
             break;
         };
