@@ -104,6 +104,8 @@ pub enum Cooking {
 struct Care {
     cooking: Option<Cooking>,
     prepared: Option<String>,
+    /// The preparation comes before anything else is done to the food.
+    first: bool,
 }
 
 fn cares() -> &'static HashMap<String, Care> {
@@ -119,7 +121,9 @@ fn cares() -> &'static HashMap<String, Care> {
                     "no" => Some(Cooking::No),
                     _ => None, // a test names the row
                 };
+                let first = parts.next() == Some("first");
                 let care = Care {
+                    first,
                     cooking,
                     prepared: (prepared != "-").then(|| prepared.to_string()),
                 };
@@ -156,6 +160,11 @@ pub fn must_cook(food: &str) -> bool {
 /// The state a cook brings `food` to when a query names only its category ("whole veg" onion: chopped).
 pub fn prepared_state(food: &str) -> Option<&'static str> {
     care_of(food)?.prepared.as_deref()
+}
+
+/// The preparation `food` gets before anything else is done to it (an egg: cracked), if any.
+pub fn prepared_first(food: &str) -> Option<&'static str> {
+    care_of(food).filter(|c| c.first)?.prepared.as_deref()
 }
 
 /// Whether `motion` cooks what it acts on ("bake", "deep fry", "cook and stir").
@@ -260,6 +269,8 @@ mod tests {
         assert_eq!(prepared_state("ham"), Some("sliced"));
         assert_eq!(prepared_state("salt"), None);
         assert_eq!(prepared_state("blueberry"), None);
+        assert_eq!(prepared_first("egg"), Some("cracked"));
+        assert_eq!(prepared_first("onion"), None);
     }
 
     #[test]

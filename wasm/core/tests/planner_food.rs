@@ -589,3 +589,48 @@ fn an_onion_asked_peeled_is_still_chopped_before_it_joins_the_salad() {
     );
     assert_eq!(kinds(&p), []);
 }
+
+/// Elsewhere in FOON: an egg placed in a bowl as it is, a walnut cracked, milk blended thick.
+const EGG_AND_MOTIONS: &str = "//
+O\tbowl\t0
+S\tempty
+O\tegg\t1
+S\tuncracked
+M\tpick-and-place\t<Assumed>
+O\tegg\t1
+S\tuncracked
+S\tin\t[bowl]
+//
+O\twalnut\t1
+S\twhole
+O\tnutcracker\t1
+M\tcrack\t<Assumed>
+O\twalnut\t1
+S\tcracked
+//
+O\tmilk\t1
+S\tliquid
+O\tblender\t0
+S\ton
+M\tblend\t<Assumed>
+O\tmilk\t1
+S\tthick liquid
+//
+";
+
+#[test]
+fn an_egg_is_cracked_before_it_is_blended() {
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("egg.txt", EGG_AND_MOTIONS)],
+        &ExactMatch,
+        &query("salad", &[("lettuce", "chopped"), ("egg", "thick liquid")]),
+    );
+    let motions = line_motions(&p, "egg");
+    let crack = motions.iter().position(|m| *m == "crack");
+    let blend = motions.iter().position(|m| *m == "blend");
+    assert!(
+        crack.is_some() && crack < blend,
+        "{motions:?}\n{:#?}",
+        p.units
+    );
+}

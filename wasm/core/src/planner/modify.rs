@@ -1275,6 +1275,10 @@ fn finish_branch<'kb>(
     in_state: bool,
     mut how: String,
 ) -> Result<(SmolStr, String), String> {
+    if foods::prepared_first(if foods::knows(o) { o } else { eq }).is_some() && !in_state {
+        // an egg is cracked before it is beaten or blended
+        last = prepare_whole(ctx, tree, eq, o, last, &mut how);
+    }
     let c = category(s);
     // milk taken in a cup is liquid milk already; liquid milk cannot be sliced, diced pineapple not made
     // whole (of the starting states only 'whole' speaks of the cut: dried fruit may well be diced)
