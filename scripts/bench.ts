@@ -113,6 +113,29 @@ function bench(name: string, files: KnowledgeBaseFile[], embeddings: Uint8Array,
 }
 
 /**
+ * What the explain trace costs (the Algorithm view's `explain: true`): each query's best of the rounds with
+ * it off and on, interleaved query by query so that the machine's changing speed falls on both alike.
+ */
+function benchExplain(files: KnowledgeBaseFile[], embeddings: Uint8Array, requests: PlanRequest[], rounds = ROUNDS): void {
+  const planner = FoonPlanner.load(files, embeddings);
+  const off = requests.map(() => Infinity);
+  const on = requests.map(() => Infinity);
+  const sizes: number[] = [];
+  for (let round = 0; round < rounds; round++) {
+    for (const [i, request] of requests.entries()) {
+      off[i] = Math.min(off[i]!, timedPlan(planner, request).took);
+      const explained = timedPlan(planner, { ...request, explain: true });
+      on[i] = Math.min(on[i]!, explained.took);
+      if (round === 0 && explained.plan?.trace !== undefined) sizes.push(JSON.stringify(explained.plan.trace).length);
+    }
+  }
+  planner.free();
+  const ratios = off.map((t, i) => on[i]! / t).sort((a, b) => a - b);
+  for (const list of [off, on, sizes]) list.sort((a, b) => a - b);
+  console.log(`  explain (each query's best of ${rounds} rounds, off and on interleaved): off median ${ms(percentile(off, 0.5))}, on median ${ms(percentile(on, 0.5))}, p95 ${ms(percentile(on, 0.95))}; on/off per query median ${percentile(ratios, 0.5).toFixed(2)}x; trace JSON median ${(percentile(sizes, 0.5) / 1024).toFixed(1)} kB, max ${((sizes.at(-1) ?? 0) / 1024).toFixed(1)} kB`);
+}
+
+/**
  * V8 runs WebAssembly first from a quick baseline compile and optimises each function once it has run a
  * while. One round of the dev queries on a planner of its own takes the plan code through that, so that the
  * figures below are the planner's (each measured planner still starts with nothing remembered); what a
@@ -135,6 +158,9 @@ console.log(`foon-planner bench (Node ${process.version}, ${requests.length} dev
 warmUpEngine(foon111, embeddings, requests);
 // BENCH_SCALES=1,10,100 (the default) picks which of the three knowledge bases to measure
 const scales = new Set((process.env.BENCH_SCALES ?? "1,10,100").split(",").map((s) => s.trim()));
-if (scales.has("1")) bench("FOON-111 (plain)", foon111, embeddings, requests);
+if (scales.has("1")) {
+  bench("FOON-111 (plain)", foon111, embeddings, requests);
+  benchExplain(foon111, embeddings, requests);
+}
 if (scales.has("10")) bench("synthetic 10x FOON-111", scaled(foon111, 10), embeddings, requests);
 if (scales.has("100")) bench("synthetic 100x FOON-111", scaled(foon111, 100), embeddings, requests, 1);

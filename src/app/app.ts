@@ -17,9 +17,10 @@ import { mountReferenceView } from "./views/reference-view";
 import { mountStepsView } from "./views/steps-view";
 import { mountSubstitutionsView } from "./views/substitutions-view";
 import type { TreeViewHandle } from "./views/tree-view";
+import type { ExplainViewHandle } from "./views/explain-view";
 
-export type ViewName = "query" | "tree" | "progress" | "steps" | "substitutions" | "reference" | "export" | "kb";
-export const ALL_VIEWS: readonly ViewName[] = ["query", "tree", "progress", "steps", "substitutions", "reference", "export", "kb"];
+export type ViewName = "query" | "tree" | "progress" | "steps" | "substitutions" | "reference" | "explain" | "export" | "kb";
+export const ALL_VIEWS: readonly ViewName[] = ["query", "tree", "progress", "steps", "substitutions", "reference", "explain", "export", "kb"];
 
 export interface AppEvents {
   plan?(plan: Plan): void;
@@ -63,6 +64,7 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
   const { planner, events } = options;
   const cleanups: (() => void)[] = [];
   let tree: TreeViewHandle | null = null;
+  let explain: ExplainViewHandle | null = null;
   let kbUrl = options.kbUrl;
   let destroyed = false;
 
@@ -90,7 +92,8 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
     const seq = ++planSeq;
     store.set({ planning: true });
     try {
-      const result = await planner.plan(toPlanRequest(query));
+      // the Algorithm view replays the plan's trace: asked for only where it is shown
+      const result = await planner.plan({ ...toPlanRequest(query), explain: has("explain") });
       if (result === null || seq !== planSeq || destroyed) return; // a newer request replaced this one
       const keep = store.state.selection.unit !== null && store.state.selection.unit < result.plan.units.length;
       store.set({ plan: result.plan, planMs: result.ms, planning: false, planError: null, selection: keep ? store.state.selection : NO_SELECTION });
@@ -221,7 +224,9 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
         return;
       }
       if (format === "json") {
-        download(`${base}-plan.json`, `${JSON.stringify(plan, null, 2)}\n`, "application/json");
+        // the plan as the CLI prints it: the Algorithm view's trace is not part of the task tree
+        const { trace: _trace, ...exported } = plan;
+        download(`${base}-plan.json`, `${JSON.stringify(exported, null, 2)}\n`, "application/json");
         return;
       }
       const names: Record<Exclude<ExportFormat, "json">, [string, string]> = {
@@ -281,6 +286,15 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
     cleanups.push(mountReferenceView(host, store));
   }
   if (pair.childElementCount > 0) results.append(pair);
+  if (has("explain")) {
+    const host = section("explain");
+    host.append(el("p", { class: "muted", text: "Loading the Algorithm view…" }));
+    results.append(host);
+    // with Cytoscape, like the tree view
+    void import("./views/explain-view").then(({ mountExplainView }) => {
+      if (!destroyed) explain = mountExplainView(host, store);
+    });
+  }
   const tools = el("div", { class: "pair" });
   if (has("export")) {
     const host = section("export");
@@ -320,11 +334,15 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
       await loadKnowledgeBase(url);
     },
     exportAs,
-    restyle: () => tree?.restyle(),
+    restyle: () => {
+      tree?.restyle();
+      explain?.restyle();
+    },
     destroy: () => {
       destroyed = true;
       for (const c of cleanups) c();
       tree?.destroy();
+      explain?.destroy();
       planner.dispose();
       persistence?.close();
       root.replaceChildren();

@@ -16,6 +16,7 @@ commands:
   stats   [--kb <dir-or-file>]                       knowledge-base statistics as JSON
   plan    [--kb <dir-or-file>] --query <file.json>   one plan as JSON
           [--no-modify] [--override <object>=<label>]... [--format json|foon|pddl|pddl-domain|pddl-problem|progress]
+          [--explain]                                adds the trace: how the plan was found (JSON only)
   batch   [--kb <dir>] --queries <dir> --out <dir> [--no-modify]
                                                      plans every query, writes <out>/<type>/<id>.json
   similar [--kb <dir>] [--top 5] [--names <file>] <name>...
@@ -69,13 +70,16 @@ const commands: Record<string, (args: string[]) => void> = {
         "no-modify": { type: "boolean" },
         override: { type: "string", multiple: true },
         format: { type: "string", default: "json" },
+        explain: { type: "boolean" },
       },
       strict: true,
     });
     if (values.query === undefined) throw new Error("plan needs --query <file.json>");
     const format = values.format as ExportFormat;
     if (!FORMATS.includes(format)) throw new Error(`--format must be one of ${FORMATS.join(", ")}`);
-    const request: PlanRequest = { query: readQuery(values.query), modify: values["no-modify"] !== true, overrides: overrides(values.override) };
+    const explain = values.explain === true;
+    if (explain && format !== "json") throw new Error("--explain adds the trace to the plan JSON: it needs --format json");
+    const request: PlanRequest = { query: readQuery(values.query), modify: values["no-modify"] !== true, overrides: overrides(values.override), explain };
     const p = planner(values);
     if (format === "json") console.log(JSON.stringify(p.plan(request), null, 2));
     else process.stdout.write(p.exportPlan(request, format));

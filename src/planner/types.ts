@@ -73,6 +73,8 @@ export interface PlanRequest {
   modify?: boolean;
   /** Query object -> the equivalent label the user chose. */
   overrides?: Record<string, string>;
+  /** true adds `Plan.trace`: how the plan was found, step by step (default false). */
+  explain?: boolean;
 }
 
 export interface PlanNode {
@@ -148,6 +150,77 @@ export interface Plan {
   progress_lines: ProgressLine[];
   steps: string[];
   cautions: Caution[];
+  /** Only when the request asked to `explain`. */
+  trace?: Trace;
+}
+
+// ---- The explain trace (docs/plan-format.md "Explain trace"; wasm/core/src/trace.rs) ----
+
+/** A unit as FOON texts of its nodes. */
+export interface TraceUnit {
+  inputs: string[];
+  motion: string;
+  outputs: string[];
+}
+
+export interface GoalCandidate {
+  node: string;
+  subgraph: string;
+  ingredients: number;
+  recall: number;
+  precision: number;
+  exact_matches: number;
+  score: number;
+}
+
+export type GoalTieBreak = "score" | "exact_matches" | "fewer_ingredients" | "name" | "kin_class";
+
+export type ExpansionOutcome = "kitchen" | "recipe_start" | "expanded" | "cycle" | "had_from_start";
+
+export type ChoiceReason = "only" | "reused" | "same_recipe" | "no_detour" | "heuristic" | "fewer_inputs" | "id";
+
+export interface CandidateUnit extends TraceUnit {
+  heuristic: number;
+  reused: boolean;
+  same_recipe: boolean;
+  cycle: boolean;
+}
+
+export interface Expansion {
+  node: string;
+  outcome: ExpansionOutcome;
+  candidates: CandidateUnit[];
+  chosen: number | null;
+  why: ChoiceReason | null;
+}
+
+export type EquivalentRoute = "override" | "exact" | "tree" | "foon" | "none";
+
+export interface IngredientTrace {
+  object: string;
+  state: string;
+  route: EquivalentRoute;
+  tree_match: Alternative | null;
+  foon_match: Alternative | null;
+  case: SubstitutionCase | null;
+  planned: boolean;
+  reason: string | null;
+  state_choice: {
+    node: string | null;
+    category: string;
+    in_state: boolean;
+    frequency_in_class: number;
+    frequency_overall: number;
+  } | null;
+  attached: { motion: string; pattern: string[]; rank: number | null } | null;
+}
+
+export interface Trace {
+  trace_version: 1;
+  goal_selection: { searched_all: boolean; candidates: GoalCandidate[]; kin_class: string | null; tie_break: GoalTieBreak | null };
+  retrieval: Expansion[];
+  ingredients: IngredientTrace[];
+  pruning: { removed: string[]; units: TraceUnit[] };
 }
 
 /** Export formats of a plan. */

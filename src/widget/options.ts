@@ -5,7 +5,7 @@ import type { ViewName } from "../app/app";
 import type { ThemeChoice } from "../app/prefs";
 import { normalizeName, parseIngredientList } from "../app/query";
 
-export type WidgetView = "tree" | "progress" | "steps" | "all";
+export type WidgetView = "tree" | "progress" | "steps" | "explain" | "all";
 
 export interface WidgetOptions {
   /** Dish type, e.g. "salad". */
@@ -22,11 +22,12 @@ export const WIDGET_VIEWS: Record<WidgetView, ViewName[]> = {
   tree: ["tree"],
   progress: ["progress"],
   steps: ["steps"],
+  explain: ["explain"],
   all: ["tree", "progress", "steps", "substitutions"],
 };
 
 export function parseView(value: string | null | undefined): WidgetView {
-  return value === "tree" || value === "progress" || value === "steps" || value === "all" ? value : "all";
+  return value === "tree" || value === "progress" || value === "steps" || value === "explain" || value === "all" ? value : "all";
 }
 
 export function parseTheme(value: string | null | undefined): ThemeChoice {

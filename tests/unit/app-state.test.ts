@@ -40,6 +40,7 @@ describe("preferences", () => {
 describe("widget options", () => {
   it("read attributes with safe defaults", () => {
     expect(parseView("progress")).toBe("progress");
+    expect(parseView("explain")).toBe("explain");
     expect(parseView("bogus")).toBe("all");
     expect(parseView(null)).toBe("all");
     expect(parseTheme("dark")).toBe("dark");

@@ -12,7 +12,7 @@ import type { AppState, Store } from "../store";
 import { readColors, type GraphColors } from "../theme-colors";
 
 let registered = false;
-function registerDagre(): void {
+export function registerDagre(): void {
   if (registered) return;
   cytoscape.use(dagre);
   registered = true;
@@ -33,7 +33,7 @@ export interface TreeViewActions {
   select(selection: Selection): void;
 }
 
-function elements(graph: TreeGraph): ElementDefinition[] {
+export function elements(graph: TreeGraph): ElementDefinition[] {
   return [
     ...graph.nodes.map((n) => ({
       group: "nodes" as const,
@@ -44,7 +44,7 @@ function elements(graph: TreeGraph): ElementDefinition[] {
   ];
 }
 
-function stylesheet(c: GraphColors): StylesheetJson {
+export function stylesheet(c: GraphColors): StylesheetJson {
   return [
     {
       selector: "node",

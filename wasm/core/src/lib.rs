@@ -22,6 +22,7 @@ pub mod similarity;
 pub mod stats;
 pub mod substitute;
 pub mod taxonomy;
+pub mod trace;
 pub mod vocabulary;
 pub mod write;
 

@@ -1,5 +1,6 @@
 //! The planner's request and response, exactly the JSON contract of `docs/plan-format.md` (serde).
 
+use crate::trace::Trace;
 use serde::{Deserialize, Serialize};
 use smol_str::SmolStr;
 use std::collections::BTreeMap;
@@ -41,6 +42,9 @@ pub struct PlanRequest {
     /// Query object -> the equivalent label the caller chose.
     #[serde(default)]
     pub overrides: BTreeMap<String, String>,
+    /// `true` adds the explain trace (`Plan::trace`); the plan is otherwise the same.
+    #[serde(default)]
+    pub explain: bool,
 }
 
 impl PlanRequest {
@@ -49,6 +53,7 @@ impl PlanRequest {
             query,
             modify: true,
             overrides: BTreeMap::new(),
+            explain: false,
         }
     }
 }
@@ -228,4 +233,7 @@ pub struct Plan {
     pub steps: Vec<String>,
     /// What a cook would stop at in the plan (`planner::cautions`), in the order found.
     pub cautions: Vec<Caution>,
+    /// How the plan was found, step by step (only when the request asked to `explain`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub trace: Option<Trace>,
 }

@@ -273,23 +273,47 @@ fields!(ProgressLine {
     "motion" => motion,
     "end_product" => end_product
 });
-fields!(Plan {
-    "format_version" => format_version,
-    "query" => query,
-    "dish_class" => dish_class,
-    "notes" => notes,
-    "modified" => modified,
-    "goal" => goal,
-    "units" => units as Units,
-    "ingredients" => ingredients,
-    "removed" => removed,
-    "progress_lines" => progress_lines,
-    "steps" => steps,
-    "cautions" => cautions
-});
 fields!(Caution { "kind" => kind, "food" => food, "detail" => detail });
 
-// the two with a field left out when empty (`skip_serializing_if`), taken apart like the others
+// the three with a field left out when empty (`skip_serializing_if`), taken apart like the others
+impl Json for Plan {
+    fn write(&self, out: &mut Vec<u8>) {
+        let Plan {
+            format_version,
+            query,
+            dish_class,
+            notes,
+            modified,
+            goal,
+            units,
+            ingredients,
+            removed,
+            progress_lines,
+            steps,
+            cautions,
+            trace,
+        } = self;
+        let mut o = Object::begin(out);
+        o.field(key!("format_version"), format_version)
+            .field(key!("query"), query)
+            .field(key!("dish_class"), dish_class)
+            .field(key!("notes"), notes)
+            .field(key!("modified"), modified)
+            .field(key!("goal"), goal)
+            .field(key!("units"), &Units(units))
+            .field(key!("ingredients"), ingredients)
+            .field(key!("removed"), removed)
+            .field(key!("progress_lines"), progress_lines)
+            .field(key!("steps"), steps)
+            .field(key!("cautions"), cautions);
+        if let Some(trace) = trace {
+            // written once per explained plan, through serde: its speed does not matter
+            let _ = serde_json::to_writer(o.key(key!("trace")), trace);
+        }
+        o.end();
+    }
+}
+
 impl Json for Query {
     fn write(&self, out: &mut Vec<u8>) {
         let Query {

@@ -550,6 +550,21 @@ fn a_dish_type_with_no_recipe_like_the_query_borrows_one_of_a_kin_type() {
         "{:?}",
         p.notes
     );
+    // the explain trace leads with the pizza, naming the kin type, then lists the bread type's goals
+    let explained = query("bread", &items).replace("}}", r#"}, "explain": true}"#);
+    let g = plan_of(&files, &ExactMatch, &explained)
+        .trace
+        .expect("a trace")
+        .goal_selection;
+    let labels: Vec<&str> = g.candidates.iter().map(|c| c.node.as_str()).collect();
+    assert_eq!(
+        labels[0].split(" (").next(),
+        Some("cheese pizza"),
+        "{labels:?}"
+    );
+    assert_eq!(labels.len(), 2, "{labels:?}");
+    assert_eq!(g.tie_break.as_deref(), Some("kin_class"));
+    assert!(g.kin_class.is_some());
     // a bread recipe that fits well is kept, though the pizza fits better still
     let loaf = mixed_dish(&["flour", "water", "yeast", "salt"], "loaf", 0);
     let files = [("loaf.txt", loaf.as_str()), ("pizza.txt", &pizza)];

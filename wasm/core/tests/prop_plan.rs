@@ -146,16 +146,20 @@ fn request(labels: &'static [&'static str]) -> impl Strategy<Value = PlanRequest
         proptest::collection::vec(ingredient(labels), 0..8),
         any::<bool>(),
         proptest::collection::btree_map("[a-z]{1,8}", "[a-z]{1,8}", 0..2),
+        any::<bool>(),
     )
-        .prop_map(|(dish, ingredients, modify, overrides)| PlanRequest {
-            query: Query {
-                id: None,
-                dish_type: DISHES[dish].to_string(),
-                ingredients,
+        .prop_map(
+            |(dish, ingredients, modify, overrides, explain)| PlanRequest {
+                query: Query {
+                    id: None,
+                    dish_type: DISHES[dish].to_string(),
+                    ingredients,
+                },
+                modify,
+                overrides,
+                explain,
             },
-            modify,
-            overrides,
-        })
+        )
 }
 
 const STARTER_LABELS: &[&str] = &[

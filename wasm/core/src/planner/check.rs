@@ -198,6 +198,7 @@ mod tests {
             progress_lines: Vec::new(),
             steps: Vec::new(),
             cautions: Vec::new(),
+            trace: None,
         }
     }
 

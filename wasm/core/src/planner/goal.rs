@@ -1,11 +1,13 @@
 //! Algorithm 1: the reference goal node, by a graded similarity of ingredient sets.
 
+use super::explain::Recorder;
 use super::index::PlannerIndex;
 use super::score::{GoalFit, Scorer};
 use crate::foods::{self, Cooking};
 use crate::kb::{Goal, KnowledgeBase};
 use crate::plan::Query;
 use crate::taxonomy::{dish_class_name, kin_classes};
+use crate::trace::GoalCandidate;
 use std::cmp::Ordering;
 
 #[derive(Clone, Debug)]
@@ -26,6 +28,8 @@ fn score(fit: &GoalFit) -> f32 {
 
 /// Picks the reference goal among goals of `class` (all goals when the class has none), highest score
 /// first; ties go to more exact matches, then fewer goal ingredients, then label and subgraph name.
+/// Where none fits well, a kin class's goal may be taken instead (`kin_instead`). Records every
+/// candidate of the class, best first, in `trace`.
 pub(crate) fn select<'a>(
     kb: &'a KnowledgeBase,
     index: &PlannerIndex,
@@ -33,13 +37,17 @@ pub(crate) fn select<'a>(
     class: Option<u32>,
     notes: &mut Vec<String>,
     query: &Query,
+    trace: &Recorder,
 ) -> Option<Chosen<'a>> {
-    let dish_type = &query.dish_type;
-    let goals = match class.and_then(|c| index.goals_of_class(c)) {
+    let of_class = class.and_then(|c| index.goals_of_class(c));
+    let goals = match of_class {
         Some(goals) => goals,
         None => {
             notes.push(match class {
-                None => format!("unknown dish type '{dish_type}': searched all goal nodes"),
+                None => format!(
+                    "unknown dish type '{}': searched all goal nodes",
+                    query.dish_type
+                ),
                 Some(c) => format!(
                     "no recipe of class '{}' in the knowledge base: searched all goal nodes",
                     dish_class_name(c).unwrap_or("?")
@@ -49,9 +57,90 @@ pub(crate) fn select<'a>(
         }
     };
     let in_class = best_of(kb, scorer, goals)?;
-    let Some(class) = class else {
-        return Some(in_class);
+    let kin = class.and_then(|c| kin_instead(kb, index, scorer, c, query, &in_class, notes));
+    let kin_class = kin.as_ref().map(|(_, k)| *k);
+    trace.record(|t| {
+        let (mut list, mut tie_break) = candidates(kb, scorer, goals);
+        if let Some(k) = kin_class {
+            // the reference goal leads the list, as it does when it is of the dish type
+            let kin_goals = index.goals_of_class(k).expect("a kin class with goals");
+            list.insert(0, candidates(kb, scorer, kin_goals).0.remove(0));
+            tie_break = Some("kin_class".to_string());
+        }
+        let g = &mut t.goal_selection;
+        g.searched_all = of_class.is_none();
+        g.kin_class = kin_class.map(|k| dish_class_name(k).unwrap_or("?").to_string());
+        (g.candidates, g.tie_break) = (list, tie_break);
+    });
+    Some(kin.map_or(in_class, |(c, _)| c))
+}
+
+/// The goal of `goals` Alg. 1 prefers (`compare`).
+fn best_of<'a>(
+    kb: &'a KnowledgeBase,
+    scorer: &Scorer,
+    goals: &super::index::GoalClass,
+) -> Option<Chosen<'a>> {
+    rated(kb, scorer, goals)
+        .into_iter()
+        .map(|(r, _)| r)
+        .reduce(|best, r| match compare(kb, &r, &best).0 {
+            Ordering::Greater => r,
+            _ => best,
+        })
+        .map(|b| Chosen {
+            goal: b.goal,
+            score: b.score,
+        })
+}
+
+/// Every goal of `goals` as Alg. 1 weighs it, with its fit.
+fn rated<'a>(
+    kb: &'a KnowledgeBase,
+    scorer: &Scorer,
+    goals: &super::index::GoalClass,
+) -> Vec<(Rated<'a>, GoalFit)> {
+    let fits = scorer.goal_fits(goals);
+    let rate = |(i, ings): &(usize, Vec<u32>)| {
+        let fit = fits.fit(ings);
+        let rated = Rated {
+            goal: &kb.goals[*i],
+            score: score(&fit),
+            exact: fit.exact,
+            ingredients: ings.len(),
+        };
+        (rated, fit)
     };
+    goals.goals.iter().map(rate).collect()
+}
+
+/// The candidates of `goals`, best first, as the trace shows them; with what separated the first two.
+fn candidates(
+    kb: &KnowledgeBase,
+    scorer: &Scorer,
+    goals: &super::index::GoalClass,
+) -> (Vec<GoalCandidate>, Option<String>) {
+    let mut all = rated(kb, scorer, goals);
+    all.sort_by(|a, b| compare(kb, &b.0, &a.0).0);
+    let tie_break = match all.as_slice() {
+        [a, b, ..] => Some(TIE_BREAKS[compare(kb, &a.0, &b.0).1].to_string()),
+        _ => None,
+    };
+    let list = all.iter().map(|(r, fit)| candidate(kb, r, fit)).collect();
+    (list, tie_break)
+}
+
+/// Where the class's best goal `in_class` fits poorly, a clearly better goal of a kin class
+/// (`taxonomy::kin_classes`) and that class, with a note; None to keep `in_class`.
+fn kin_instead<'a>(
+    kb: &'a KnowledgeBase,
+    index: &PlannerIndex,
+    scorer: &Scorer,
+    class: u32,
+    query: &Query,
+    in_class: &Chosen<'a>,
+    notes: &mut Vec<String>,
+) -> Option<(Chosen<'a>, u32)> {
     // the dish type has no recipe like the query (bread asked of flour and yeast, the class holding
     // only toasts of bought bread): a recipe of a kin type (a pizza dough) that fits clearly better is a
     // better reference
@@ -67,26 +156,24 @@ pub(crate) fn select<'a>(
                 0.0
             }
     };
-    if fit(&in_class) >= WEAK_FIT {
-        return Some(in_class);
+    if fit(in_class) >= WEAK_FIT {
+        return None;
     }
     let kin = kin_classes(class)
-        .filter_map(|k| best_of(kb, scorer, index.goals_of_class(k)?))
-        .max_by(|a, b| fit(a).total_cmp(&fit(b)))
-        .filter(|k| fit(k) >= fit(&in_class) + BETTER_BY);
-    let Some(kin) = kin else {
-        return Some(in_class);
-    };
+        .filter_map(|k| Some((best_of(kb, scorer, index.goals_of_class(k)?)?, k)))
+        .max_by(|a, b| fit(&a.0).total_cmp(&fit(&b.0)))
+        .filter(|(k, _)| fit(k) >= fit(in_class) + BETTER_BY);
+    let (kin, kin_class) = kin?;
     notes.push(format!(
         "no recipe of this dish type fits the ingredients well ('{}', similarity {:.2}{}): started from \
          '{}' (similarity {:.2}), a dish made the same way",
         kb.nodes[in_class.goal.node].label,
         in_class.score,
-        if fit(&in_class) < in_class.score { ", not made from the flour or the like asked for" } else { "" },
+        if fit(in_class) < in_class.score { ", not made from the flour or the like asked for" } else { "" },
         kb.nodes[kin.goal.node].label,
         kin.score
     ));
-    Some(kin)
+    Some((kin, kin_class))
 }
 
 /// Whether the goal is made from a food only ever cooked within a dish (flour: a dough, a batter), as a
@@ -105,39 +192,47 @@ const WEAK_FIT: f32 = 0.5;
 /// How much better another type's goal must fit to be taken instead of a weak one.
 const BETTER_BY: f32 = 0.15;
 
-/// The goal of `goals` with the highest score; ties go to more exact matches, then fewer goal
-/// ingredients, then label and subgraph name.
-fn best_of<'a>(
-    kb: &'a KnowledgeBase,
-    scorer: &Scorer,
-    goals: &super::index::GoalClass,
-) -> Option<Chosen<'a>> {
-    let fits = scorer.goal_fits(goals);
-    let mut best: Option<(Chosen<'a>, usize, usize)> = None;
-    for (i, ings) in &goals.goals {
-        let g = &kb.goals[*i];
-        let fit = fits.fit(ings);
-        let (s, exact) = (score(&fit), fit.exact);
-        let better = match &best {
-            None => true,
-            Some((b, bexact, bn)) => {
-                let ord = s
-                    .total_cmp(&b.score)
-                    .then(exact.cmp(bexact))
-                    .then(bn.cmp(&ings.len()))
-                    .then_with(|| {
-                        kb.nodes[b.goal.node]
-                            .label
-                            .cmp(&kb.nodes[g.node].label)
-                            .then(b.goal.subgraph.cmp(&g.subgraph))
-                            .then(b.goal.node.cmp(&g.node))
-                    });
-                ord == Ordering::Greater
-            }
-        };
-        if better {
-            best = Some((Chosen { goal: g, score: s }, exact, ings.len()));
-        }
+/// A goal as Alg. 1 weighs it.
+#[derive(Clone)]
+struct Rated<'a> {
+    goal: &'a Goal,
+    score: f32,
+    exact: usize,
+    ingredients: usize,
+}
+
+/// Tie-breaks of `compare`, in order, as the trace names them.
+/// (`kin_class` marks a reference goal of a kin dish type, `select`.)
+const TIE_BREAKS: [&str; 4] = ["score", "exact_matches", "fewer_ingredients", "name"];
+
+/// Whether `a` is preferred to `b` (`Greater`), and the index in `TIE_BREAKS` of what decided it.
+fn compare(kb: &KnowledgeBase, a: &Rated, b: &Rated) -> (Ordering, usize) {
+    let by_name = || {
+        kb.nodes[b.goal.node]
+            .label
+            .cmp(&kb.nodes[a.goal.node].label)
+            .then(b.goal.subgraph.cmp(&a.goal.subgraph))
+            .then(b.goal.node.cmp(&a.goal.node))
+    };
+    [
+        a.score.total_cmp(&b.score),
+        a.exact.cmp(&b.exact),
+        b.ingredients.cmp(&a.ingredients),
+    ]
+    .into_iter()
+    .enumerate()
+    .find(|(_, o)| o.is_ne())
+    .map_or_else(|| (by_name(), 3), |(k, o)| (o, k))
+}
+
+fn candidate(kb: &KnowledgeBase, r: &Rated, fit: &GoalFit) -> GoalCandidate {
+    GoalCandidate {
+        node: kb.nodes[r.goal.node].to_string(),
+        subgraph: r.goal.subgraph.clone(),
+        ingredients: r.ingredients,
+        recall: fit.recall,
+        precision: fit.precision,
+        exact_matches: fit.exact,
+        score: r.score,
     }
-    best.map(|b| b.0)
 }

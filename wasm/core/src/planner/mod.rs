@@ -4,6 +4,7 @@
 
 mod cautions;
 mod check;
+mod explain;
 mod goal;
 mod index;
 mod modify;
@@ -49,18 +50,21 @@ pub fn plan(
         }
     }
     let scorer = score::Scorer::new(similarity, index, &labels);
-    let chosen = goal::select(kb, index, &scorer, class, &mut notes, &query).ok_or_else(|| {
-        FoonError::new(
-            ErrorCode::NoGoal,
-            "the knowledge base has no goal node with a functional unit that makes it",
-        )
-    })?;
-    let reference = retrieve::retrieve(
+    let trace = explain::Recorder::new(request.explain);
+    let chosen =
+        goal::select(kb, index, &scorer, class, &mut notes, &query, &trace).ok_or_else(|| {
+            FoonError::new(
+                ErrorCode::NoGoal,
+                "the knowledge base has no goal node with a functional unit that makes it",
+            )
+        })?;
+    let reference = retrieve::retrieve_explained(
         kb,
         index,
         &scorer,
         chosen.goal.node,
         index.subgraph_id(&chosen.goal.subgraph),
+        &trace,
     );
     for &n in &reference.blocked {
         notes.push(format!(
@@ -77,6 +81,7 @@ pub fn plan(
         overrides: &overrides,
         goal_subgraph: index.subgraph_id(&chosen.goal.subgraph),
         scorer: &scorer,
+        trace: &trace,
     };
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
@@ -92,6 +97,7 @@ pub fn plan(
             &mut notes,
         );
     }
+    trace.record(|t| t.outcomes(&outcomes, |o| index.is_label(o)));
     let dish_class = class.and_then(|c| {
         dish_class_name(c).map(|name| DishClassRef {
             index: c,
@@ -114,6 +120,7 @@ pub fn plan(
         format_version: FORMAT_VERSION,
     });
     plan.cautions = cautions::cautions(&plan);
+    plan.trace = trace.finish();
     Ok(plan)
 }
 

@@ -29,6 +29,7 @@ pub(crate) struct Context<'a> {
     /// The reference recipe's subgraph id.
     pub goal_subgraph: Option<u32>,
     pub scorer: &'a super::score::Scorer<'a>,
+    pub trace: &'a super::explain::Recorder,
 }
 
 /// Food states of a node (not its place, contents or an appliance's condition).
@@ -282,8 +283,10 @@ pub(crate) fn modify<'kb>(
             .filter(|w| w.planned)
             .map(|w| w.label.clone())
             .collect();
+        ctx.trace.record(|t| t.before_pruning(tree));
         removed = prune(tree, &keep, &requested);
         tree.drop_unneeded();
+        ctx.trace.record(|t| t.pruned_from(tree, &removed));
         let present = tree.ingredient_labels();
         // an asked-for ingredient whose units served only pruned ones (butter spread on the bread that
         // was not asked for) comes back as a branch of its own, like a case-4 ingredient
@@ -486,6 +489,8 @@ fn equivalent(
     let tree_refs: Vec<&str> = tree_labels.iter().map(SmolStr::as_str).collect();
     let in_tree = ctx.sim.rank(o, &tree_refs, 1).into_iter().next();
     let in_kb = ranked.first().cloned();
+    ctx.trace
+        .record(|t| t.equivalents(o, in_tree.as_ref(), in_kb.as_ref()));
     let pick = match (in_tree, in_kb) {
         (Some(t), k) if ctx.sim.accepts(t.1) && !ctx.sim.low_confidence(o, &t.0, t.1) => {
             Some(t).or(k)
@@ -1182,6 +1187,9 @@ fn add_branch<'kb>(
             break;
         }
     }
+    let node = picked.as_ref().map(|p| (p.0, p.1));
+    ctx.trace
+        .record(|t| t.state_choice(ctx, (o, asked), eq, s, node));
     let before = tree.slots.len();
     // the reason, written into one string as the branch is made (sized for nearly every reason: it
     // does not grow step by step)
@@ -1327,6 +1335,8 @@ fn finish_branch<'kb>(
     tree.units[m].inputs.push((last, true));
     tree.add_contents_downstream(m, o, &order, &carries);
     tree.units[m].origin = Origin::Attached;
+    ctx.trace
+        .record(|t| t.attached(o, s, &tree.units[m].motion, dish_pattern(ctx.class)));
     let _ = write!(how, "; added at '{}'", tree.units[m].motion);
     Ok((chosen_state, how))
 }

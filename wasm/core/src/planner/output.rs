@@ -112,6 +112,7 @@ pub(crate) fn build(p: Parts) -> Plan {
         progress_lines,
         steps,
         cautions: Vec::new(),
+        trace: None,
     }
 }
 

@@ -6,13 +6,16 @@
 //! and a unit that would close a cycle is never chosen, so the search ends on any graph. The result is
 //! a valid execution order (every unit after the units making its inputs), unlike a reversed BFS order.
 
+use super::explain::{kb_unit, Recorder};
 use super::index::PlannerIndex;
 use super::score::Scorer;
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, UnitId};
+use crate::trace::{CandidateUnit, Expansion, Outcome};
 use fixedbitset::FixedBitSet;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::cell::RefCell;
+use std::cmp::Ordering;
 use std::collections::VecDeque;
 
 #[derive(Clone, Debug, Default)]
@@ -138,6 +141,7 @@ impl Search {
 }
 
 /// A unit making the node being expanded, as the search weighs it.
+#[derive(Clone)]
 struct Candidate {
     unit: UnitId,
     /// Already in the tree.
@@ -175,36 +179,56 @@ impl Candidate {
         })
     }
 
-    /// Whether this candidate, making `node`, is preferred to `best`: a unit already in the tree, then
-    /// one of the reference recipe (so that the tree stays one coherent recipe), then one that is no
-    /// detour, then g(u); ties go to fewer inputs to make, then to the smaller id (ids follow contents,
-    /// not file order).
-    fn beats(
+    /// Whether this candidate, making `node`, is preferred to `best` (`Greater`), and which preference
+    /// decided it (`WHY`): a unit already in the tree, then one of the reference recipe (so that the
+    /// tree stays one coherent recipe), then one that is no detour, then g(u); ties go to fewer inputs
+    /// to make, then to the smaller id (ids follow contents, not file order).
+    fn decide(
         &mut self,
         best: &mut Candidate,
         node: NodeId,
         kb: &KnowledgeBase,
         index: &PlannerIndex,
         scorer: &Scorer,
-    ) -> bool {
+    ) -> (Ordering, usize) {
         let made = |u: UnitId| {
             kb.units[u]
                 .input_nodes()
                 .filter(|&n| !kb.kitchen[n])
                 .count()
         };
-        let ord = (self.reused, self.same_recipe)
-            .cmp(&(best.reused, best.same_recipe))
-            .then_with(|| {
-                best.detour(kb, index, node)
-                    .cmp(&self.detour(kb, index, node))
-            })
-            .then_with(|| self.g(scorer).total_cmp(&best.g(scorer)))
-            .then_with(|| made(best.unit).cmp(&made(self.unit)))
-            .then(best.unit.cmp(&self.unit));
-        ord == std::cmp::Ordering::Greater
+        // each preference in turn, until one separates the two
+        macro_rules! by {
+            ($k:expr, $ord:expr) => {
+                let ord = $ord;
+                if ord.is_ne() {
+                    return (ord, $k);
+                }
+            };
+        }
+        by!(0, self.reused.cmp(&best.reused));
+        by!(1, self.same_recipe.cmp(&best.same_recipe));
+        by!(
+            2,
+            best.detour(kb, index, node)
+                .cmp(&self.detour(kb, index, node))
+        );
+        by!(3, self.g(scorer).total_cmp(&best.g(scorer)));
+        by!(4, made(best.unit).cmp(&made(self.unit)));
+        by!(5, best.unit.cmp(&self.unit));
+        (Ordering::Equal, WHY.len() - 1)
     }
 }
+
+/// The preferences of `Candidate::decide`, in order, as the trace names them.
+const WHY: [&str; 6] = [
+    "reused",
+    "same_recipe",
+    "no_detour",
+    "heuristic",
+    "fewer_inputs",
+    "id",
+];
 
 /// Retrieves the tree making `root`. `root` is expanded even when it is a kitchen item (a goal, or a
 /// leaf whose making is asked for); every other kitchen node stops the search. `prefer` is a subgraph id
@@ -216,7 +240,19 @@ pub(crate) fn retrieve(
     root: NodeId,
     prefer: Option<u32>,
 ) -> Retrieved {
-    retrieve_within(kb, index, scorer, root, prefer, |_| true).unwrap_or_default()
+    search(kb, index, scorer, root, prefer, |_| true, &Recorder::OFF).unwrap_or_default()
+}
+
+/// `retrieve`, with every node taken from the queue recorded in `trace` (the reference task tree).
+pub(crate) fn retrieve_explained(
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    scorer: &Scorer,
+    root: NodeId,
+    prefer: Option<u32>,
+    trace: &Recorder,
+) -> Retrieved {
+    search(kb, index, scorer, root, prefer, |_| true, trace).unwrap_or_default()
 }
 
 /// `retrieve`, abandoned (`None`) as soon as it chooses a unit that `allowed` rejects. Every chosen unit
@@ -230,6 +266,19 @@ pub(crate) fn retrieve_within(
     root: NodeId,
     prefer: Option<u32>,
     allowed: impl Fn(UnitId) -> bool,
+) -> Option<Retrieved> {
+    search(kb, index, scorer, root, prefer, allowed, &Recorder::OFF)
+}
+
+/// The search of `retrieve_within`, recording into `trace`.
+fn search(
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    scorer: &Scorer,
+    root: NodeId,
+    prefer: Option<u32>,
+    allowed: impl Fn(UnitId) -> bool,
+    trace: &Recorder,
 ) -> Option<Retrieved> {
     TABLES.with(|tables| {
         // tables of its own should a retrieval ever run inside another (a panic would kill the WASM
@@ -257,10 +306,12 @@ pub(crate) fn retrieve_within(
         let mut blocked = Vec::new();
         while let Some((node, parent)) = s.queue.pop_front() {
             if node != root && kb.kitchen.get(node).copied().unwrap_or(true) {
+                trace.record(|t| t.retrieval.push(taken(kb, node, Outcome::Kitchen)));
                 continue;
             }
             // a starting item of the recipe that needs it is taken from the kitchen, as that recipe did
             if parent.is_some_and(|p| index.starts_in_recipe_of(p, node)) {
+                trace.record(|t| t.retrieval.push(taken(kb, node, Outcome::RecipeStart)));
                 continue;
             }
             let Some(producers) = kb.producers.get(node) else {
@@ -272,6 +323,8 @@ pub(crate) fn retrieve_within(
             let mut best: Option<Candidate> = None;
             let mut cyclic = false;
             let mut cyclic_in_recipe = false;
+            // the candidates as weighed, when recording (cyclic ones without a place in the contest)
+            let mut weighed: Vec<(Option<Candidate>, UnitId)> = Vec::new();
             for &u in producers {
                 let unit = &kb.units[u];
                 if unit.input_nodes().any(|n| n == node) {
@@ -284,6 +337,7 @@ pub(crate) fn retrieve_within(
                 if unit.input_nodes().any(|n| s.depends_on(kb, n, node)) {
                     cyclic = true;
                     cyclic_in_recipe |= same_recipe;
+                    trace.record(|_| weighed.push((None, u)));
                     continue; // would close a cycle
                 }
                 let mut candidate = Candidate {
@@ -293,9 +347,10 @@ pub(crate) fn retrieve_within(
                     detour: None,
                     g: None,
                 };
+                trace.record(|_| weighed.push((Some(candidate.clone()), u)));
                 let better = match best.as_mut() {
                     None => true,
-                    Some(b) => candidate.beats(b, node, kb, index, scorer),
+                    Some(b) => candidate.decide(b, node, kb, index, scorer).0 == Ordering::Greater,
                 };
                 if better {
                     best = Some(candidate);
@@ -310,13 +365,32 @@ pub(crate) fn retrieve_within(
                 if cyclic && !cyclic_in_recipe {
                     blocked.push(node);
                 }
+                let outcome = if cyclic_in_recipe {
+                    Outcome::HadFromStart
+                } else {
+                    Outcome::Cycle
+                };
+                trace.record(|t| {
+                    t.retrieval
+                        .push(weigh(kb, scorer, node, outcome, weighed, None))
+                });
                 continue;
             };
             if cyclic_in_recipe && !same_recipe {
                 // the recipe only makes it again later (a lid put back): it had it from the start, and
                 // another recipe's way of making it would bring that recipe along
+                let outcome = Outcome::HadFromStart;
+                trace.record(|t| {
+                    t.retrieval
+                        .push(weigh(kb, scorer, node, outcome, weighed, None))
+                });
                 continue;
             }
+            trace.record(|t| {
+                let chosen = Some((u, index));
+                let e = weigh(kb, scorer, node, Outcome::Expanded, weighed, chosen);
+                t.retrieval.push(e);
+            });
             if !allowed(u) {
                 return None;
             }
@@ -339,6 +413,59 @@ pub(crate) fn retrieve_within(
             blocked,
         })
     })
+}
+
+/// The record of a node the search took as it is, without looking for a unit.
+fn taken(kb: &KnowledgeBase, node: NodeId, outcome: Outcome) -> Expansion {
+    Expansion {
+        node: kb.nodes[node].to_string(),
+        outcome,
+        candidates: Vec::new(),
+        chosen: None,
+        why: None,
+    }
+}
+
+/// The record of a node the search looked for a unit to make: its candidates with g(u) (worked out for
+/// each here, as the search asks it only of ties), the unit `chosen` and the preference that chose it
+/// over the closest runner-up (the one that lasted longest in `Candidate::decide`).
+fn weigh(
+    kb: &KnowledgeBase,
+    scorer: &Scorer,
+    node: NodeId,
+    outcome: Outcome,
+    mut weighed: Vec<(Option<Candidate>, UnitId)>,
+    chosen: Option<(UnitId, &PlannerIndex)>,
+) -> Expansion {
+    let at = chosen.and_then(|(u, _)| weighed.iter().position(|w| w.1 == u));
+    let why = chosen.zip(at).and_then(|((_, index), at)| {
+        let mut winner = weighed[at].0.clone()?;
+        let deepest = weighed
+            .iter_mut()
+            .enumerate()
+            .filter(|(k, _)| *k != at)
+            .filter_map(|(_, w)| w.0.as_mut())
+            .map(|rival| winner.decide(rival, node, kb, index, scorer).1)
+            .max();
+        Some(deepest.map_or("only", |k| WHY[k]).to_string())
+    });
+    let candidates = weighed
+        .into_iter()
+        .map(|(c, u)| CandidateUnit {
+            unit: kb_unit(kb, u),
+            heuristic: scorer.unit(u),
+            reused: c.as_ref().is_some_and(|c| c.reused),
+            same_recipe: c.as_ref().is_some_and(|c| c.same_recipe),
+            cycle: c.is_none(),
+        })
+        .collect();
+    Expansion {
+        node: kb.nodes[node].to_string(),
+        outcome,
+        candidates,
+        chosen: at,
+        why,
+    }
 }
 
 thread_local! {

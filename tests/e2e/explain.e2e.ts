@@ -1,0 +1,88 @@
+// The Algorithm view in headless Chromium: the widget page with view=explain steps through a plan with
+// the keyboard, one step per key, from Alg. 1 to the final task tree; on the planner page its last step
+// draws the same tree as the task-tree view.
+import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
+import type { Browser, Locator, Page } from "playwright-core";
+import { launch, screenshot, watchErrors } from "./browser";
+import { waitForPlan } from "./app-helpers";
+
+let browser: Browser;
+beforeAll(async () => {
+  browser = await launch();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+const QUERY = "dish=salad&i=tomato~sliced&i=cucumber~sliced&i=lettuce~chopped";
+
+async function open(path: string): Promise<{ page: Page; view: Locator; errors: string[] }> {
+  const context = await browser.newContext({ viewport: { width: 1200, height: 1000 } });
+  const page = await context.newPage();
+  const errors = watchErrors(page);
+  await page.goto(new URL(path, inject("baseUrl")).href);
+  await waitForPlan(page);
+  const view = page.locator(".panel-explain[data-step]");
+  await view.waitFor({ timeout: 30_000 }); // the view loads with Cytoscape, after the plan
+  return { page, view, errors };
+}
+
+/** Presses `key` on the view and waits for it to show step `expected`. */
+async function press(page: Page, view: Locator, key: string, expected: number): Promise<void> {
+  await view.press(key);
+  await page.locator(`.panel-explain[data-step="${expected}"]`).waitFor();
+}
+
+describe("Algorithm view", () => {
+  it("steps through the plan with the keyboard and ends showing the final task tree", async () => {
+    const { page, view, errors } = await open(`widget.html?${QUERY}&view=explain`);
+    expect(await page.locator(".panel").count()).toBe(1); // only the Algorithm view
+    const total = Number(await view.getAttribute("data-steps"));
+    expect(total).toBeGreaterThan(4);
+    expect(await view.getAttribute("data-phase")).toBe("goal");
+    expect(await view.locator(".explain-caption").textContent()).toMatch(/^Algorithm 1 compares/);
+    expect(await view.getByRole("link").textContent()).toBe("Section III-A, Algorithm 1");
+
+    const seen = new Set<string>();
+    let nodes = 0;
+    for (let step = 1; step < total; step++) {
+      await press(page, view, "ArrowRight", step);
+      const phase = (await view.getAttribute("data-phase")) ?? "";
+      // a picture of the first step of each phase, for the eye (test-results/e2e/)
+      if (!seen.has(phase)) await screenshot(page, `explain-${phase}`);
+      seen.add(phase);
+      const now = Number(await view.locator(".explain-graph").getAttribute("data-nodes"));
+      // the search tree only grows while Alg. 2 runs
+      if (phase === "retrieval") expect(now).toBeGreaterThanOrEqual(nodes);
+      nodes = now;
+      expect(((await view.locator(".explain-caption").textContent()) ?? "").length).toBeGreaterThan(20);
+    }
+    expect([...seen]).toEqual(["retrieval", "modification", "pruning", "final"]);
+    expect(await view.locator(".explain-caption").textContent()).toMatch(/^The task tree: \d+ functional unit/);
+    expect(await view.getByRole("button", { name: "Next step" }).isDisabled()).toBe(true);
+    expect(nodes).toBeGreaterThan(3);
+
+    // back one step, Home to the start, End to the final tree again
+    await press(page, view, "ArrowLeft", total - 2);
+    await press(page, view, "Home", 0);
+    await press(page, view, "End", total - 1);
+
+    // play runs on from the start by itself; pause stops it
+    await view.getByRole("button", { name: "▶ Play" }).click();
+    await page.locator('.panel-explain[data-step="1"]').waitFor();
+    await view.getByRole("button", { name: "❚❚ Pause" }).click();
+    expect(await view.getByRole("button", { name: "▶ Play" }).getAttribute("aria-pressed")).toBe("false");
+    expect(errors).toEqual([]);
+  });
+
+  it("draws, at its last step on the planner page, the tree the task-tree view shows", async () => {
+    const { page, view, errors } = await open(`?${QUERY}`);
+    const total = Number(await view.getAttribute("data-steps"));
+    await press(page, view, "End", total - 1);
+    const tree = page.locator(".panel-tree .cy");
+    await page.locator(".panel-tree .cy canvas").first().waitFor();
+    expect(await view.locator(".explain-graph").getAttribute("data-nodes")).toBe(await tree.getAttribute("data-nodes"));
+    expect(await view.locator(".explain-graph").getAttribute("data-edges")).toBe(await tree.getAttribute("data-edges"));
+    expect(errors).toEqual([]);
+  });
+});
