@@ -1,8 +1,10 @@
 //! Food knowledge the planner reasons with: the physical form of a food (by its category in the food
 //! taxonomy), the motions a food of that form cannot take or join a dish by (`data/food_forms.tsv`),
 //! which foods must be cooked and how a cook prepares one named only by its category
-//! (`data/food_care.tsv`), and the motions that cook (`data/heat_motions.txt`).
+//! (`data/food_care.tsv`), the motions that cook (`data/heat_motions.txt`), and which food an ambiguous
+//! name means in a given state (`data/food_readings.tsv`).
 
+use crate::label::{normalize_label, normalize_word};
 use crate::substitute::Taxonomy;
 use rustc_hash::FxHashMap as HashMap;
 use std::sync::OnceLock;
@@ -10,6 +12,7 @@ use std::sync::OnceLock;
 const FORMS_TSV: &str = include_str!("../data/food_forms.tsv");
 const CARE_TSV: &str = include_str!("../data/food_care.tsv");
 const HEAT_TXT: &str = include_str!("../data/heat_motions.txt");
+const READINGS_TSV: &str = include_str!("../data/food_readings.tsv");
 
 /// A physical form and the motion words it cannot take.
 #[derive(Debug)]
@@ -174,6 +177,35 @@ pub fn cooks(motion: &str) -> bool {
     motion_words(motion).any(|w| heat.contains(&w))
 }
 
+/// (name, asked state) -> the food meant, in normal form.
+fn readings() -> &'static HashMap<(String, String), String> {
+    static READINGS: OnceLock<HashMap<(String, String), String>> = OnceLock::new();
+    READINGS.get_or_init(|| {
+        let mut map = HashMap::default();
+        for line in crate::taxonomy::data_lines(READINGS_TSV) {
+            let mut parts = line.split('\t').map(str::trim);
+            let (Some(name), Some(states), Some(reading)) =
+                (parts.next(), parts.next(), parts.next())
+            else {
+                continue; // a test names the row
+            };
+            for state in split_list(states) {
+                let key = (normalize_label(name), normalize_word(&state));
+                map.entry(key).or_insert_with(|| normalize_label(reading));
+            }
+        }
+        map
+    })
+}
+
+/// The food an ambiguous name means in the asked state ("pepper", "diced": bell pepper), if the data
+/// lists it; both arguments in normal form.
+pub fn reading(food: &str, state: &str) -> Option<&'static str> {
+    readings()
+        .get(&(food.to_string(), state.to_string()))
+        .map(String::as_str)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -298,6 +330,37 @@ mod tests {
                 taxonomy.categories.iter().any(|c| &c.name == category),
                 "food_forms.tsv names '{category}', which food_taxonomy.tsv lacks"
             );
+        }
+    }
+
+    #[test]
+    fn an_ambiguous_name_is_read_by_its_state() {
+        assert_eq!(reading("pepper", "diced"), Some("bell pepper"));
+        assert_eq!(reading("pepper", "whole veg"), Some("bell pepper"));
+        assert_eq!(reading("pepper", "ground"), Some("black pepper"));
+        assert_eq!(reading("pepper", "flakes"), Some("red pepper flake"));
+        assert_eq!(reading("garlic", "ground"), Some("garlic powder"));
+        assert_eq!(reading("lemon", "juice"), Some("lemon juice"));
+        assert_eq!(reading("garlic", "minced"), None);
+        assert_eq!(reading("onion", "chopped"), None);
+    }
+
+    #[test]
+    fn every_reading_row_is_complete_and_names_a_taxonomy_food() {
+        let taxonomy = Taxonomy::builtin();
+        for line in crate::taxonomy::data_lines(READINGS_TSV) {
+            let parts: Vec<&str> = line.split('\t').map(str::trim).collect();
+            assert_eq!(
+                parts.len(),
+                3,
+                "food_readings.tsv: '{line}' needs 3 columns"
+            );
+            for food in [parts[0], parts[2]] {
+                assert!(
+                    taxonomy.lookup(&normalize_label(food)).is_some(),
+                    "food_readings.tsv names '{food}', which food_taxonomy.tsv lacks"
+                );
+            }
         }
     }
 }

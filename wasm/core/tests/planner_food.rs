@@ -634,3 +634,182 @@ fn an_egg_is_cracked_before_it_is_blended() {
         p.units
     );
 }
+
+/// A broth stirred in a pot, an egg cracked into it, noodles cooked in it and ladled with it into a
+/// bowl as the ramen (class 14), the way FOON's ramen is made: the broth is a food of its own that the
+/// pot holds, and the ladle leaves a second node of it in the bowl.
+const BROTH_RAMEN: &str = "//
+O\tpot\t0
+S\ton\t[stove]
+O\tgarlic\t1
+S\tchopped
+S\tin\t[bowl]
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{garlic}
+S\ton\t[stove]
+//
+O\tpot\t0
+S\tcontains\t{garlic}
+S\ton\t[stove]
+O\twater\t1
+S\tin\t[measuring cup]
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{garlic,water}
+S\ton\t[stove]
+//
+O\tpot\t0
+S\tcontains\t{garlic,water}
+S\ton\t[stove]
+O\tspoon\t1
+M\tstir\t<Assumed>
+O\tpot\t0
+S\tcontains\t{soup broth}
+S\ton\t[stove]
+O\tsoup broth\t0
+S\tcontains\t{garlic,water}
+S\tin\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{soup broth}
+S\ton\t[stove]
+O\tsoup broth\t0
+S\tcontains\t{garlic,water}
+S\tin\t[pot]
+O\tegg\t1
+S\tuncracked
+M\tcrack\t<Assumed>
+O\tpot\t0
+S\tcontains\t{soup broth,egg white and yolk}
+S\ton\t[stove]
+//
+O\tpot\t0
+S\tcontains\t{soup broth,egg white and yolk}
+S\ton\t[stove]
+O\tnoodle\t1
+S\tuncooked
+M\tpick-and-place\t<Assumed>
+O\tpot\t0
+S\tcontains\t{soup broth,egg white and yolk,noodle}
+S\ton\t[stove]
+//
+O\tpot\t0
+S\tcontains\t{soup broth,egg white and yolk,noodle}
+S\ton\t[stove]
+M\tcook\t<Assumed>
+O\tpot\t0
+S\tcontains\t{soup broth,egg white and yolk,noodle}
+S\tcooked
+S\ton\t[stove]
+//
+O\tpot\t0
+S\tcontains\t{soup broth,egg white and yolk,noodle}
+S\tcooked
+S\ton\t[stove]
+O\tladle\t1
+M\tscoop and pour\t<Assumed>
+O\tramen\t1\t14
+S\tcontains\t{soup broth,egg white and yolk,noodle}
+S\tin\t[bowl]
+O\tsoup broth\t1
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn what_is_stirred_into_a_broth_reaches_the_ramen_and_an_egg_not_asked_leaves_no_crack() {
+    let p = plan_of(
+        &[("ramen.txt", BROTH_RAMEN)],
+        &ExactMatch,
+        &query(
+            "noodle",
+            &[
+                ("garlic", "chopped"),
+                ("water", "liquid"),
+                ("noodle", "uncooked"),
+            ],
+        ),
+    );
+    for food in ["garlic", "water", "noodle"] {
+        let line = p
+            .progress_lines
+            .iter()
+            .find(|l| l.ingredient == food)
+            .unwrap();
+        let last = line.state.last().unwrap();
+        assert_eq!(
+            (line.end_product.as_str(), last.physical_state.as_str()),
+            ("ramen", "in ramen"),
+            "{food}: {line:#?}"
+        );
+        // cooked with the noodles in the broth's pot
+        assert!(line.motion.iter().any(|m| m == "cook"), "{food}: {line:?}");
+    }
+    assert!(
+        p.units.iter().all(|u| u.motion != "crack"),
+        "{:#?}",
+        p.units
+    );
+    assert!(
+        p.units.iter().all(|u| u
+            .outputs
+            .iter()
+            .chain(&u.inputs)
+            .all(|n| n.label != "egg white and yolk"
+                && n.states.iter().all(|s| !s.contains("egg white and yolk")))),
+        "{:#?}",
+        p.units
+    );
+    assert_eq!(kinds(&p), []);
+}
+
+/// Ground pepper from a shaker and a bell pepper sliced, as FOON has them.
+const PEPPERS: &str = "//
+O\tpepper\t1
+S\tground
+S\tin\t[shaker]
+M\tsprinkle\t<Assumed>
+O\tpepper\t1
+S\tground
+S\tin\t[salad bowl]
+//
+O\tbell pepper\t1
+S\twhole
+O\tknife\t1
+M\tslice\t<Assumed>
+O\tbell pepper\t1
+S\tsliced
+//
+";
+
+#[test]
+fn a_pepper_asked_diced_is_a_fresh_pepper_and_one_asked_ground_is_the_shakers() {
+    let files = [("salad.txt", LETTUCE_SALAD), ("peppers.txt", PEPPERS)];
+    let diced = plan_of(
+        &files,
+        &ExactMatch,
+        &query("salad", &[("lettuce", "chopped"), ("pepper", "diced")]),
+    );
+    let o = outcome(&diced, "pepper");
+    assert_eq!(o.matched.as_ref().unwrap().label, "bell pepper", "{o:?}");
+    assert!(
+        o.reason
+            .as_deref()
+            .unwrap()
+            .contains("read as 'bell pepper'"),
+        "{o:?}"
+    );
+    assert!(
+        line_motions(&diced, "pepper").contains(&"slice"),
+        "{:#?}",
+        diced.progress_lines
+    );
+    let ground = plan_of(
+        &files,
+        &ExactMatch,
+        &query("salad", &[("lettuce", "chopped"), ("pepper", "ground")]),
+    );
+    let o = outcome(&ground, "pepper");
+    assert_eq!(o.matched.as_ref().unwrap().label, "pepper", "{o:?}");
+}

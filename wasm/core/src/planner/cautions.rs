@@ -67,11 +67,13 @@ fn line_caution(plan: &Plan, line: &ProgressLine) -> Option<Caution> {
         let detail = format!("{food} is never used on the way to {}", plan.goal.label);
         return caution(CautionKind::ShortOfDish, detail);
     }
+    // in the dish, or on it (butter spread on the pancake)
     let inside = format!("in {}", plan.goal.label);
+    let on_top = format!("on {}", plan.goal.label);
     let entered = line
         .state
         .iter()
-        .any(|s| s.physical_state.split(", ").any(|w| w == inside));
+        .any(|s| s.physical_state.split(", ").any(|w| w == inside) || s.location == on_top);
     if line.end_product != plan.goal.label || !entered {
         let last = line.state.last().map_or("", |s| s.physical_state.as_str());
         let detail = format!(
@@ -83,18 +85,30 @@ fn line_caution(plan: &Plan, line: &ProgressLine) -> Option<Caution> {
     let cooked = reaches(line, Category::Cooked)
         || line.motion.iter().any(|m| foods::cooks(m))
         || dish_cooked(plan);
-    if foods::must_cook(&food) && !cooked && !reaches(line, Category::Preserved) {
+    let meant = meant(plan, &food);
+    if foods::must_cook(meant) && !cooked && !reaches(line, Category::Preserved) {
         return caution(
             CautionKind::Uncooked,
             format!("{food} reaches {} uncooked", plan.goal.label),
         );
     }
-    let prepared = foods::prepared_state(&food);
+    let prepared = foods::prepared_state(meant);
     if prepared.is_some_and(|p| !cooked && !changed(line, p)) {
         let detail = format!("{food} goes into {} whole", plan.goal.label);
         return caution(CautionKind::LeftWhole, detail);
     }
     None
+}
+
+/// The food the food knowledge applies to: the one an ambiguous name was read as (lime juice for a lime
+/// asked as juice) when the planner took it so, else the name itself.
+fn meant<'p>(plan: &'p Plan, food: &'p str) -> &'p str {
+    plan.ingredients
+        .iter()
+        .find(|o| o.object == food)
+        .filter(|o| o.matched.as_ref().is_some_and(|m| m.label != o.object))
+        .and_then(|o| foods::reading(&o.object, &o.state))
+        .unwrap_or(food)
 }
 
 /// Whether a unit cooks the dish itself once it is made (the pancake flipped, then cooked): what is in it

@@ -12,7 +12,7 @@ use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
 use crate::similarity::Similarity;
-use crate::taxonomy::{dish_class_name, is_transfer_motion, is_utensil};
+use crate::taxonomy::{dish_class_name, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::borrow::Cow;
@@ -205,11 +205,16 @@ pub(crate) fn modify<'kb>(
             reasons: Vec::new(),
             label: o.to_string(),
         };
-        let Some((eq, sim)) = equivalent(ctx, o, &reference_labels, &mut w) else {
+        let read = read_as(ctx, o, s);
+        if let Some(r) = read {
+            w.reasons.push(format!("'{o}' {s} read as '{r}'"));
+        }
+        let name = read.unwrap_or(o);
+        let Some((eq, sim)) = equivalent(ctx, o, name, &reference_labels, &mut w) else {
             works.push(w);
             continue;
         };
-        w.low_confidence = eq != o && ctx.sim.low_confidence(o, &eq, sim);
+        w.low_confidence = eq != o && ctx.sim.low_confidence(name, &eq, sim);
         let slots = tree.slots_with_label(&eq);
         if !enabled {
             let in_state = best_state_slot(tree, &slots, s, ctx.index.sold_as(&eq));
@@ -432,17 +437,32 @@ fn settle_state<'kb>(
     w.planned = true;
 }
 
-/// The equivalent of `o`: an override, itself when it is a FOON label, else the most similar label of the
-/// reference tree, else of the whole knowledge base. Fills the alternatives; `None` when unplannable.
+/// The food an ambiguous name is looked up as, by its state (pepper diced: bell pepper), when the
+/// knowledge base has it or something like it and the user has not overridden the name.
+fn read_as(ctx: &Context, o: &str, s: &str) -> Option<&'static str> {
+    let r = foods::reading(o, s).filter(|&r| r != o && !ctx.overrides.contains_key(o))?;
+    let known = ctx.index.is_label(r)
+        || ctx
+            .sim
+            .rank_in_set(r, ctx.index.id, &ctx.index.ingredient_labels, 1)
+            .first()
+            .is_some_and(|(_, sim)| ctx.sim.accepts(*sim));
+    known.then_some(r)
+}
+
+/// The equivalent of `o` (looked up as `name`, the food it is read as): an override, itself when it is a
+/// FOON label, else the most similar label of the reference tree, else of the whole knowledge base. Fills
+/// the alternatives; `None` when unplannable.
 fn equivalent(
     ctx: &Context,
     o: &str,
+    name: &str,
     tree_labels: &[SmolStr],
     w: &mut Work,
 ) -> Option<(String, f32)> {
     let ranked = ctx
         .sim
-        .rank_in_set(o, ctx.index.id, &ctx.index.ingredient_labels, 6);
+        .rank_in_set(name, ctx.index.id, &ctx.index.ingredient_labels, 6);
     // a name with no likeness at all (similarity 0, as exact matching gives every other name) is no
     // alternative and no closest name
     let alternatives = |eq: &str| -> Vec<Alternative> {
@@ -482,17 +502,18 @@ fn equivalent(
         ));
         return None;
     }
-    if ctx.index.is_label(o) {
-        w.alternatives = alternatives(o);
-        return Some((o.to_string(), 1.0));
+    if ctx.index.is_label(name) {
+        // (a reading is the food itself, named more exactly)
+        w.alternatives = alternatives(name);
+        return Some((name.to_string(), 1.0));
     }
     let tree_refs: Vec<&str> = tree_labels.iter().map(SmolStr::as_str).collect();
-    let in_tree = ctx.sim.rank(o, &tree_refs, 1).into_iter().next();
+    let in_tree = ctx.sim.rank(name, &tree_refs, 1).into_iter().next();
     let in_kb = ranked.first().cloned();
     ctx.trace
-        .record(|t| t.equivalents(o, in_tree.as_ref(), in_kb.as_ref()));
+        .record(|t| t.equivalents(name, in_tree.as_ref(), in_kb.as_ref()));
     let pick = match (in_tree, in_kb) {
-        (Some(t), k) if ctx.sim.accepts(t.1) && !ctx.sim.low_confidence(o, &t.0, t.1) => {
+        (Some(t), k) if ctx.sim.accepts(t.1) && !ctx.sim.low_confidence(name, &t.0, t.1) => {
             Some(t).or(k)
         }
         (t, Some(k)) if ctx.sim.accepts(k.1) && t.as_ref().is_none_or(|t| k.1 > t.1) => Some(k),
@@ -511,7 +532,7 @@ fn equivalent(
         None => {
             w.alternatives = alternatives("");
             w.reasons.push(format!(
-                "no equivalent of '{o}' in the knowledge base{}",
+                "no equivalent of '{name}' in the knowledge base{}",
                 ranked
                     .first()
                     .filter(|(_, s)| *s > 0.0)
@@ -1456,6 +1477,25 @@ fn handles(tree: &Tree, x: SlotId, gone: &[bool]) -> bool {
     !gone[x] && (!slot.utensil || slot.node.holds_something())
 }
 
+/// The names a unit's outputs list in their contents that none of its inputs lists or is.
+fn made_in(tree: &Tree, inputs: &[(SlotId, bool)], outputs: &[(SlotId, bool)]) -> Vec<String> {
+    let known = |item: &str| {
+        inputs.iter().any(|&(x, _)| {
+            let node = &tree.slots[x].node;
+            node.label == item || node.listed().any(|l| l == item)
+        })
+    };
+    let mut made: Vec<String> = outputs
+        .iter()
+        .flat_map(|&(x, _)| tree.slots[x].node.listed())
+        .filter(|item| !known(item))
+        .map(str::to_string)
+        .collect();
+    made.sort_unstable();
+    made.dedup();
+    made
+}
+
 /// The slots of the ingredient the dish is named after (black beans cooked from black beans): those of
 /// the goal's label no unit makes, taken only by units before the dish's side. The dish's side (marked in
 /// the second vector) is the outputs of the first unit that makes the dish with something in it (the
@@ -1508,11 +1548,19 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>, requested: &HashSet<&str>) ->
     // nearly always): a filtered list would grow step by step
     let mut live: Vec<SlotId> = Vec::with_capacity(tree.slots.len());
     live.extend(tree.live_slots());
+    // what a unit gives out is made, whether or not it is the unit chosen to make it (the broth FOON's
+    // ladle leaves in the bowl beside the ramen is not a starting ingredient)
+    let mut made = vec![false; tree.slots.len()];
+    for (_, u) in tree.alive_units() {
+        for &(x, _) in &u.outputs {
+            made[x] = true;
+        }
+    }
     // only the labels that go are copied
     let mut starting: Vec<&str> = Vec::with_capacity(tree.slots.len());
     starting.extend(
         live.iter()
-            .filter(|&&x| !tree.produced(x) && !tree.slots[x].utensil)
+            .filter(|&&x| !made[x] && !tree.slots[x].utensil)
             .map(|&x| tree.slots[x].node.label.as_str()),
     );
     // names that only the lists of starting nodes give are ingredients too (FOON's "contain {butter}"
@@ -1521,7 +1569,7 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>, requested: &HashSet<&str>) ->
     // leaves in the bowl).
     // (asked-for names are set aside first: they are nearly all a starting node lists)
     let named = |item: &str| live.iter().any(|&x| tree.slots[x].node.label == item);
-    for &x in live.iter().filter(|&&x| !tree.produced(x)) {
+    for &x in live.iter().filter(|&&x| !made[x]) {
         let unnamed =
             |item: &&str| !requested.contains(item) && !keep.contains(*item) && !named(item);
         starting.extend(tree.slots[x].node.listed().filter(unnamed));
@@ -1601,13 +1649,11 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>, requested: &HashSet<&str>) ->
                 .iter()
                 .any(|i| i.0 == o.0 || tree.slots[i.0].node == tree.slots[o.0].node)
         });
-        // a transfer whose moved things all lost their food (an empty bowl poured into the pot) moves
-        // nothing, and gives back only things of the names it took
+        // a unit whose moved things all lost their food (an empty bowl poured into the pot, the egg
+        // cracked into the broth) acts on nothing, and gives back only things of the names it took
         let label = |x: SlotId| tree.slots[x].node.label.as_str();
-        // (the motion's words, the dearest test, last: few units lose all they moved)
         let moves_nothing = moved_food[u]
             && !inputs.iter().any(|&(x, m)| m && handles(tree, x, &gone))
-            && is_transfer_motion(&tree.units[u].motion)
             && outputs
                 .iter()
                 .all(|o| inputs.iter().any(|i| label(i.0) == label(o.0)));
@@ -1640,6 +1686,18 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>, requested: &HashSet<&str>) ->
                         }
                     }
                 }
+            }
+            // what only it put into a container (the egg white and yolk a crack leaves in the pot) goes
+            // with it, from the units after it as well
+            let made_here = made_in(tree, &inputs, &outputs);
+            let stays = |l: &String| {
+                keep.contains(l.as_str()) || requested.contains(l.as_str()) || *l == dish
+            };
+            for item in made_here.into_iter().filter(|l| !stays(l)) {
+                for &x in &live {
+                    gone[x] |= tree.slots[x].node.label == item;
+                }
+                with_units.insert(item);
             }
             continue;
         }

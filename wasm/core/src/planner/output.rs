@@ -330,18 +330,30 @@ fn walk<'t>(
     let mut into = None;
     let mut last_step: Option<(usize, TUnitId)> = None;
     loop {
-        // no unit before the first to use it takes it
-        from = from.max(uses.first_use[at]);
+        // no unit before the first to use it takes it (one nothing takes leaves the search where it is,
+        // for the vessel holding it)
+        if uses.first_use[at] != usize::MAX {
+            from = from.max(uses.first_use[at]);
+        }
         let next = order.iter().enumerate().skip(from).find_map(|(pos, &u)| {
             let unit = &tree.units[u];
             if !unit.inputs.iter().any(|i| i.0 == at) {
                 return None;
             }
-            let out = unit
-                .outputs
-                .iter()
-                .map(|o| o.0)
-                .find(|&o| tree.slots[o].node.label == label && !seen.contains(&o));
+            // of two pieces of it (the stem cut off a broccoli, the florets), the one a later unit takes
+            let pieces = || {
+                unit.outputs
+                    .iter()
+                    .map(|o| o.0)
+                    .filter(|&o| tree.slots[o].node.label == label && !seen.contains(&o))
+            };
+            // what goes into the unit making the dish goes into the dish (FOON's greek salad is poured
+            // out beside the salad it was made of)
+            let makes_dish = unit.outputs.iter().any(|o| o.0 == tree.goal);
+            let out = pieces()
+                .find(|&o| uses.first_use[o] != usize::MAX)
+                .or_else(|| pieces().next())
+                .filter(|_| !makes_dish);
             Some((pos, u, out))
         });
         let Some((pos, u, out)) = next else {
@@ -428,7 +440,8 @@ fn walk<'t>(
                 // followed in a vessel (the onion in the pot the broth is poured into), it stays in
                 // the vessel; the food itself taken in by another goes with that one
                 let in_vessel = tree.slots[at].utensil;
-                let entered = lists(true).or_else(fresh).or_else(|| {
+                let dish = || outputs.iter().find(|o| o.0 == tree.goal);
+                let entered = dish().or_else(|| lists(true)).or_else(fresh).or_else(|| {
                     if in_vessel {
                         lists(false).or_else(grew)
                     } else {
