@@ -19,7 +19,7 @@ fn every_dev_query_plans_soundly_with_exact_matching() {
 
 #[test]
 fn every_dev_query_plans_soundly_with_embeddings() {
-    check_dev_queries(&embeddings(), "embeddings", (16, 19, 0));
+    check_dev_queries(&embeddings(), "embeddings", (15, 19, 0));
 }
 
 /// `most_cautions`: at most so many uncooked, short-of-dish and left-whole cautions in the modified plans.

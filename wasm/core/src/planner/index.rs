@@ -3,6 +3,7 @@
 
 use super::output::plan_node;
 use super::states::{category, has_food_state, is_food_state, node_category, Category};
+use super::transitions::Transitions;
 use crate::kb::KnowledgeBase;
 use crate::memo::Memo;
 use crate::model::NodeId;
@@ -37,6 +38,8 @@ pub struct PlannerIndex {
     motion_for_category: HashMap<Category, String>,
     /// Motion -> the utensil node most used as an input of it.
     utensil_for_motion: HashMap<String, NodeId>,
+    /// Which motion brings a food of each form into which state, in this knowledge base.
+    pub(crate) transitions: Transitions,
     /// Ingredients sold liquid or ground rather than whole (`sold_as`): a node of one without food
     /// states is in that category.
     sold_as: HashMap<String, Category>,
@@ -416,6 +419,7 @@ impl PlannerIndex {
                 .filter_map(|(c, m)| Some((*c, best(m)?)))
                 .collect(),
             sold_as,
+            transitions: Transitions::mine(kb),
             utensil_for_motion: motion_utensil
                 .iter()
                 .filter_map(|(m, u)| Some((m.clone(), best(u)?)))

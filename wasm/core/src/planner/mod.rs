@@ -13,12 +13,14 @@ mod retrieve;
 mod schedule;
 mod score;
 pub mod states;
+mod transitions;
 mod tree;
 
 pub use crate::plan::{Caution, CautionKind};
 pub use cautions::cautions;
 pub use check::{available_at_start, violations};
 pub use index::PlannerIndex;
+pub use transitions::{Transitions, Verdict};
 
 use crate::error::{ErrorCode, FoonError, Result};
 use crate::kb::KnowledgeBase;

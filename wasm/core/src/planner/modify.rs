@@ -2,10 +2,11 @@
 //! branches for ingredients from elsewhere in FOON, and pruning of what was not asked for.
 
 use super::index::{Picks, PlannerIndex};
-use super::retrieve::{retrieve, retrieve_within};
+use super::retrieve::{retrieve, retrieve_within, Retrieved};
 use super::states::{
     akin, category, food_state_category, has_food_state, is_food_state, kind, state_text, Category,
 };
+use super::transitions::Verdict;
 use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
 use crate::foods;
 use crate::kb::KnowledgeBase;
@@ -739,11 +740,7 @@ fn restate<'kb>(
             "state '{s}' cannot be reached from the tree's '{kept}' (not reversible); kept '{kept}'"
         ));
     }
-    let Some(motion) = ctx.index.motion_for(s) else {
-        return Err(format!(
-            "no motion in FOON reaches '{s}'; kept the tree's state"
-        ));
-    };
+    let motion = state_motion(ctx, o, eq, s)?;
     if let Some(why) = cannot_take(o, eq, &motion) {
         return Err(format!(
             "state '{s}' not given: {why}; kept the tree's state"
@@ -838,6 +835,63 @@ fn restate<'kb>(
             tree.units[u].motion
         ),
         None => format!("added '{motion}' to make it '{s}'"),
+    })
+}
+
+/// The motion bringing `o` (`eq` in FOON) into state `s`: the one FOON uses most for the state, if
+/// some recipe uses it on a food of the form of `o`, else the one recipes use most on foods of that form
+/// (butter is softened as FOON softens butter, not blended as it softens vegetables).
+fn state_motion(ctx: &Context, o: &str, eq: &str, s: &str) -> Result<String, String> {
+    let model = &ctx.index.transitions;
+    let food = if foods::knows(o) { o } else { eq };
+    let usual = ctx.index.motion_for(s);
+    if !model.judges(food) {
+        return usual
+            .ok_or_else(|| format!("no motion in FOON reaches '{s}'; kept the tree's state"));
+    }
+    match usual {
+        Some(m) if model.makes(food, &m, s) == Verdict::Seen => Ok(m),
+        _ => model
+            .motion_for(food, s)
+            .map(str::to_string)
+            .ok_or_else(|| {
+                format!(
+                    "no recipe in FOON brings a food like '{o}' to '{s}'; kept the tree's state"
+                )
+            }),
+    }
+}
+
+/// Whether a branch retrieved for `eq` handles `o` only as recipes handle foods of its form: every
+/// unit on `eq` moves it or brings it into states the transition model has seen for that form.
+fn branch_fits(ctx: &Context, o: &str, eq: &str, branch: &Retrieved) -> bool {
+    let model = &ctx.index.transitions;
+    let food = if foods::knows(o) { o } else { eq };
+    if eq == o || !model.judges(food) {
+        return true;
+    }
+    branch.units.iter().all(|&u| {
+        let unit = &ctx.kb.units[u];
+        let takes_eq = unit.input_nodes().any(|n| ctx.kb.nodes[n].label == eq);
+        let outs = unit.outputs.iter().map(|x| &ctx.kb.nodes[x.node]);
+        !takes_eq
+            || outs.filter(|n| n.label == eq).all(|n| {
+                let gained: Vec<&str> = food_states(n)
+                    .into_iter()
+                    .filter(|st| {
+                        !unit.input_nodes().any(|i| {
+                            ctx.kb.nodes[i].label == eq
+                                && ctx.kb.nodes[i].physical_states().any(|p| p == *st)
+                        })
+                    })
+                    .collect();
+                if gained.is_empty() {
+                    return model.makes(food, &unit.motion, "") != Verdict::Unseen;
+                }
+                gained
+                    .iter()
+                    .all(|st| model.makes(food, &unit.motion, st) != Verdict::Unseen)
+            })
     })
 }
 
@@ -1088,10 +1142,34 @@ fn cooked_later(tree: &Tree, order: &[TUnitId]) -> Vec<bool> {
     cooked
 }
 
-/// Whether what joins unit `u` is cooked there or later (`cooked`: `cooked_later`).
+/// Whether what joins unit `u` is cooked there or later (`cooked`: `cooked_later`): what it puts things
+/// into (the bowl a ladle fills, not the pot it empties, which may go back on the stove), else any of
+/// its outputs.
 fn cooks_what_joins(tree: &Tree, cooked: &[bool], u: TUnitId) -> bool {
     let unit = &tree.units[u];
-    foods::cooks(&unit.motion) || unit.outputs.iter().any(|x| cooked[x.0])
+    let contents = |x: SlotId| tree.slots[x].node.contents().count();
+    let filled: Vec<SlotId> = unit
+        .outputs
+        .iter()
+        .map(|o| o.0)
+        .filter(|&x| {
+            let label = &tree.slots[x].node.label;
+            let had = unit
+                .inputs
+                .iter()
+                .filter(|i| tree.slots[i.0].node.label == *label)
+                .map(|i| contents(i.0))
+                .max();
+            had.is_some_and(|n| contents(x) > n)
+        })
+        .collect();
+    let cooked_later = |x: &SlotId| cooked[*x];
+    foods::cooks(&unit.motion)
+        || if filled.is_empty() {
+            unit.outputs.iter().map(|o| o.0).any(|x| cooked_later(&x))
+        } else {
+            filled.iter().any(cooked_later)
+        }
 }
 
 /// The unit a new ingredient joins: one that can take more ingredients, into an output whose contents
@@ -1188,6 +1266,7 @@ fn add_branch<'kb>(
     let prepared = prepared_state(o, eq, asked);
     let s = prepared.unwrap_or(asked);
     let mut picked = None;
+    let mut misfit = None;
     let candidates = pick_nodes(ctx, eq, s);
     let count = candidates.len();
     // the best few in the state, and always the ingredient as it comes from the kitchen (last)
@@ -1204,10 +1283,16 @@ fn add_branch<'kb>(
         }
         let private = |u| private_unit(ctx.kb, u, eq);
         if let Some(r) = retrieve_within(ctx.kb, ctx.index, ctx.scorer, n, None, private) {
-            picked = Some((n, in_state, r));
-            break;
+            // a branch handling the food as no recipe handles one of its form is kept only as a last
+            // resort (tahini is not ground as the seed it was matched with)
+            if branch_fits(ctx, o, eq, &r) {
+                picked = Some((n, in_state, r));
+                break;
+            }
+            misfit.get_or_insert((n, in_state, r));
         }
     }
+    let picked = picked.or(misfit);
     let node = picked.as_ref().map(|p| (p.0, p.1));
     ctx.trace
         .record(|t| t.state_choice(ctx, (o, asked), eq, s, node));
@@ -1328,16 +1413,23 @@ fn finish_branch<'kb>(
                 tree.slots[last].node = Cow::Owned(node);
                 chosen_state = s.into();
             }
-        } else if let Some(why) = ctx.index.motion_for(s).and_then(|m| cannot_take(o, eq, &m)) {
-            let _ = write!(how, ", state '{s}' not given: {why}");
-        } else if let Some(motion) = ctx.index.motion_for(s) {
-            let made = ObjectNode::new(eq, vec![State::plain(s)]);
-            let x = add_state_unit(ctx, tree, last, made, &motion);
-            let _ = write!(how, ", then '{motion}' to make it '{s}'");
-            chosen_state = s.into();
-            last = x;
         } else {
-            let _ = write!(how, ", no motion in FOON reaches '{s}'");
+            match state_motion(ctx, o, eq, s) {
+                Err(why) => {
+                    let _ = write!(how, ", {}", why.trim_end_matches("; kept the tree's state"));
+                }
+                Ok(m) => match cannot_take(o, eq, &m) {
+                    Some(why) => {
+                        let _ = write!(how, ", state '{s}' not given: {why}");
+                    }
+                    None => {
+                        let made = ObjectNode::new(eq, vec![State::plain(s)]);
+                        last = add_state_unit(ctx, tree, last, made, &m);
+                        let _ = write!(how, ", then '{m}' to make it '{s}'");
+                        chosen_state = s.into();
+                    }
+                },
+            }
         }
     }
     last = prepare_whole(ctx, tree, eq, o, last, &mut how);
