@@ -1,8 +1,12 @@
 // `npm run bench`: speed and memory of the planner in WASM under Node, printed as figures (never asserted).
 // FOON-111 (plain dialect) with the 320 dev queries, then synthetic universal FOONs of 10x and 100x its size,
 // made by relabelling copies of FOON-111 (every label of copy k gets the suffix " k<k>"). BENCH_SCALES=1,10
-// leaves out the 100x one (its load alone takes tens of seconds); BENCH_ROUNDS sets the plan rounds.
+// leaves out the 100x one (its load alone takes tens of seconds); BENCH_ROUNDS sets the plan rounds. Then the
+// same plans natively (the WASM/native ratio of this run) and the page in headless Chromium (BENCH_BROWSER=0
+// leaves it out; scripts/bench-browser.ts).
 
+import { spawnSync } from "node:child_process";
+import { existsSync } from "node:fs";
 import { join } from "node:path";
 import { FoonPlanner, wasmMemoryBytes } from "../src/planner/index";
 import { initPlannerFromDisk, readEmbeddings, readKnowledgeBase, ROOT } from "../src/planner/node";
@@ -59,7 +63,8 @@ function timedPlan(planner: FoonPlanner, request: PlanRequest): { took: number; 
 const spread = (sorted: number[]): string =>
   `median ${ms(percentile(sorted, 0.5))}, p95 ${ms(percentile(sorted, 0.95))}, max ${ms(sorted[sorted.length - 1] ?? 0)}`;
 
-function bench(name: string, files: KnowledgeBaseFile[], embeddings: Uint8Array, requests: PlanRequest[], rounds = ROUNDS): void {
+/** Prints the figures of one knowledge base; returns the median plan time over all rounds. */
+function bench(name: string, files: KnowledgeBaseFile[], embeddings: Uint8Array, requests: PlanRequest[], rounds = ROUNDS): number {
   const loads: number[] = [];
   let planner: FoonPlanner | undefined;
   const loadRounds = files.length > 5000 ? 1 : 5;
@@ -69,7 +74,7 @@ function bench(name: string, files: KnowledgeBaseFile[], embeddings: Uint8Array,
     planner = FoonPlanner.load(files, embeddings);
     loads.push(performance.now() - started);
   }
-  if (planner === undefined) return;
+  if (planner === undefined) return NaN;
   const stats = planner.stats();
   const times: number[] = [];
   // each query's fastest round: a shared machine only ever adds time, so the best of a few rounds is
@@ -110,6 +115,33 @@ function bench(name: string, files: KnowledgeBaseFile[], embeddings: Uint8Array,
   console.log(`  JSON.parse of the plan as printed (median ${(percentile(bytes, 0.5) / 1024).toFixed(1)} kB): median ${ms(percentile(parses, 0.5))}, p95 ${ms(percentile(parses, 0.95))}`);
   console.log(`  memory: WASM linear memory ${mb(wasmMemoryBytes())}, process peak RSS ${mb(process.resourceUsage().maxRSS * 1024)}`);
   planner.free();
+  return percentile(times, 0.5);
+}
+
+/**
+ * The same dev plans natively (`plan_timing`, plan and JSON written, no WASM boundary) in this run, as the
+ * ratio that one machine's figures can be compared by. Skipped, saying so, where cargo is not installed.
+ */
+function benchNative(wasmMedian: number): void {
+  const run = spawnSync("cargo", ["run", "-q", "--release", "--example", "plan_timing", "--", String(ROUNDS)], { cwd: join(ROOT, "wasm"), encoding: "utf8" });
+  const median = /plan \+ JSON .*?median ([\d.]+) ms/.exec(run.stdout ?? "")?.[1];
+  if (run.status !== 0 || median === undefined) {
+    console.log(`  native (cargo plan_timing): not run (${run.error?.message ?? (run.stderr.trim().split("\n").pop() || "no figure printed")})`);
+    return;
+  }
+  console.log(`  native (cargo plan_timing, plan + JSON): median ${ms(Number(median))}; WASM under Node / native ${(wasmMedian / Number(median)).toFixed(2)}x`);
+}
+
+/** The page's load phases and download from headless Chromium (`npm run bench:browser`), when dist/ is built. */
+function benchBrowser(): void {
+  if (!existsSync(join(ROOT, "dist/index.html"))) {
+    console.log("\nbrowser: not run (dist/ is not built: npm run build)");
+    return;
+  }
+  console.log("");
+  const run = spawnSync("npx", ["--no-install", "tsx", "scripts/bench-browser.ts"], { cwd: ROOT, encoding: "utf8", env: { ...process.env, BENCH_ROUNDS: process.env.BENCH_BROWSER_ROUNDS ?? "3" } });
+  process.stdout.write(run.stdout);
+  if (run.status !== 0) console.log(`browser: failed (${run.stderr.trim().split("\n").pop() ?? ""})`);
 }
 
 /**
@@ -159,8 +191,9 @@ warmUpEngine(foon111, embeddings, requests);
 // BENCH_SCALES=1,10,100 (the default) picks which of the three knowledge bases to measure
 const scales = new Set((process.env.BENCH_SCALES ?? "1,10,100").split(",").map((s) => s.trim()));
 if (scales.has("1")) {
-  bench("FOON-111 (plain)", foon111, embeddings, requests);
+  benchNative(bench("FOON-111 (plain)", foon111, embeddings, requests));
   benchExplain(foon111, embeddings, requests);
 }
 if (scales.has("10")) bench("synthetic 10x FOON-111", scaled(foon111, 10), embeddings, requests);
 if (scales.has("100")) bench("synthetic 100x FOON-111", scaled(foon111, 100), embeddings, requests, 1);
+if (process.env.BENCH_BROWSER !== "0") benchBrowser();

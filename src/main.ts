@@ -21,7 +21,6 @@ function start(): void {
   const initial = fromUrl ?? EXAMPLES[0]!.query;
   // the URL always shows the query, the first example's included (so "back" to it shows it again)
   if (fromUrl === null) history.replaceState(null, "", `${location.pathname}${queryToSearch(initial)}${location.hash}`);
-  let firstPlan = true;
   const app = createPlannerApp(host, {
     planner: new WorkerPlanner(),
     kbUrl: KB_URL,
@@ -29,21 +28,17 @@ function start(): void {
     views: ALL_VIEWS,
     persistence: openKbPersistence(),
     query: initial,
-    events: {
-      plan: () => {
-        if (!firstPlan) return;
-        firstPlan = false;
-        // read by the end-to-end tests and the closing note: navigation start -> first plan shown
-        performance.mark("foon:first-plan");
-      },
-    },
+    // the service worker precaches every file: started after the first plan, so it never competes with it
+    events: { plan: () => registerServiceWorker() },
   });
   syncQueryWithUrl(app.store, (q) => app.setQuery(q));
   bindThemePicker(themePicker, document.documentElement, () => app.restyle());
 }
 
+let registered = false;
 function registerServiceWorker(): void {
-  if (!import.meta.env.PROD || !("serviceWorker" in navigator)) return;
+  if (registered || !import.meta.env.PROD || !("serviceWorker" in navigator)) return;
+  registered = true;
   // relative to the page, so the app works from any static sub-path
   navigator.serviceWorker.register(new URL("sw.js", document.baseURI), { scope: "./" }).catch((e: unknown) => {
     console.warn("service worker not registered:", e);
@@ -51,4 +46,3 @@ function registerServiceWorker(): void {
 }
 
 start();
-registerServiceWorker();

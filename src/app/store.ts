@@ -21,6 +21,8 @@ export interface AppState {
   plan: Plan | null;
   /** Milliseconds the last plan took in the worker. */
   planMs: number | null;
+  /** Milliseconds from the plan request to every view drawn with its answer (the status line shows it). */
+  shownMs: number | null;
   planning: boolean;
   planError: string | null;
   selection: Selection;
@@ -35,6 +37,7 @@ export const INITIAL_STATE: AppState = {
   kbUnsaved: null,
   plan: null,
   planMs: null,
+  shownMs: null,
   planning: false,
   planError: null,
   selection: NO_SELECTION,

@@ -3,7 +3,7 @@
 
 import { PlannerError } from "../planner/errors";
 import type { ExportFormat, KnowledgeBaseFile, Plan, PlanRequest } from "../planner/types";
-import type { KnowledgeBaseSource, LoadedKnowledgeBase, WorkerRequest, WorkerResponse } from "./protocol";
+import type { KnowledgeBaseSource, LoadedKnowledgeBase, LoadPhase, WorkerRequest, WorkerResponse } from "./protocol";
 import plannerWorkerUrl from "./planner.worker.ts?worker&url";
 
 /** What a planner worker (or a fake one in tests) must offer the app. */
@@ -176,8 +176,9 @@ export class WorkerPlanner implements PlannerService {
 
   private async load(source: KnowledgeBaseSource, embeddingsUrl: string | undefined): Promise<LoadedKnowledgeBase> {
     const response = await this.send({ type: "load", id: this.nextId++, source, embeddingsUrl });
-    if (response.type === "loaded") return response.kb;
-    throw errorOf(response);
+    if (response.type !== "loaded") throw errorOf(response);
+    measurePhases(response.kb.phases);
+    return response.kb;
   }
 
   loadUrl(url: string, embeddingsUrl?: string): Promise<LoadedKnowledgeBase> {
@@ -206,6 +207,13 @@ export class WorkerPlanner implements PlannerService {
   dispose(): void {
     this.worker.terminate();
     this.pending.clear();
+  }
+}
+
+/** The worker's load phases on the page's Performance timeline, as `foon:<phase>` measures. */
+function measurePhases(phases: readonly LoadPhase[]): void {
+  for (const p of phases) {
+    performance.measure(`foon:${p.name}`, { start: p.start - performance.timeOrigin, end: p.end - performance.timeOrigin });
   }
 }
 

@@ -5,7 +5,7 @@
 import { FoonPlanner, initPlanner, PlannerError, toPlannerError } from "../planner/index";
 import type { PlanRequest } from "../planner/types";
 import { LatestOnly } from "./latest";
-import type { KnowledgeBaseSource, LoadedKnowledgeBase, WorkerRequest, WorkerResponse } from "./protocol";
+import type { KnowledgeBaseSource, LoadedKnowledgeBase, LoadPhase, LoadPhaseName, WorkerRequest, WorkerResponse } from "./protocol";
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 
@@ -43,13 +43,31 @@ function embeddingsOf(url: string | undefined): Promise<Uint8Array | undefined> 
   return table;
 }
 
+/** Wall-clock milliseconds, comparable with the page's (`performance.now()` is per context). */
+const clock = (): number => performance.timeOrigin + performance.now();
+
+/** Runs `work`, adding its phase to `phases` when it settles. */
+async function phase<T>(phases: LoadPhase[], name: LoadPhaseName, work: () => Promise<T> | T): Promise<T> {
+  const start = clock();
+  try {
+    return await work();
+  } finally {
+    phases.push({ name, start, end: clock() });
+  }
+}
+
 async function load(id: number, source: KnowledgeBaseSource, embeddingsUrl: string | undefined): Promise<void> {
-  const [, { name, files }, embeddings] = await Promise.all([initPlanner(), filesOf(source), embeddingsOf(embeddingsUrl)]);
+  const phases: LoadPhase[] = [];
+  const [, { name, files }, embeddings] = await Promise.all([
+    phase(phases, "wasm", initPlanner),
+    phase(phases, "kb download", () => filesOf(source)),
+    phase(phases, "embeddings download", () => embeddingsOf(embeddingsUrl)),
+  ]);
   // A failed load keeps the previous knowledge base: the user sees the error and can fix the file.
-  const next = FoonPlanner.load(files, embeddings);
+  const next = await phase(phases, "kb load", () => FoonPlanner.load(files, embeddings));
   planner?.free();
   planner = next;
-  const kb: LoadedKnowledgeBase = { name, stats: next.stats(), vocabulary: next.vocabulary(), warnings: next.warnings(), embeddings: embeddings !== undefined };
+  const kb: LoadedKnowledgeBase = { name, stats: next.stats(), vocabulary: next.vocabulary(), warnings: next.warnings(), embeddings: embeddings !== undefined, phases };
   reply({ type: "loaded", id, kb });
 }
 

@@ -18,7 +18,22 @@ export interface LoadedKnowledgeBase {
   warnings: FoonErrorData[];
   /** Whether the embedding table was loaded (else substitutes are found by exact names only). */
   embeddings: boolean;
+  /** How long each phase of this load took, on the wall clock (the worker and the page share it). */
+  phases: LoadPhase[];
 }
+
+/** One phase of loading: `start` and `end` are Unix epoch milliseconds (`timeOrigin + now()`). */
+export interface LoadPhase {
+  name: LoadPhaseName;
+  start: number;
+  end: number;
+}
+
+/**
+ * `wasm`: the module fetched and compiled as it streams in (once per worker); `kb download` and
+ * `embeddings download`: the files fetched (the table once per URL); `kb load`: parse, merge, index.
+ */
+export type LoadPhaseName = "wasm" | "kb download" | "embeddings download" | "kb load";
 
 export type WorkerResponse =
   | { type: "loaded"; id: number; kb: LoadedKnowledgeBase }

@@ -1,0 +1,132 @@
+// `npm run bench:browser`: the built page (dist/) in headless Chromium from a local static server, cold
+// (a fresh profile: nothing cached) and warm (the same profile again, its service worker in control), and
+// the widget page cold. Prints each load phase as the median over BENCH_ROUNDS visits (default 5), the
+// download in gzip bytes, and a re-plan after an edit in the page. Figures are printed, never asserted.
+
+import { existsSync, readFileSync } from "node:fs";
+import { join } from "node:path";
+import { gzipSync } from "node:zlib";
+import type { Browser, Page, Request } from "playwright-core";
+import { ROOT } from "../src/planner/node";
+import { launch } from "../tests/e2e/browser";
+import { serveStatic } from "../tests/e2e/app-static-server";
+
+const ROUNDS = Number(process.env.BENCH_ROUNDS ?? 5);
+const PREFIX = "/bench/";
+const DIST = join(ROOT, "dist");
+const QUERY = "dish=salad&i=chili+pepper~chopped&i=tomato~whole&i=cool+whip";
+
+/** What one visit measured, in ms after navigation start, and the files it fetched. */
+interface Visit {
+  phases: Record<string, number>;
+  files: string[];
+}
+
+/** The phases in the order they are printed: each is the time its end was reached after navigation. */
+const PHASES = ["domContentLoaded", "foon:wasm", "foon:kb download", "foon:embeddings download", "foon:kb load", "first plan"];
+
+async function visit(page: Page, url: string): Promise<Visit> {
+  // the worker's requests too (the WASM module, the knowledge base, the table), not the service worker's
+  const fetched: string[] = [];
+  const onRequest = (request: Request): void => {
+    if (request.serviceWorker() === null) fetched.push(new URL(request.url()).pathname);
+  };
+  page.on("request", onRequest);
+  await page.goto(url);
+  await page.waitForFunction(() => performance.getEntriesByName("foon:first-plan").length > 0, undefined, { timeout: 60_000 });
+  page.off("request", onRequest);
+  const phases = await page.evaluate(() => {
+    const phases: Record<string, number> = {};
+    const navigation = performance.getEntriesByType("navigation")[0] as PerformanceNavigationTiming | undefined;
+    phases.domContentLoaded = navigation?.domContentLoadedEventEnd ?? -1;
+    for (const m of performance.getEntriesByType("measure")) if (m.name.startsWith("foon:")) phases[m.name] = m.startTime + m.duration;
+    phases["first plan"] = performance.getEntriesByName("foon:first-plan")[0]?.startTime ?? -1;
+    return phases;
+  });
+  return { phases, files: fetched };
+}
+
+/** The request-to-views-drawn times of re-plans after editing the first ingredient's state. */
+async function replans(page: Page, edits: number): Promise<number[]> {
+  const state = page.locator(".ingredient-row .state").first();
+  const times: number[] = [];
+  for (let i = 0; i < edits; i++) {
+    await page.evaluate(() => performance.clearMeasures("foon:plan shown"));
+    await state.fill(i % 2 === 0 ? "diced" : "chopped");
+    await page.waitForFunction(() => performance.getEntriesByName("foon:plan shown").length > 0);
+    times.push(await page.evaluate(() => performance.getEntriesByName("foon:plan shown")[0]?.duration ?? -1));
+  }
+  return times;
+}
+
+const median = (xs: number[]): number => {
+  const sorted = [...xs].sort((a, b) => a - b);
+  return sorted[Math.floor(sorted.length / 2)] ?? NaN;
+};
+
+/** The gzip bytes of every distinct file the visit fetched from dist/. */
+function gzipBytes(files: string[]): { total: number; biggest: [string, number][] } {
+  const sizes = new Map<string, number>();
+  for (const path of files) {
+    if (!path.startsWith(PREFIX)) continue;
+    const file = join(DIST, path.endsWith("/") ? `${path.slice(PREFIX.length)}index.html` : path.slice(PREFIX.length));
+    if (!sizes.has(file) && existsSync(file)) sizes.set(file, gzipSync(readFileSync(file), { level: 9 }).length);
+  }
+  const biggest = [...sizes].sort((a, b) => b[1] - a[1]).slice(0, 4).map(([f, n]): [string, number] => [f.slice(DIST.length + 1), n]);
+  return { total: [...sizes.values()].reduce((a, b) => a + b, 0), biggest };
+}
+
+function report(name: string, visits: Visit[]): void {
+  const line = PHASES.map((p) => `${p.replace("foon:", "")} ${median(visits.map((v) => v.phases[p] ?? NaN)).toFixed(0)}`).join(", ");
+  console.log(`  ${name} (median of ${visits.length}, ms after navigation to the end of each phase): ${line}`);
+}
+
+function reportDownload(name: string, visit: Visit): void {
+  const { total, biggest } = gzipBytes(visit.files);
+  console.log(`  ${name} download: ${(total / 1000).toFixed(0)} kB gzip (${biggest.map(([f, n]) => `${f} ${(n / 1000).toFixed(0)} kB`).join(", ")}, …)`);
+}
+
+async function page(browser: Browser, url: string, edit: boolean): Promise<{ cold: Visit[]; warm: Visit[]; replan: number[] }> {
+  const cold: Visit[] = [];
+  const warm: Visit[] = [];
+  let replan: number[] = [];
+  for (let round = 0; round < ROUNDS; round++) {
+    const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+    const tab = await context.newPage();
+    cold.push(await visit(tab, url));
+    if (round === 0 && edit) replan = await replans(tab, 10);
+    // warm: the service worker (when the page has one) controls the next visit
+    await tab.evaluate(async () => {
+      if ((await navigator.serviceWorker.getRegistration()) !== undefined) await navigator.serviceWorker.ready;
+    });
+    warm.push(await visit(tab, url));
+    await context.close();
+  }
+  return { cold, warm, replan };
+}
+
+async function main(): Promise<void> {
+  if (!existsSync(join(DIST, "index.html"))) throw new Error("dist/ is not built: run `npm run build` first");
+  const browser = await launch();
+  const server = await serveStatic(DIST, PREFIX);
+  try {
+    console.log(`foon-planner browser bench (headless Chromium, ${server.url}, ${ROUNDS} visits each)`);
+    const app = await page(browser, `${server.url}?${QUERY}`, true);
+    report("page, cold", app.cold);
+    report("page, warm", app.warm);
+    reportDownload("page", app.cold[0]!);
+    console.log(`  re-plan after an edit (request to views drawn): median ${median(app.replan).toFixed(1)} ms, max ${Math.max(...app.replan).toFixed(1)} ms over ${app.replan.length}`);
+    const widget = await page(browser, `${server.url}widget.html?${QUERY}`, false);
+    report("widget, cold", widget.cold);
+    report("widget, warm", widget.warm);
+    reportDownload("widget", widget.cold[0]!);
+  } finally {
+    await server.close();
+    await browser.close();
+  }
+}
+
+main().catch((e: unknown) => {
+  console.error(e instanceof Error ? e.message : e);
+  process.exit(1);
+});
