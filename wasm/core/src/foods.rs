@@ -109,6 +109,8 @@ struct Care {
     prepared: Option<String>,
     /// The preparation comes before anything else is done to the food.
     first: bool,
+    /// Its skin is peeled before it is cut.
+    peel: bool,
 }
 
 fn cares() -> &'static HashMap<String, Care> {
@@ -124,9 +126,11 @@ fn cares() -> &'static HashMap<String, Care> {
                     "no" => Some(Cooking::No),
                     _ => None, // a test names the row
                 };
-                let first = parts.next() == Some("first");
+                let flags: Vec<String> =
+                    parts.next().map(split_list).into_iter().flatten().collect();
                 let care = Care {
-                    first,
+                    first: flags.iter().any(|f| f == "first"),
+                    peel: flags.iter().any(|f| f == "peel"),
                     cooking,
                     prepared: (prepared != "-").then(|| prepared.to_string()),
                 };
@@ -168,6 +172,22 @@ pub fn prepared_state(food: &str) -> Option<&'static str> {
 /// The preparation `food` gets before anything else is done to it (an egg: cracked), if any.
 pub fn prepared_first(food: &str) -> Option<&'static str> {
     care_of(food).filter(|c| c.first)?.prepared.as_deref()
+}
+
+/// Whether `food`'s skin is peeled before it is cut (an onion, a mango).
+pub fn peeled_before_cut(food: &str) -> bool {
+    care_of(food).is_some_and(|c| c.peel)
+}
+
+/// Motion words that cut a food into pieces (a peeled onion chopped, a mango sliced).
+const CUTS: &[&str] = &[
+    "cut", "chop", "slice", "dice", "mince", "grate", "shred", "julienne", "cube", "quarter",
+    "halve",
+];
+
+/// Whether `motion` cuts what it acts on into pieces ("chop", "cut in half").
+pub fn cuts(motion: &str) -> bool {
+    motion_words(motion).any(|w| CUTS.contains(&w))
 }
 
 /// Whether `motion` cooks what it acts on ("bake", "deep fry", "cook and stir").
@@ -303,6 +323,10 @@ mod tests {
         assert_eq!(prepared_state("blueberry"), None);
         assert_eq!(prepared_first("egg"), Some("cracked"));
         assert_eq!(prepared_first("onion"), None);
+        assert!(peeled_before_cut("red onion") && peeled_before_cut("mango"));
+        assert!(
+            !peeled_before_cut("lemon") && !peeled_before_cut("leek") && !peeled_before_cut("egg")
+        );
     }
 
     #[test]

@@ -1384,7 +1384,7 @@ fn a_ladle_scoops_out_of_the_pot_into_the_bowl() {
 O\tpot\t0
 S\tempty
 O\tnoodle\t1
-S\tuncooked
+S\tcooked
 M\tpour\t<Assumed>
 O\tpot\t0
 S\tcontains\t{noodle}
@@ -1402,7 +1402,7 @@ S\tcontains\t{noodle}
 S\tin\t[bowl]
 //
 ";
-    let p = recipe_plan(ladled, "noodle", &[("noodle", "uncooked")]);
+    let p = recipe_plan(ladled, "noodle", &[("noodle", "cooked")]);
     assert_eq!(
         p.steps,
         [

@@ -1,6 +1,7 @@
 //! The planner's food knowledge on small hand-made knowledge bases: raw meat cooked before it joins a
 //! dish that does not cook it, flour joined before the dish is baked, produce named only by its category
-//! prepared as a cook would, progress lines that reach the dish, and the cautions a plan reports.
+//! prepared as a cook would, produce peeled before it is cut, a raw dish cooked last, progress lines that
+//! reach the dish, and the cautions a plan reports.
 
 mod common;
 use common::hand::{outcome, plan_of, query, try_plan};
@@ -812,4 +813,128 @@ fn a_pepper_asked_diced_is_a_fresh_pepper_and_one_asked_ground_is_the_shakers() 
     );
     let o = outcome(&ground, "pepper");
     assert_eq!(o.matched.as_ref().unwrap().label, "pepper", "{o:?}");
+}
+
+/// Elsewhere in FOON: a potato peeled (the motion for "peeled"), a lemon sliced.
+const PEELING: &str = "//
+O\tpotato\t1
+S\twhole
+O\tpeeler\t1
+M\tpeel\t<Assumed>
+O\tpotato\t1
+S\tpeeled
+//
+O\tlemon\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tslice\t<Assumed>
+O\tlemon\t1
+S\tsliced
+//
+";
+
+#[test]
+fn an_onion_is_peeled_before_it_is_chopped_and_a_lemon_is_sliced_in_its_rind() {
+    let kb = [
+        ("salad.txt", LETTUCE_SALAD),
+        ("prep.txt", PREPARED),
+        ("peel.txt", PEELING),
+    ];
+    let p = plan_of(
+        &kb,
+        &ExactMatch,
+        &query(
+            "salad",
+            &[
+                ("lettuce", "chopped"),
+                ("onion", "whole veg"),
+                ("lemon", "whole"),
+            ],
+        ),
+    );
+    assert_eq!(
+        line_motions(&p, "onion"),
+        ["peel", "chop", "mix"],
+        "{:#?}",
+        p.units
+    );
+    assert!(outcome(&p, "onion")
+        .reason
+        .as_deref()
+        .unwrap()
+        .contains("peeled before it is cut"));
+    assert_eq!(
+        line_motions(&p, "lemon"),
+        ["slice", "mix"],
+        "{:#?}",
+        p.units
+    );
+}
+
+/// Fresh egg noodles (class 14): an egg and flour mixed into a dough, cut into noodles; `last` is the
+/// motion that makes the noodles from the dough.
+fn egg_noodles(last: &str) -> String {
+    format!(
+        "//
+O\tbowl\t0
+S\tempty
+O\tegg\t1
+S\tcracked
+O\tflour\t1
+S\tpowder
+M\tmix\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{{dough}}
+O\tdough\t1
+S\tcontains\t{{egg,flour}}
+S\tin\t[bowl]
+//
+O\tdough\t1
+S\tcontains\t{{egg,flour}}
+S\tin\t[bowl]
+O\tknife\t1
+S\tclean
+M\t{last}\t<Assumed>
+O\tegg noodle\t1\t14
+S\tcontains\t{{egg,flour}}
+//
+"
+    )
+}
+
+#[test]
+fn noodles_made_raw_from_egg_and_flour_are_cooked_last_and_boiled_ones_are_not() {
+    let ask = query("noodle", &[("egg", "cracked"), ("flour", "powder")]);
+    let p = plan_of(&[("noodles.txt", &egg_noodles("cut"))], &ExactMatch, &ask);
+    let last = p.units.last().unwrap();
+    assert_eq!(
+        (last.motion.as_str(), last.inputs[0].label.as_str()),
+        ("cook", "egg noodle"),
+        "{:#?}",
+        p.units
+    );
+    assert_eq!(p.goal.states, ["cooked"]);
+    assert_eq!(
+        line_motions(&p, "egg"),
+        ["mix", "cut", "cook"],
+        "{:#?}",
+        p.progress_lines
+    );
+    assert!(
+        p.notes
+            .iter()
+            .any(|n| n.contains("'egg noodle' is cooked last")),
+        "{:?}",
+        p.notes
+    );
+    assert_eq!(kinds(&p), []);
+    // noodles the recipe cooks itself get no second cooking
+    let p = plan_of(&[("noodles.txt", &egg_noodles("boil"))], &ExactMatch, &ask);
+    assert_eq!(p.units.last().unwrap().motion, "boil", "{:#?}", p.units);
+    assert!(
+        p.notes.iter().all(|n| !n.contains("cooked last")),
+        "{:?}",
+        p.notes
+    );
 }

@@ -348,6 +348,17 @@ pub(crate) fn modify<'kb>(
                 }
             }
         }
+        for w in works.iter_mut().filter(|w| w.planned) {
+            let eq = w
+                .matched
+                .as_ref()
+                .map_or(w.label.as_str(), |m| m.label.as_str());
+            if peel_before_cut(ctx, tree, &w.label, eq) {
+                w.reasons
+                    .push("peeled before it is cut, as a cook would".to_string());
+            }
+        }
+        cook_dish(ctx, tree, notes);
     } else {
         notes.push("modification off: the reference task tree as retrieved".to_string());
     }
@@ -1487,6 +1498,96 @@ fn prepare_whole<'kb>(
     let made = ObjectNode::new(eq, vec![State::plain(p)]);
     let _ = write!(how, ", then '{motion}' to make it '{p}', as a cook would");
     add_state_unit(ctx, tree, last, made, &motion)
+}
+
+/// Produce with a skin a cook peels (`foods::peeled_before_cut`: an onion, a mango) that the tree cuts
+/// as it starts, whole: a unit peeling it (FOON's motion for "peeled") comes before the cut. Returns whether
+/// one was added.
+fn peel_before_cut<'kb>(ctx: &Context<'kb>, tree: &mut Tree<'kb>, o: &str, eq: &str) -> bool {
+    let food = if foods::knows(o) { o } else { eq };
+    if !foods::peeled_before_cut(food) {
+        return false;
+    }
+    let Some(motion) = ctx
+        .index
+        .motion_for("peeled")
+        .filter(|m| cannot_take(o, eq, m).is_none())
+    else {
+        return false;
+    };
+    let order = tree.order();
+    let mut added = false;
+    for x in tree.slots_with_label(o) {
+        let whole = tree.slots[x]
+            .node
+            .physical_states()
+            .all(|st| matches!(category(st), Category::Whole | Category::Other));
+        let first = tree.consumers(x, &order).next();
+        let Some(u) =
+            first.filter(|&u| whole && !tree.produced(x) && foods::cuts(&tree.units[u].motion))
+        else {
+            continue;
+        };
+        let node = &tree.slots[x].node;
+        let mut states: Vec<State> = node
+            .states
+            .iter()
+            .filter(|st| st.arg.is_some() || category(&st.name) != Category::Whole)
+            .cloned()
+            .collect();
+        states.push(State::plain("peeled"));
+        let peeled = ObjectNode::new(node.label.clone(), states);
+        let made = add_state_unit(ctx, tree, x, peeled, &motion);
+        for input in tree.units[u].inputs.iter_mut().filter(|i| i.0 == x) {
+            input.0 = made;
+        }
+        added = true;
+    }
+    added
+}
+
+/// The dish itself cooked last when what is in it must be cooked (the egg of fresh egg noodles, the flour
+/// of a batter) and nothing FOON's recipes do on the way cooks it: the reference recipe ends at the raw dish, and the query asks for one to eat.
+/// The motion is the one FOON's recipes use to cook foods of its kind.
+fn cook_dish<'kb>(ctx: &Context<'kb>, tree: &mut Tree<'kb>, notes: &mut Vec<String>) {
+    let node = &tree.slots[tree.goal].node;
+    let label = node.label.clone();
+    let raw = !node
+        .physical_states()
+        .any(|st| category(st) == Category::Cooked);
+    // what is in it must be cooked: flour, or an egg that was not cooked before it joined
+    let must_cook = node.contents().any(|c| match foods::cooking(c) {
+        foods::Cooking::InDish => true,
+        foods::Cooking::Alone => !cooked_somewhere(tree, c),
+        foods::Cooking::No => false,
+    });
+    if !raw || !must_cook || body_cooked(tree) {
+        return;
+    }
+    let motion = state_motion(ctx, &label, &label, "cooked").unwrap_or_else(|_| "cook".into());
+    let made = ObjectNode::new(label.clone(), vec![State::plain("cooked")]);
+    tree.goal = add_state_unit(ctx, tree, tree.goal, made, &motion);
+    notes.push(format!(
+        "'{label}' is cooked last ('{motion}'): the reference task tree makes it raw"
+    ));
+}
+
+/// Whether some node of `food` in the tree is cooked (the chicken baked before it joined the salad).
+fn cooked_somewhere(tree: &Tree, food: &str) -> bool {
+    tree.slots_with_label(food).into_iter().any(|x| {
+        tree.slots[x]
+            .node
+            .physical_states()
+            .any(|st| category(st) == Category::Cooked)
+    })
+}
+
+/// Whether a unit the tree kept from FOON cooks anything: the dish is then cooked on the way (ramen's
+/// broth simmered, pancakes fried), whereas the units modification added cook an ingredient alone (noodles
+/// boiled before they join a raw dough).
+fn body_cooked(tree: &Tree) -> bool {
+    tree.alive_units()
+        .any(|(_, u)| u.origin != Origin::Grafted && foods::cooks(&u.motion))
 }
 
 /// A food that must be cooked on its own (`foods::Cooking::Alone`) and is still raw at `last`, cooked

@@ -3,6 +3,7 @@
 
 use super::states::{category, state_text, Category};
 use super::tree::{SlotId, TUnitId, Tree};
+use crate::foods;
 use crate::kb::{Goal, KnowledgeBase};
 use crate::model::{ObjectNode, State, StateArg};
 use crate::plan::{
@@ -253,8 +254,13 @@ fn progress_line<'t>(
     while let Some((pos, x)) = walked.into {
         let product = tree.slots[x].node.label.as_str();
         end_product = product;
-        // the dish reached: what is done to it then (cut, plated) is the dish's, not the ingredient's
+        // the dish reached: what is done to it then (cut, plated) is the dish's, not the ingredient's,
+        // except its cooking (the egg of raw egg noodles is boiled with them)
         if x == tree.goal || product == goal || followed.contains(&x) {
+            if let Some((motion, state)) = dish_cooked_after(tree, order, pos, x) {
+                motions.push(motion);
+                states.push(inside(product, state));
+            }
             break;
         }
         followed.push(x);
@@ -279,6 +285,31 @@ fn progress_line<'t>(
         motion: motions,
         end_product: end_product.into(),
     })
+}
+
+/// The unit after position `pos` that cooks the dish at slot `x` (the only units after the dish is made
+/// are the dish's own), as its motion and the cooked dish's state.
+fn dish_cooked_after(
+    tree: &Tree,
+    order: &[TUnitId],
+    pos: usize,
+    x: SlotId,
+) -> Option<(SmolStr, ProgressState)> {
+    let u = order.iter().skip(pos + 1).copied().find(|&u| {
+        let unit = &tree.units[u];
+        foods::cooks(&unit.motion) && unit.inputs.iter().any(|i| i.0 == x)
+    })?;
+    let unit = &tree.units[u];
+    let &(made, _) = unit
+        .outputs
+        .iter()
+        .find(|o| tree.slots[o.0].node.label == tree.slots[x].node.label)?;
+    let node = &tree.slots[made].node;
+    let state = ProgressState {
+        physical_state: state_text(node),
+        location: location(node),
+    };
+    Some((unit.motion.as_ref().into(), state))
 }
 
 /// A state of the food an ingredient went into, as the ingredient's: "[baked @ in pan]" of the batter
