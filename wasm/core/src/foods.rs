@@ -20,6 +20,10 @@ pub struct Form {
     pub name: String,
     cannot: Vec<String>,
     joins_not_by: Vec<String>,
+    /// State words a food of this form is never in (a paste is not "whole").
+    pub never_in: Vec<String>,
+    /// The state a food of this form is shown in when it has none ("liquid").
+    pub state_when_none: Option<String>,
 }
 
 struct Forms {
@@ -40,10 +44,15 @@ fn parse(text: &str) -> Forms {
     let mut of_category = HashMap::default();
     for line in crate::taxonomy::data_lines(text) {
         let mut parts = line.split('\t');
-        let (Some(name), Some(categories), Some(cannot), Some(joins)) =
-            (parts.next(), parts.next(), parts.next(), parts.next())
-        else {
-            continue;
+        let (Some(name), Some(categories), Some(cannot), Some(joins), Some(never), Some(none)) = (
+            parts.next(),
+            parts.next(),
+            parts.next(),
+            parts.next(),
+            parts.next(),
+            parts.next(),
+        ) else {
+            continue; // a test names the row
         };
         for c in split_list(categories) {
             of_category.entry(c).or_insert(forms.len());
@@ -52,6 +61,8 @@ fn parse(text: &str) -> Forms {
             name: name.trim().to_string(),
             cannot: split_list(cannot).collect(),
             joins_not_by: split_list(joins).filter(|w| w != "-").collect(),
+            never_in: split_list(never).filter(|w| w != "-").collect(),
+            state_when_none: Some(none.trim()).filter(|w| *w != "-").map(str::to_string),
         });
     }
     Forms { forms, of_category }
@@ -159,6 +170,14 @@ pub fn cooking(food: &str) -> Cooking {
     care_of(food).and_then(|c| c.cooking).unwrap_or(Cooking::No)
 }
 
+/// The kind of food `name` is (its taxonomy category: "egg noodle" and "spaghetti" are pasta), leaving out
+/// the names of whole dishes ("soup", "salad").
+pub fn kind(name: &str) -> Option<&'static str> {
+    let taxonomy = Taxonomy::builtin();
+    let category = taxonomy.category(taxonomy.lookup(name)?);
+    (category.group != "dish").then_some(category.name.as_str())
+}
+
 /// Whether `food` must be cooked before it is eaten (raw chicken, dry pasta, flour).
 pub fn must_cook(food: &str) -> bool {
     cooking(food) != Cooking::No
@@ -179,10 +198,10 @@ pub fn peeled_before_cut(food: &str) -> bool {
     care_of(food).is_some_and(|c| c.peel)
 }
 
-/// Motion words that cut a food into pieces (a peeled onion chopped, a mango sliced).
+/// Motion words that cut a food into pieces (a peeled onion chopped, a mango sliced); not grating, which
+/// takes an orange's zest from its skin.
 const CUTS: &[&str] = &[
-    "cut", "chop", "slice", "dice", "mince", "grate", "shred", "julienne", "cube", "quarter",
-    "halve",
+    "cut", "chop", "slice", "dice", "mince", "julienne", "cube", "quarter", "halve",
 ];
 
 /// Whether `motion` cuts what it acts on into pieces ("chop", "cut in half").
@@ -344,6 +363,34 @@ mod tests {
                 "food_care.tsv names '{key}', which food_taxonomy.tsv lacks"
             );
         }
+    }
+
+    #[test]
+    fn every_form_row_has_its_six_columns_and_every_care_flag_is_known() {
+        let rows = crate::taxonomy::data_lines(FORMS_TSV).count();
+        assert_eq!(
+            forms().forms.len(),
+            rows,
+            "food_forms.tsv: a row lacks a column"
+        );
+        for line in crate::taxonomy::data_lines(CARE_TSV) {
+            for flag in line
+                .split('\t')
+                .nth(3)
+                .map(split_list)
+                .into_iter()
+                .flatten()
+            {
+                assert!(
+                    ["first", "peel"].contains(&flag.as_str()),
+                    "food_care.tsv: flag '{flag}' in {line}"
+                );
+            }
+        }
+        let paste = form_of("tahini").unwrap();
+        assert!(paste.never_in.iter().any(|s| s == "powder"));
+        assert_eq!(paste.state_when_none.as_deref(), Some("paste"));
+        assert_eq!(form_of("cheddar").unwrap().state_when_none, None);
     }
 
     #[test]

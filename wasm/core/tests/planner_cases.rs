@@ -873,7 +873,7 @@ fn an_ingredient_foon_starts_as_a_liquid_is_not_squeezed_to_be_one() {
     );
     assert_eq!(
         units(&p),
-        ["mix: lettuce (chopped) + salad bowl (empty) + vinegar (in [bottle]) -> dressed salad (contains {lettuce,vinegar}, in [salad bowl], mixed)"]
+        ["mix: lettuce (chopped) + salad bowl (empty) + vinegar (in [bottle], liquid) -> dressed salad (contains {lettuce,vinegar}, in [salad bowl], mixed)"]
     );
     assert_eq!(
         dressed_salad(Some("liquid"), false).ingredients[1].case,
@@ -1372,7 +1372,11 @@ fn food_already_in_the_bowl_is_not_put_there_again() {
     let (states, motions, dish) = line("oil");
     assert_eq!(
         states,
-        [" @ in bottle", " @ in bowl", "in tomato salad @ in bowl"]
+        [
+            "liquid @ in bottle",
+            "liquid @ in bowl",
+            "in tomato salad @ in bowl"
+        ]
     );
     assert_eq!(motions, ["pour", "mix"]);
     assert_eq!(dish, "tomato salad");

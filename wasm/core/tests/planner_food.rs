@@ -938,3 +938,100 @@ fn noodles_made_raw_from_egg_and_flour_are_cooked_last_and_boiled_ones_are_not()
         p.notes
     );
 }
+
+/// A noodle casserole (class 14) of bought noodles, cheese and milk.
+const NOODLE_CASSEROLE: &str = "//
+O\tbowl\t0
+S\tempty
+O\tnoodle\t1
+S\tcooked
+O\tcheese\t1
+S\tgrated
+O\tmilk\t1
+S\tliquid
+M\tmix\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{noodle casserole}
+O\tnoodle casserole\t1\t14
+S\tcontains\t{cheese,milk,noodle}
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn a_query_bringing_noodles_starts_from_a_dish_of_noodles_not_from_noodles_made_from_scratch() {
+    let kb = [
+        ("noodles.txt", egg_noodles("cut")),
+        ("casserole.txt", NOODLE_CASSEROLE.to_string()),
+    ];
+    let kb: Vec<(&str, &str)> = kb.iter().map(|(n, t)| (*n, t.as_str())).collect();
+    // egg noodles fit egg and flour better (nothing of theirs left unused), but make the noodles asked for
+    let ask = query(
+        "noodle",
+        &[
+            ("noodle", "cooked"),
+            ("egg", "cracked"),
+            ("flour", "powder"),
+            ("cheese", "grated"),
+        ],
+    );
+    assert_eq!(
+        plan_of(&kb, &ExactMatch, &ask).goal.label,
+        "noodle casserole"
+    );
+    let ask = query(
+        "noodle",
+        &[
+            ("egg", "cracked"),
+            ("flour", "powder"),
+            ("cheese", "grated"),
+        ],
+    );
+    assert_eq!(plan_of(&kb, &ExactMatch, &ask).goal.label, "egg noodle");
+}
+
+/// A salad of lettuce and ground sesame; elsewhere oil sold without a state word.
+const SESAME_SALAD: &str = "//
+O\tsalad bowl\t0
+S\tempty
+O\tlettuce\t1
+S\tchopped
+O\tsesame seed\t1
+S\tground
+S\tpowder
+O\toil\t1
+S\tin\t[bottle]
+M\tmix\t<Assumed>
+O\tsesame salad\t1\t15
+S\tcontains\t{lettuce,oil,sesame seed}
+S\tin\t[salad bowl]
+//
+";
+
+#[test]
+fn a_paste_in_for_a_ground_seed_is_not_called_a_powder_and_oil_is_shown_liquid() {
+    let ask = query(
+        "salad",
+        &[("lettuce", "chopped"), ("tahini", ""), ("oil", "")],
+    )
+    .replace("]}}", r#"]}, "overrides": {"tahini": "sesame seed"}}"#);
+    let p = plan_of(&[("salad.txt", SESAME_SALAD)], &ExactMatch, &ask);
+    let first = |food: &str| {
+        let line = p
+            .progress_lines
+            .iter()
+            .find(|l| l.ingredient == food)
+            .unwrap();
+        line.state[0].physical_state.clone()
+    };
+    assert_eq!(first("tahini"), "paste", "{:#?}", p.progress_lines);
+    assert_eq!(first("oil"), "liquid");
+    assert_eq!(first("lettuce"), "chopped");
+}
+
+#[test]
+fn whole_spices_are_not_chopped_and_an_orange_keeps_its_skin_to_be_grated() {
+    assert!(!foon_core::foods::takes("nutmeg", "chop"));
+    assert!(foon_core::foods::takes("nutmeg", "grate"));
+    assert!(!foon_core::foods::cuts("grate") && foon_core::foods::cuts("slice"));
+}

@@ -56,15 +56,15 @@ pub(crate) fn select<'a>(
             index.all_goals()
         }
     };
-    let in_class = best_of(kb, scorer, goals)?;
+    let in_class = best_of(kb, scorer, goals, query)?;
     let kin = class.and_then(|c| kin_instead(kb, index, scorer, c, query, &in_class, notes));
     let kin_class = kin.as_ref().map(|(_, k)| *k);
     trace.record(|t| {
-        let (mut list, mut tie_break) = candidates(kb, scorer, goals);
+        let (mut list, mut tie_break) = candidates(kb, scorer, goals, query);
         if let Some(k) = kin_class {
             // the reference goal leads the list, as it does when it is of the dish type
             let kin_goals = index.goals_of_class(k).expect("a kin class with goals");
-            list.insert(0, candidates(kb, scorer, kin_goals).0.remove(0));
+            list.insert(0, candidates(kb, scorer, kin_goals, query).0.remove(0));
             tie_break = Some("kin_class".to_string());
         }
         let g = &mut t.goal_selection;
@@ -80,8 +80,9 @@ fn best_of<'a>(
     kb: &'a KnowledgeBase,
     scorer: &Scorer,
     goals: &super::index::GoalClass,
+    query: &Query,
 ) -> Option<Chosen<'a>> {
-    rated(kb, scorer, goals)
+    rated(kb, scorer, goals, query)
         .into_iter()
         .map(|(r, _)| r)
         .reduce(|best, r| match compare(kb, &r, &best).0 {
@@ -94,18 +95,26 @@ fn best_of<'a>(
         })
 }
 
-/// Every goal of `goals` as Alg. 1 weighs it, with its fit.
+/// Every goal of `goals` as Alg. 1 weighs it, with its fit; a goal that makes what the query brings
+/// ready-made loses `MAKES_WHAT_IS_BROUGHT` of its score.
 fn rated<'a>(
     kb: &'a KnowledgeBase,
     scorer: &Scorer,
     goals: &super::index::GoalClass,
+    query: &Query,
 ) -> Vec<(Rated<'a>, GoalFit)> {
     let fits = scorer.goal_fits(goals);
     let rate = |(i, ings): &(usize, Vec<u32>)| {
         let fit = fits.fit(ings);
+        let goal = &kb.goals[*i];
+        let penalty = if makes_what_is_brought(kb, goal, query) {
+            MAKES_WHAT_IS_BROUGHT
+        } else {
+            0.0
+        };
         let rated = Rated {
-            goal: &kb.goals[*i],
-            score: score(&fit),
+            goal,
+            score: score(&fit) - penalty,
             exact: fit.exact,
             ingredients: ings.len(),
         };
@@ -119,8 +128,9 @@ fn candidates(
     kb: &KnowledgeBase,
     scorer: &Scorer,
     goals: &super::index::GoalClass,
+    query: &Query,
 ) -> (Vec<GoalCandidate>, Option<String>) {
-    let mut all = rated(kb, scorer, goals);
+    let mut all = rated(kb, scorer, goals, query);
     all.sort_by(|a, b| compare(kb, &b.0, &a.0).0);
     let tie_break = match all.as_slice() {
         [a, b, ..] => Some(TIE_BREAKS[compare(kb, &a.0, &b.0).1].to_string()),
@@ -160,7 +170,7 @@ fn kin_instead<'a>(
         return None;
     }
     let kin = kin_classes(class)
-        .filter_map(|k| Some((best_of(kb, scorer, index.goals_of_class(k)?)?, k)))
+        .filter_map(|k| Some((best_of(kb, scorer, index.goals_of_class(k)?, query)?, k)))
         .max_by(|a, b| fit(&a.0).total_cmp(&fit(&b.0)))
         .filter(|(k, _)| fit(k) >= fit(in_class) + BETTER_BY);
     let (kin, kin_class) = kin?;
@@ -183,6 +193,26 @@ fn from_scratch(goal: &Goal) -> bool {
         .iter()
         .any(|i| foods::cooking(i) == Cooking::InDish)
 }
+
+/// Whether the goal makes from other foods a food the query brings ready-made (egg noodles made from
+/// flour and egg, where noodles are asked for): the plan would make them and knead the asked ones in.
+fn makes_what_is_brought(kb: &KnowledgeBase, goal: &Goal, query: &Query) -> bool {
+    let Some(kind) = foods::kind(&kb.nodes[goal.node].label) else {
+        return false;
+    };
+    let brought = query
+        .ingredients
+        .iter()
+        .any(|i| foods::kind(&i.object) == Some(kind));
+    brought
+        && !goal
+            .ingredients
+            .iter()
+            .any(|i| foods::kind(i) == Some(kind))
+}
+
+/// What a goal loses of its score when it makes a food the query brings (`rated`).
+const MAKES_WHAT_IS_BROUGHT: f32 = 0.3;
 
 /// What a goal not made from scratch loses of its score against a query that is (`select`).
 const NOT_FROM_SCRATCH: f32 = 0.3;

@@ -357,6 +357,7 @@ pub(crate) fn modify<'kb>(
                 w.reasons
                     .push("peeled before it is cut, as a cook would".to_string());
             }
+            fit_states_to_form(tree, &w.label);
         }
         cook_dish(ctx, tree, notes);
     } else {
@@ -1546,6 +1547,33 @@ fn peel_before_cut<'kb>(ctx: &Context<'kb>, tree: &mut Tree<'kb>, o: &str, eq: &
     added
 }
 
+/// The states of the asked food `o` made to fit its form (`foods::Form`): a state it is never in, taken
+/// over from a substitute (tahini "ground, powder" like the sesame it replaced), goes; a food left with no
+/// state as it starts is shown in its form's ("liquid" oil).
+fn fit_states_to_form(tree: &mut Tree, o: &str) {
+    let Some(form) = foods::form_of(o) else {
+        return;
+    };
+    let misfit = |st: &State| st.arg.is_none() && form.never_in.iter().any(|w| *w == st.name);
+    for x in tree.slots_with_label(o) {
+        let starts = !tree.produced(x);
+        let node = &tree.slots[x].node;
+        let mut states: Vec<State> = node
+            .states
+            .iter()
+            .filter(|st| !misfit(st))
+            .cloned()
+            .collect();
+        let bare = !states.iter().any(|st| st.arg.is_none());
+        let shown = form.state_when_none.as_deref().filter(|_| starts && bare);
+        if states.len() == node.states.len() && shown.is_none() {
+            continue;
+        }
+        states.extend(shown.map(State::plain));
+        tree.slots[x].node = Cow::Owned(ObjectNode::new(node.label.clone(), states));
+    }
+}
+
 /// The dish itself cooked last when what is in it must be cooked (the egg of fresh egg noodles, the flour
 /// of a batter) and nothing FOON's recipes do on the way cooks it: the reference recipe ends at the raw dish, and the query asks for one to eat.
 /// The motion is the one FOON's recipes use to cook foods of its kind.
@@ -1622,7 +1650,9 @@ fn cook_alone<'kb>(
 /// take `motion` ("a powder is not squeezed"), or None when it can: a query's state word that only such a
 /// motion makes is a coarse category of the recipe data (butter "ground", oil "juice").
 fn cannot_take(o: &str, eq: &str, motion: &str) -> Option<String> {
-    let food = if foods::form_of(o).is_some() { o } else { eq };
+    // the asked food's knowledge decides when it has any: horseradish is not handled as the cayenne it
+    // replaced
+    let food = if foods::knows(o) { o } else { eq };
     let form = foods::form_of(food)?;
     (!foods::takes(food, motion)).then(|| format!("{o} ({}) is not '{motion}'", form.name))
 }
