@@ -1035,3 +1035,46 @@ fn whole_spices_are_not_chopped_and_an_orange_keeps_its_skin_to_be_grated() {
     assert!(foon_core::foods::takes("nutmeg", "grate"));
     assert!(!foon_core::foods::cuts("grate") && foon_core::foods::cuts("slice"));
 }
+
+/// Fried rice (class 19): an egg fried in a pan with oil; elsewhere in FOON rice is boiled.
+const EGG_FRIED_RICE: &str = "//
+O\tfrying pan\t0
+S\tempty
+O\toil\t1
+S\tliquid
+O\tegg\t1
+S\tcracked
+M\tcook and stir\t<Assumed>
+O\tfrying pan\t0
+S\tcontains\t{fried rice}
+O\tfried rice\t1\t19
+S\tcontains\t{egg,oil}
+S\tin\t[frying pan]
+//
+O\trice\t1
+S\tuncooked
+O\tpot\t0
+S\tcontains\t{water}
+M\tboil\t<Assumed>
+O\trice\t1
+S\tcooked
+S\tin\t[pot]
+//
+";
+
+#[test]
+fn rice_asked_in_a_cooked_word_no_recipe_makes_is_cooked_before_it_is_fried() {
+    // the recipe data's "baked" rice is cooked rice: boiled, then stir-fried, never fried raw
+    let p = plan_of(
+        &[("fried_rice.txt", EGG_FRIED_RICE)],
+        &ExactMatch,
+        &query(
+            "rice",
+            &[("egg", "cracked"), ("oil", "liquid"), ("rice", "baked")],
+        ),
+    );
+    let motions = line_motions(&p, "rice");
+    assert_eq!(motions.first(), Some(&"boil"), "{:#?}", p.progress_lines);
+    assert!(motions.contains(&"cook and stir"), "{motions:?}");
+    assert_eq!(outcome(&p, "rice").state, "baked");
+}

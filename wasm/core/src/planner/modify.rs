@@ -215,6 +215,7 @@ pub(crate) fn modify<'kb>(
             works.push(w);
             continue;
         };
+        let s = planned_state(ctx, o, &eq, s);
         w.low_confidence = eq != o && ctx.sim.low_confidence(name, &eq, sim);
         let slots = tree.slots_with_label(&eq);
         if !enabled {
@@ -302,7 +303,8 @@ pub(crate) fn modify<'kb>(
                     .matched
                     .as_ref()
                     .map_or(w.label.clone(), |m| m.label.to_string());
-                pending.push((i, eq, query.ingredients[i].state.clone()));
+                let s = planned_state(ctx, &w.label, &eq, &query.ingredients[i].state);
+                pending.push((i, eq, s.to_string()));
             }
         }
         pending.sort_by_key(|p| p.0);
@@ -871,6 +873,18 @@ fn state_motion(ctx: &Context, o: &str, eq: &str, s: &str) -> Result<String, Str
                     "no recipe in FOON brings a food like '{o}' to '{s}'; kept the tree's state"
                 )
             }),
+    }
+}
+
+/// The state to plan the asked food for: a cooked state of the recipe data that no recipe brings a
+/// food like it to ("baked" rice: cooked, in the source's coarse words) is planned as "cooked".
+fn planned_state<'s>(ctx: &Context, o: &str, eq: &str, s: &'s str) -> &'s str {
+    let coarse = category(s) == Category::Cooked && s != "cooked";
+    if coarse && state_motion(ctx, o, eq, s).is_err() && state_motion(ctx, o, eq, "cooked").is_ok()
+    {
+        "cooked"
+    } else {
+        s
     }
 }
 
