@@ -120,8 +120,8 @@ struct Care {
     prepared: Option<String>,
     /// The preparation comes before anything else is done to the food.
     first: bool,
-    /// Its skin is peeled before it is cut.
-    peel: bool,
+    /// What a cook takes off it before it is used or cut (an onion's skin, a cherry's stone).
+    trims: Vec<&'static Trim>,
 }
 
 fn cares() -> &'static HashMap<String, Care> {
@@ -141,7 +141,10 @@ fn cares() -> &'static HashMap<String, Care> {
                     parts.next().map(split_list).into_iter().flatten().collect();
                 let care = Care {
                     first: flags.iter().any(|f| f == "first"),
-                    peel: flags.iter().any(|f| f == "peel"),
+                    trims: TRIMS
+                        .iter()
+                        .filter(|t| flags.iter().any(|f| f == t.flag))
+                        .collect(),
                     cooking,
                     prepared: (prepared != "-").then(|| prepared.to_string()),
                 };
@@ -193,9 +196,50 @@ pub fn prepared_first(food: &str) -> Option<&'static str> {
     care_of(food).filter(|c| c.first)?.prepared.as_deref()
 }
 
-/// Whether `food`'s skin is peeled before it is cut (an onion, a mango).
-pub fn peeled_before_cut(food: &str) -> bool {
-    care_of(food).is_some_and(|c| c.peel)
+/// Something a cook takes off a food before using it: its skin, its stone, its hull, its core.
+#[derive(Debug)]
+pub struct Trim {
+    /// The flag of `data/food_care.tsv`.
+    pub flag: &'static str,
+    /// The state it leaves the food in.
+    pub state: &'static str,
+    /// The motion, where FOON has none for the state.
+    pub verb: &'static str,
+    /// Only before the food is cut (a lemon sliced in its rind is fine; a whole onion is not peeled to be
+    /// roasted), else before any use but washing.
+    pub before_cut: bool,
+}
+
+const TRIMS: &[Trim] = &[
+    Trim {
+        flag: "peel",
+        state: "peeled",
+        verb: "peel",
+        before_cut: true,
+    },
+    Trim {
+        flag: "core",
+        state: "cored",
+        verb: "core",
+        before_cut: true,
+    },
+    Trim {
+        flag: "pit",
+        state: "pitted",
+        verb: "pit",
+        before_cut: false,
+    },
+    Trim {
+        flag: "hull",
+        state: "hulled",
+        verb: "hull",
+        before_cut: false,
+    },
+];
+
+/// What a cook takes off `food` before it is used, in order (a mango peeled, then pitted).
+pub fn trims(food: &str) -> &'static [&'static Trim] {
+    care_of(food).map_or(&[], |c| c.trims.as_slice())
 }
 
 /// Motion words that cut a food into pieces (a peeled onion chopped, a mango sliced); not grating, which
@@ -207,6 +251,11 @@ const CUTS: &[&str] = &[
 /// Whether `motion` cuts what it acts on into pieces ("chop", "cut in half").
 pub fn cuts(motion: &str) -> bool {
     motion_words(motion).any(|w| CUTS.contains(&w))
+}
+
+/// Whether `motion` only cleans a food ("wash", "rinse"): what is taken off it comes after.
+pub fn cleans(motion: &str) -> bool {
+    motion_words(motion).any(|w| matches!(w, "wash" | "rinse" | "clean" | "scrub"))
 }
 
 /// Whether `motion` cooks what it acts on ("bake", "deep fry", "cook and stir").
@@ -342,10 +391,16 @@ mod tests {
         assert_eq!(prepared_state("blueberry"), None);
         assert_eq!(prepared_first("egg"), Some("cracked"));
         assert_eq!(prepared_first("onion"), None);
-        assert!(peeled_before_cut("red onion") && peeled_before_cut("mango"));
-        assert!(
-            !peeled_before_cut("lemon") && !peeled_before_cut("leek") && !peeled_before_cut("egg")
+        let flags = |food: &str| trims(food).iter().map(|t| t.flag).collect::<Vec<_>>();
+        assert_eq!(
+            (flags("red onion"), flags("mango")),
+            (vec!["peel"], vec!["peel", "pit"])
         );
+        assert_eq!(
+            (flags("cherry"), flags("strawberry")),
+            (vec!["pit"], vec!["hull"])
+        );
+        assert!(flags("lemon").is_empty() && flags("leek").is_empty() && flags("egg").is_empty());
     }
 
     #[test]
@@ -382,7 +437,7 @@ mod tests {
                 .flatten()
             {
                 assert!(
-                    ["first", "peel"].contains(&flag.as_str()),
+                    flag == "first" || TRIMS.iter().any(|t| t.flag == flag),
                     "food_care.tsv: flag '{flag}' in {line}"
                 );
             }

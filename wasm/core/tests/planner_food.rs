@@ -171,7 +171,12 @@ fn an_onion_named_only_whole_veg_is_chopped_as_a_cook_would() {
         &ExactMatch,
         &query("salad", &[("lettuce", "chopped"), ("onion", "whole veg")]),
     );
-    assert_eq!(line_motions(&p, "onion"), ["chop", "mix"], "{:#?}", p.units);
+    assert_eq!(
+        line_motions(&p, "onion"),
+        ["peel", "chop", "mix"],
+        "{:#?}",
+        p.units
+    );
     let reason = outcome(&p, "onion").reason.as_deref().unwrap();
     assert!(
         reason.contains("'whole veg' names only what onion is: made 'chopped'"),
@@ -582,7 +587,12 @@ fn an_onion_asked_peeled_is_still_chopped_before_it_joins_the_salad() {
         &ExactMatch,
         &query("salad", &[("lettuce", "chopped"), ("onion", "peeled")]),
     );
-    assert_eq!(line_motions(&p, "onion"), ["chop", "mix"], "{:#?}", p.units);
+    assert_eq!(
+        line_motions(&p, "onion"),
+        ["peel", "chop", "mix"],
+        "{:#?}",
+        p.units
+    );
     let reason = outcome(&p, "onion").reason.as_deref().unwrap();
     assert!(
         reason.contains("'chop' to make it 'chopped', as a cook would"),
@@ -863,7 +873,7 @@ fn an_onion_is_peeled_before_it_is_chopped_and_a_lemon_is_sliced_in_its_rind() {
         .reason
         .as_deref()
         .unwrap()
-        .contains("peeled before it is cut"));
+        .contains("peeled before it is used"));
     assert_eq!(
         line_motions(&p, "lemon"),
         ["slice", "mix"],
@@ -1077,4 +1087,36 @@ fn rice_asked_in_a_cooked_word_no_recipe_makes_is_cooked_before_it_is_fried() {
     assert_eq!(motions.first(), Some(&"boil"), "{:#?}", p.progress_lines);
     assert!(motions.contains(&"cook and stir"), "{motions:?}");
     assert_eq!(outcome(&p, "rice").state, "baked");
+}
+
+#[test]
+fn cherries_are_pitted_after_they_are_washed_and_before_they_join_the_salad() {
+    let washed = "//
+O\tcherry\t1
+S\twhole
+O\tsink\t0
+S\ton
+M\twash\t<Assumed>
+O\tcherry\t1
+S\twashed
+S\twhole
+//
+";
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("wash.txt", washed)],
+        &ExactMatch,
+        &query("salad", &[("lettuce", "chopped"), ("cherry", "washed")]),
+    );
+    assert_eq!(
+        line_motions(&p, "cherry"),
+        ["wash", "pit", "mix"],
+        "{:#?}",
+        p.units
+    );
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "cherry")
+        .unwrap();
+    assert_eq!(line.state[2].physical_state, "pitted");
 }

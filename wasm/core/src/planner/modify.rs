@@ -355,9 +355,12 @@ pub(crate) fn modify<'kb>(
                 .matched
                 .as_ref()
                 .map_or(w.label.as_str(), |m| m.label.as_str());
-            if peel_before_cut(ctx, tree, &w.label, eq) {
-                w.reasons
-                    .push("peeled before it is cut, as a cook would".to_string());
+            let given = trim_first(ctx, tree, &w.label, eq);
+            if !given.is_empty() {
+                w.reasons.push(format!(
+                    "{} before it is used, as a cook would",
+                    given.join(", then ")
+                ));
             }
             fit_states_to_form(tree, &w.label);
         }
@@ -1515,50 +1518,63 @@ fn prepare_whole<'kb>(
     add_state_unit(ctx, tree, last, made, &motion)
 }
 
-/// Produce with a skin a cook peels (`foods::peeled_before_cut`: an onion, a mango) that the tree cuts
-/// as it starts, whole: a unit peeling it (FOON's motion for "peeled") comes before the cut. Returns whether
-/// one was added.
-fn peel_before_cut<'kb>(ctx: &Context<'kb>, tree: &mut Tree<'kb>, o: &str, eq: &str) -> bool {
+/// What a cook takes off the asked food before using it (`foods::trims`: an onion's skin before it is
+/// cut, a cherry's stone before it is used at all), where the tree starts it whole: a unit doing so (FOON's
+/// motion for the state, else the trim's own verb) comes before that use. Returns the states given.
+fn trim_first<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    o: &str,
+    eq: &str,
+) -> Vec<&'static str> {
     let food = if foods::knows(o) { o } else { eq };
-    if !foods::peeled_before_cut(food) {
-        return false;
-    }
-    let Some(motion) = ctx
-        .index
-        .motion_for("peeled")
-        .filter(|m| cannot_take(o, eq, m).is_none())
-    else {
-        return false;
-    };
-    let order = tree.order();
-    let mut added = false;
-    for x in tree.slots_with_label(o) {
-        let whole = tree.slots[x]
-            .node
-            .physical_states()
-            .all(|st| matches!(category(st), Category::Whole | Category::Other));
-        let first = tree.consumers(x, &order).next();
-        let Some(u) =
-            first.filter(|&u| whole && !tree.produced(x) && foods::cuts(&tree.units[u].motion))
-        else {
+    let mut given = Vec::new();
+    for trim in foods::trims(food) {
+        let motion = ctx
+            .index
+            .motion_for(trim.state)
+            .unwrap_or_else(|| trim.verb.to_string());
+        if cannot_take(o, eq, &motion).is_some() {
             continue;
-        };
-        let node = &tree.slots[x].node;
-        let mut states: Vec<State> = node
-            .states
-            .iter()
-            .filter(|st| st.arg.is_some() || category(&st.name) != Category::Whole)
-            .cloned()
-            .collect();
-        states.push(State::plain("peeled"));
-        let peeled = ObjectNode::new(node.label.clone(), states);
-        let made = add_state_unit(ctx, tree, x, peeled, &motion);
-        for input in tree.units[u].inputs.iter_mut().filter(|i| i.0 == x) {
-            input.0 = made;
         }
-        added = true;
+        let order = tree.order();
+        for x in tree.slots_with_label(o) {
+            let Some(u) = tree.consumers(x, &order).next().filter(|&u| {
+                let m = &tree.units[u].motion;
+                as_bought(tree, x) && (foods::cuts(m) || !trim.before_cut) && !foods::cleans(m)
+            }) else {
+                continue;
+            };
+            let node = &tree.slots[x].node;
+            let whole = node
+                .physical_states()
+                .all(|st| matches!(category(st), Category::Whole | Category::Other));
+            if !whole {
+                continue;
+            }
+            let mut states: Vec<State> = node
+                .states
+                .iter()
+                .filter(|st| st.arg.is_some() || category(&st.name) != Category::Whole)
+                .cloned()
+                .collect();
+            states.push(State::plain(trim.state));
+            let trimmed = ObjectNode::new(node.label.clone(), states);
+            let made = add_state_unit(ctx, tree, x, trimmed, &motion);
+            for input in tree.units[u].inputs.iter_mut().filter(|i| i.0 == x) {
+                input.0 = made;
+            }
+            if !given.contains(&trim.state) {
+                given.push(trim.state);
+            }
+        }
     }
-    added
+    given
+}
+
+/// Whether slot `x` is a food as it was bought, or only washed since.
+fn as_bought(tree: &Tree, x: SlotId) -> bool {
+    tree.producer[x].is_none_or(|u| foods::cleans(&tree.units[u].motion))
 }
 
 /// The states of the asked food `o` made to fit its form (`foods::Form`): a state it is never in, taken
