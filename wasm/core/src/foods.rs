@@ -205,6 +205,8 @@ pub struct Trim {
     pub state: &'static str,
     /// The motion, where FOON has none for the state.
     pub verb: &'static str,
+    /// The state word it makes untrue ("unpeeled").
+    pub undone: &'static str,
     /// Only before the food is cut (a lemon sliced in its rind is fine; a whole onion is not peeled to be
     /// roasted), else before any use but washing.
     pub before_cut: bool,
@@ -215,24 +217,28 @@ const TRIMS: &[Trim] = &[
         flag: "peel",
         state: "peeled",
         verb: "peel",
+        undone: "unpeeled",
         before_cut: true,
     },
     Trim {
         flag: "core",
         state: "cored",
         verb: "core",
+        undone: "uncored",
         before_cut: true,
     },
     Trim {
         flag: "pit",
         state: "pitted",
         verb: "pit",
+        undone: "unpitted",
         before_cut: false,
     },
     Trim {
         flag: "hull",
         state: "hulled",
         verb: "hull",
+        undone: "unhulled",
         before_cut: false,
     },
 ];
@@ -251,11 +257,6 @@ const CUTS: &[&str] = &[
 /// Whether `motion` cuts what it acts on into pieces ("chop", "cut in half").
 pub fn cuts(motion: &str) -> bool {
     motion_words(motion).any(|w| CUTS.contains(&w))
-}
-
-/// Whether `motion` only cleans a food ("wash", "rinse"): what is taken off it comes after.
-pub fn cleans(motion: &str) -> bool {
-    motion_words(motion).any(|w| matches!(w, "wash" | "rinse" | "clean" | "scrub"))
 }
 
 /// Whether `motion` cooks what it acts on ("bake", "deep fry", "cook and stir").

@@ -1120,3 +1120,47 @@ S\twhole
         .unwrap();
     assert_eq!(line.state[2].physical_state, "pitted");
 }
+
+#[test]
+fn a_peach_is_pitted_once_halved_and_frozen_strawberries_are_not_hulled() {
+    let shake = "//
+O\tpeach\t1
+S\twhole
+O\tcutting board\t0
+S\tempty
+M\tpick-and-place\t<Assumed>
+O\tpeach\t1
+S\twhole
+S\ton\t[cutting board]
+//
+O\tpeach\t1
+S\twhole
+S\ton\t[cutting board]
+O\tknife\t1
+M\tslice\t<Assumed>
+O\tpeach\t1
+S\thalved
+S\ton\t[cutting board]
+//
+O\tpeach\t1
+S\thalved
+S\ton\t[cutting board]
+O\tstrawberry\t1
+S\tfrozen
+O\tblender\t0
+S\ton
+M\tblend\t<Assumed>
+O\tpeach shake\t1\t9
+S\tcontains\t{peach,strawberry}
+//
+";
+    let ask = query("drinks", &[("peach", "halved"), ("strawberry", "frozen")]);
+    let p = plan_of(&[("shake.txt", shake)], &ExactMatch, &ask);
+    assert_eq!(
+        line_motions(&p, "peach"),
+        ["pick-and-place", "slice", "pit", "blend"],
+        "{:#?}",
+        p.units
+    );
+    assert_eq!(line_motions(&p, "strawberry"), ["blend"]);
+}

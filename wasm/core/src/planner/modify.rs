@@ -1519,8 +1519,9 @@ fn prepare_whole<'kb>(
 }
 
 /// What a cook takes off the asked food before using it (`foods::trims`: an onion's skin before it is
-/// cut, a cherry's stone before it is used at all), where the tree starts it whole: a unit doing so (FOON's
-/// motion for the state, else the trim's own verb) comes before that use. Returns the states given.
+/// cut, a cherry's stone before it joins anything), where the tree has it still on: a unit doing so
+/// (FOON's motion for the state, else the trim's own verb) comes at that point of the food's own chain
+/// (after it is moved and washed; a peach's stone after it is halved). Returns the states given.
 fn trim_first<'kb>(
     ctx: &Context<'kb>,
     tree: &mut Tree<'kb>,
@@ -1538,20 +1539,16 @@ fn trim_first<'kb>(
             continue;
         }
         let order = tree.order();
-        for x in tree.slots_with_label(o) {
-            let Some(u) = tree.consumers(x, &order).next().filter(|&u| {
-                let m = &tree.units[u].motion;
-                as_bought(tree, x) && (foods::cuts(m) || !trim.before_cut) && !foods::cleans(m)
-            }) else {
+        let starts: Vec<SlotId> = tree
+            .slots_with_label(o)
+            .into_iter()
+            .filter(|&x| !tree.produced(x))
+            .collect();
+        for x in starts {
+            let Some((at, u)) = trim_point(tree, &order, o, x, trim) else {
                 continue;
             };
-            let node = &tree.slots[x].node;
-            let whole = node
-                .physical_states()
-                .all(|st| matches!(category(st), Category::Whole | Category::Other));
-            if !whole {
-                continue;
-            }
+            let node = &tree.slots[at].node;
             let mut states: Vec<State> = node
                 .states
                 .iter()
@@ -1560,9 +1557,24 @@ fn trim_first<'kb>(
                 .collect();
             states.push(State::plain(trim.state));
             let trimmed = ObjectNode::new(node.label.clone(), states);
-            let made = add_state_unit(ctx, tree, x, trimmed, &motion);
-            for input in tree.units[u].inputs.iter_mut().filter(|i| i.0 == x) {
+            let made = add_state_unit(ctx, tree, at, trimmed, &motion);
+            for input in tree.units[u].inputs.iter_mut().filter(|i| i.0 == at) {
                 input.0 = made;
+            }
+            // what it becomes no longer has what was taken off ("halved, unpeeled")
+            let order = tree.order();
+            for (y, _) in own_chain(tree, &order, o, made).into_iter().skip(1) {
+                if tree.slots[y]
+                    .node
+                    .states
+                    .iter()
+                    .any(|st| st.name == trim.undone)
+                {
+                    let n = &tree.slots[y].node;
+                    let kept = n.states.iter().filter(|st| st.name != trim.undone).cloned();
+                    tree.slots[y].node =
+                        Cow::Owned(ObjectNode::new(n.label.clone(), kept.collect()));
+                }
             }
             if !given.contains(&trim.state) {
                 given.push(trim.state);
@@ -1572,9 +1584,69 @@ fn trim_first<'kb>(
     given
 }
 
-/// Whether slot `x` is a food as it was bought, or only washed since.
-fn as_bought(tree: &Tree, x: SlotId) -> bool {
-    tree.producer[x].is_none_or(|u| foods::cleans(&tree.units[u].motion))
+/// The slots of food `o` from `x` on while it stays itself (moved, washed, cut), each with the unit
+/// taking it next.
+fn own_chain(tree: &Tree, order: &[TUnitId], o: &str, x: SlotId) -> Vec<(SlotId, TUnitId)> {
+    let mut chain = Vec::new();
+    let mut at = Some(x);
+    while let Some(x) = at.filter(|x| chain.iter().all(|&(y, _)| y != *x)) {
+        let Some(u) = tree.consumers(x, order).next() else {
+            break;
+        };
+        chain.push((x, u));
+        at = tree.units[u]
+            .outputs
+            .iter()
+            .map(|o| o.0)
+            .find(|&y| tree.slots[y].node.label == o);
+    }
+    chain
+}
+
+/// Where on `o`'s own chain from `x` the trim comes: before its first cut (a peel), else before the unit
+/// it leaves the chain at (it joins a batter, a blender); None when the chain has it done already, or a
+/// peel finds it cut or joined first, or it was bought preserved.
+fn trim_point(
+    tree: &Tree,
+    order: &[TUnitId],
+    o: &str,
+    x: SlotId,
+    trim: &foods::Trim,
+) -> Option<(SlotId, TUnitId)> {
+    let chain = own_chain(tree, order, o, x);
+    let done = |&(y, _): &(SlotId, TUnitId)| {
+        tree.slots[y]
+            .node
+            .physical_states()
+            .any(|st| st == trim.state)
+    };
+    // frozen or dried fruit was bought with its stone and hull taken out
+    let preserved = tree.slots[x]
+        .node
+        .physical_states()
+        .any(|st| category(st) == Category::Preserved);
+    if preserved || chain.iter().any(done) {
+        return None;
+    }
+    let whole = |y: SlotId| {
+        tree.slots[y]
+            .node
+            .physical_states()
+            .all(|st| matches!(category(st), Category::Whole | Category::Other))
+    };
+    if trim.before_cut {
+        return chain
+            .iter()
+            .copied()
+            .find(|&(_, u)| foods::cuts(&tree.units[u].motion))
+            .filter(|&(y, _)| whole(y));
+    }
+    let &(y, u) = chain.last()?;
+    let joins = !tree.units[u]
+        .outputs
+        .iter()
+        .any(|o2| tree.slots[o2.0].node.label == o);
+    joins.then_some((y, u))
 }
 
 /// The states of the asked food `o` made to fit its form (`foods::Form`): a state it is never in, taken
