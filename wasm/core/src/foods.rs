@@ -5,6 +5,7 @@
 //! name means in a given state (`data/food_readings.tsv`).
 
 use crate::label::{normalize_label, normalize_word};
+use crate::plan::Query;
 use crate::substitute::Taxonomy;
 use rustc_hash::FxHashMap as HashMap;
 use std::sync::OnceLock;
@@ -295,6 +296,20 @@ pub fn reading(food: &str, state: &str) -> Option<&'static str> {
         .map(String::as_str)
 }
 
+/// The food each asked name stands for where its state says (`foods::reading`); a name asked twice in
+/// states read differently (pepper ground and diced) is left to its name.
+pub fn query_readings(query: &Query) -> HashMap<String, &'static str> {
+    let mut out: HashMap<String, Option<&'static str>> = HashMap::default();
+    for ing in &query.ingredients {
+        let r = reading(&ing.object, &ing.state);
+        let entry = out.entry(ing.object.clone()).or_insert(r);
+        if *entry != r {
+            *entry = None;
+        }
+    }
+    out.into_iter().filter_map(|(o, r)| Some((o, r?))).collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -458,6 +473,23 @@ mod tests {
                 "food_forms.tsv names '{category}', which food_taxonomy.tsv lacks"
             );
         }
+    }
+
+    #[test]
+    fn a_query_reads_its_names_by_their_states_unless_one_name_is_read_two_ways() {
+        let query: Query = serde_json::from_str(
+            r#"{"type": "soup", "ingredients": [{"object": "basil", "state": "dried"},
+               {"object": "coriander", "state": "leaves"}, {"object": "pepper", "state": "ground"},
+               {"object": "pepper", "state": "diced"}, {"object": "onion", "state": "chopped"}]}"#,
+        )
+        .unwrap();
+        let r = query_readings(&query);
+        assert_eq!(
+            (r.get("basil"), r.get("coriander")),
+            (Some(&"dried basil"), Some(&"cilantro"))
+        );
+        assert_eq!((r.get("pepper"), r.get("onion")), (None, None));
+        assert!(!takes("dried basil", "chop") && !takes("coriander seed", "chop"));
     }
 
     #[test]

@@ -8,9 +8,12 @@ use crate::taxonomy::is_utensil;
 
 /// What a cook would stop at in `plan`; empty when nothing.
 pub fn cautions(plan: &Plan) -> Vec<Caution> {
-    let mut out = motions_on_forms(plan);
+    let readings = foods::query_readings(&plan.query);
+    // the food knowledge judges a name by the food its state says it is (coriander asked as leaves)
+    let meant = |food: &str| -> String { readings.get(food).map_or(food, |r| r).to_string() };
+    let mut out = motions_on_forms(plan, &meant);
     for line in asked_lines(plan) {
-        out.extend(line_caution(plan, line));
+        out.extend(line_caution(plan, line, &meant(&line.ingredient)));
     }
     out
 }
@@ -18,7 +21,7 @@ pub fn cautions(plan: &Plan) -> Vec<Caution> {
 /// Units giving a food a motion its form cannot take, once per food and motion. In a unit of several
 /// foods the motion is the one of those that take it (the avocado mashed with the salt, the pastry cut
 /// with its filling), so a food is named only when no other food of the unit takes it either.
-fn motions_on_forms(plan: &Plan) -> Vec<Caution> {
+fn motions_on_forms(plan: &Plan, meant: &dyn Fn(&str) -> String) -> Vec<Caution> {
     let mut out: Vec<Caution> = Vec::new();
     for unit in &plan.units {
         let mut food = unit
@@ -26,7 +29,7 @@ fn motions_on_forms(plan: &Plan) -> Vec<Caution> {
             .iter()
             .map(|n| n.label.as_str())
             .filter(|l| !is_utensil(l));
-        if food.clone().any(|f| foods::takes(f, &unit.motion)) {
+        if food.clone().any(|f| foods::takes(&meant(f), &unit.motion)) {
             continue;
         }
         for food in food.by_ref() {
@@ -54,7 +57,7 @@ fn asked_lines(plan: &Plan) -> impl Iterator<Item = &ProgressLine> {
 
 /// The first of: the line ends short of the dish, a must-cook food is never cooked, produce is never
 /// prepared.
-fn line_caution(plan: &Plan, line: &ProgressLine) -> Option<Caution> {
+fn line_caution(plan: &Plan, line: &ProgressLine, meant: &str) -> Option<Caution> {
     let food = line.ingredient.to_string();
     let caution = |kind, detail| {
         Some(Caution {
@@ -85,7 +88,6 @@ fn line_caution(plan: &Plan, line: &ProgressLine) -> Option<Caution> {
     let cooked = reaches(line, Category::Cooked)
         || line.motion.iter().any(|m| foods::cooks(m))
         || dish_cooked(plan);
-    let meant = meant(plan, &food);
     if foods::must_cook(meant) && !cooked && !reaches(line, Category::Preserved) {
         return caution(
             CautionKind::Uncooked,
@@ -98,17 +100,6 @@ fn line_caution(plan: &Plan, line: &ProgressLine) -> Option<Caution> {
         return caution(CautionKind::LeftWhole, detail);
     }
     None
-}
-
-/// The food the food knowledge applies to: the one an ambiguous name was read as (lime juice for a lime
-/// asked as juice) when the planner took it so, else the name itself.
-fn meant<'p>(plan: &'p Plan, food: &'p str) -> &'p str {
-    plan.ingredients
-        .iter()
-        .find(|o| o.object == food)
-        .filter(|o| o.matched.as_ref().is_some_and(|m| m.label != o.object))
-        .and_then(|o| foods::reading(&o.object, &o.state))
-        .unwrap_or(food)
 }
 
 /// Whether a unit cooks the dish itself once it is made (the pancake flipped, then cooked): what is in it

@@ -84,6 +84,7 @@ pub fn plan(
         goal_subgraph: index.subgraph_id(&chosen.goal.subgraph),
         scorer: &scorer,
         trace: &trace,
+        readings: crate::foods::query_readings(&query),
     };
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);

@@ -31,6 +31,19 @@ pub(crate) struct Context<'a> {
     pub goal_subgraph: Option<u32>,
     pub scorer: &'a super::score::Scorer<'a>,
     pub trace: &'a super::explain::Recorder,
+    /// Asked names the food knowledge reads as another food by their state (basil asked dried is dried
+    /// basil), from `foods::query_readings`.
+    pub readings: HashMap<String, &'static str>,
+}
+
+/// The name the food knowledge judges the asked food `o` by: the food its state says it is, else `o`
+/// when the knowledge knows it, else its equivalent `eq`.
+fn known_as<'a>(ctx: &'a Context, o: &'a str, eq: &'a str) -> &'a str {
+    match ctx.readings.get(o) {
+        Some(r) => r,
+        None if foods::knows(o) => o,
+        None => eq,
+    }
 }
 
 /// Food states of a node (not its place, contents or an appliance's condition).
@@ -362,7 +375,7 @@ pub(crate) fn modify<'kb>(
                     given.join(", then ")
                 ));
             }
-            fit_states_to_form(tree, &w.label);
+            fit_states_to_form(ctx, tree, &w.label);
         }
         cook_dish(ctx, tree, notes);
     } else {
@@ -758,7 +771,7 @@ fn restate<'kb>(
         ));
     }
     let motion = state_motion(ctx, o, eq, s)?;
-    if let Some(why) = cannot_take(o, eq, &motion) {
+    if let Some(why) = cannot_take(ctx, o, eq, &motion) {
         return Err(format!(
             "state '{s}' not given: {why}; kept the tree's state"
         ));
@@ -860,7 +873,7 @@ fn restate<'kb>(
 /// (butter is softened as FOON softens butter, not blended as it softens vegetables).
 fn state_motion(ctx: &Context, o: &str, eq: &str, s: &str) -> Result<String, String> {
     let model = &ctx.index.transitions;
-    let food = if foods::knows(o) { o } else { eq };
+    let food = known_as(ctx, o, eq);
     let usual = ctx.index.motion_for(s);
     if !model.judges(food) {
         return usual
@@ -895,7 +908,7 @@ fn planned_state<'s>(ctx: &Context, o: &str, eq: &str, s: &'s str) -> &'s str {
 /// unit on `eq` moves it or brings it into states the transition model has seen for that form.
 fn branch_fits(ctx: &Context, o: &str, eq: &str, branch: &Retrieved) -> bool {
     let model = &ctx.index.transitions;
-    let food = if foods::knows(o) { o } else { eq };
+    let food = known_as(ctx, o, eq);
     if eq == o || !model.judges(food) {
         return true;
     }
@@ -1292,7 +1305,7 @@ fn add_branch<'kb>(
     o: &str,
     asked: &str,
 ) -> Result<(SmolStr, String), String> {
-    let prepared = prepared_state(o, eq, asked);
+    let prepared = prepared_state(ctx, o, eq, asked);
     let s = prepared.unwrap_or(asked);
     let mut picked = None;
     let mut misfit = None;
@@ -1380,11 +1393,11 @@ fn add_branch<'kb>(
 /// The state a cook brings the food to when the asked state `s` is only a category word of the recipe
 /// data ("whole veg" onion: chopped; "whole" egg: cracked), from `foods::prepared_state` of the asked food
 /// (else its equivalent); None when `s` is a real state or the food is used as it is.
-fn prepared_state(o: &str, eq: &str, s: &str) -> Option<&'static str> {
+fn prepared_state(ctx: &Context, o: &str, eq: &str, s: &str) -> Option<&'static str> {
     if category(s) != Category::Whole || matches!(s, "washed" | "clean") {
         return None;
     }
-    let food = if foods::knows(o) { o } else { eq };
+    let food = known_as(ctx, o, eq);
     foods::prepared_state(food)
 }
 
@@ -1418,7 +1431,7 @@ fn finish_branch<'kb>(
     in_state: bool,
     mut how: String,
 ) -> Result<(SmolStr, String), String> {
-    if foods::prepared_first(if foods::knows(o) { o } else { eq }).is_some() && !in_state {
+    if foods::prepared_first(known_as(ctx, o, eq)).is_some() && !in_state {
         // an egg is cracked before it is beaten or blended
         last = prepare_whole(ctx, tree, eq, o, last, &mut how);
     }
@@ -1447,7 +1460,7 @@ fn finish_branch<'kb>(
                 Err(why) => {
                     let _ = write!(how, ", {}", why.trim_end_matches("; kept the tree's state"));
                 }
-                Ok(m) => match cannot_take(o, eq, &m) {
+                Ok(m) => match cannot_take(ctx, o, eq, &m) {
                     Some(why) => {
                         let _ = write!(how, ", state '{s}' not given: {why}");
                     }
@@ -1494,7 +1507,7 @@ fn prepare_whole<'kb>(
     last: SlotId,
     how: &mut String,
 ) -> SlotId {
-    let food = if foods::knows(o) { o } else { eq };
+    let food = known_as(ctx, o, eq);
     let Some(p) = foods::prepared_state(food) else {
         return last;
     };
@@ -1509,7 +1522,7 @@ fn prepare_whole<'kb>(
     let motion = ctx
         .index
         .motion_for(p)
-        .filter(|m| cannot_take(o, eq, m).is_none());
+        .filter(|m| cannot_take(ctx, o, eq, m).is_none());
     let (true, Some(motion)) = (whole, motion) else {
         return last;
     };
@@ -1528,14 +1541,14 @@ fn trim_first<'kb>(
     o: &str,
     eq: &str,
 ) -> Vec<&'static str> {
-    let food = if foods::knows(o) { o } else { eq };
+    let food = known_as(ctx, o, eq);
     let mut given = Vec::new();
     for trim in foods::trims(food) {
         let motion = ctx
             .index
             .motion_for(trim.state)
             .unwrap_or_else(|| trim.verb.to_string());
-        if cannot_take(o, eq, &motion).is_some() {
+        if cannot_take(ctx, o, eq, &motion).is_some() {
             continue;
         }
         let order = tree.order();
@@ -1652,8 +1665,8 @@ fn trim_point(
 /// The states of the asked food `o` made to fit its form (`foods::Form`): a state it is never in, taken
 /// over from a substitute (tahini "ground, powder" like the sesame it replaced), goes; a food left with no
 /// state as it starts is shown in its form's ("liquid" oil).
-fn fit_states_to_form(tree: &mut Tree, o: &str) {
-    let Some(form) = foods::form_of(o) else {
+fn fit_states_to_form(ctx: &Context, tree: &mut Tree, o: &str) {
+    let Some(form) = foods::form_of(known_as(ctx, o, o)) else {
         return;
     };
     let misfit = |st: &State| st.arg.is_none() && form.never_in.iter().any(|w| *w == st.name);
@@ -1733,7 +1746,7 @@ fn cook_alone<'kb>(
         .node
         .physical_states()
         .any(|st| category(st) == Category::Cooked);
-    if !raw || foods::cooking(o) != foods::Cooking::Alone {
+    if !raw || foods::cooking(known_as(ctx, o, o)) != foods::Cooking::Alone {
         return last;
     }
     let motion = ctx
@@ -1751,10 +1764,10 @@ fn cook_alone<'kb>(
 /// Why the asked food `o` (else its equivalent `eq`, when the food knowledge does not know `o`) cannot
 /// take `motion` ("a powder is not squeezed"), or None when it can: a query's state word that only such a
 /// motion makes is a coarse category of the recipe data (butter "ground", oil "juice").
-fn cannot_take(o: &str, eq: &str, motion: &str) -> Option<String> {
+fn cannot_take(ctx: &Context, o: &str, eq: &str, motion: &str) -> Option<String> {
     // the asked food's knowledge decides when it has any: horseradish is not handled as the cayenne it
     // replaced
-    let food = if foods::knows(o) { o } else { eq };
+    let food = known_as(ctx, o, eq);
     let form = foods::form_of(food)?;
     (!foods::takes(food, motion)).then(|| format!("{o} ({}) is not '{motion}'", form.name))
 }
