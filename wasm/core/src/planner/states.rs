@@ -207,14 +207,28 @@ pub fn is_food_state(state: &str) -> bool {
 /// A node's state as a plan reports it (its match and its progress lines): its food states, else its
 /// physical states, comma-separated (each state looked up once; inline when short, as nearly all are).
 pub(crate) fn state_text(node: &ObjectNode) -> SmolStr {
+    let current = |s: &&str| !undone(node, s);
     let mut food = node
         .physical_states()
         .filter(|s| is_food_state(s))
+        .filter(current)
         .peekable();
     if food.peek().is_some() {
         comma_separated(food)
     } else {
-        comma_separated(node.physical_states())
+        comma_separated(node.physical_states().filter(current))
+    }
+}
+
+/// Whether the state `s` of `node` was undone by another of its states: "unpeeled" beside "peeled",
+/// "uncooked" or "raw" beside a cooked state (a node keeps the states it was given on the way).
+fn undone(node: &ObjectNode, s: &str) -> bool {
+    let mut states = node.physical_states();
+    match s {
+        "uncooked" | "raw" => states.any(|t| category(t) == Category::Cooked),
+        _ => s
+            .strip_prefix("un")
+            .is_some_and(|done| states.any(|t| t == done)),
     }
 }
 
@@ -232,6 +246,21 @@ fn comma_separated<'a>(states: impl Iterator<Item = &'a str>) -> SmolStr {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::State;
+
+    #[test]
+    fn a_state_undone_on_the_way_is_not_shown() {
+        let node = |states: &[&str]| {
+            ObjectNode::new("rice", states.iter().map(|s| State::plain(s)).collect())
+        };
+        assert_eq!(state_text(&node(&["uncooked", "cooked"])), "cooked");
+        assert_eq!(
+            state_text(&node(&["halved", "peeled", "unpeeled"])),
+            "halved, peeled"
+        );
+        assert_eq!(state_text(&node(&["unpeeled", "whole"])), "unpeeled, whole");
+        assert_eq!(state_text(&node(&["raw"])), "raw");
+    }
 
     #[test]
     fn groups_similar_states() {
