@@ -121,6 +121,8 @@ struct Care {
     prepared: Option<String>,
     /// The preparation comes before anything else is done to the food.
     first: bool,
+    /// Cooked only in water (boiled, simmered, steamed): rice is not cooked by stir-frying it raw.
+    wet: bool,
     /// What a cook takes off it before it is used or cut (an onion's skin, a cherry's stone).
     trims: Vec<&'static Trim>,
 }
@@ -142,6 +144,7 @@ fn cares() -> &'static HashMap<String, Care> {
                     parts.next().map(split_list).into_iter().flatten().collect();
                 let care = Care {
                     first: flags.iter().any(|f| f == "first"),
+                    wet: flags.iter().any(|f| f == "wet"),
                     trims: TRIMS
                         .iter()
                         .filter(|t| flags.iter().any(|f| f == t.flag))
@@ -260,11 +263,32 @@ pub fn cuts(motion: &str) -> bool {
     motion_words(motion).any(|w| CUTS.contains(&w))
 }
 
+/// The heat motion words of `data/heat_motions.txt`, each flagged when it cooks in water.
+fn heat_words() -> &'static [(&'static str, bool)] {
+    static HEAT: OnceLock<Vec<(&'static str, bool)>> = OnceLock::new();
+    HEAT.get_or_init(|| {
+        crate::taxonomy::data_lines(HEAT_TXT)
+            .filter_map(|l| {
+                let mut parts = l.split('\t').map(str::trim);
+                Some((parts.next()?, parts.next() == Some("wet")))
+            })
+            .collect()
+    })
+}
+
 /// Whether `motion` cooks what it acts on ("bake", "deep fry", "cook and stir").
 pub fn cooks(motion: &str) -> bool {
-    static HEAT: OnceLock<Vec<&'static str>> = OnceLock::new();
-    let heat = HEAT.get_or_init(|| crate::taxonomy::data_lines(HEAT_TXT).collect());
-    motion_words(motion).any(|w| heat.contains(&w))
+    motion_words(motion).any(|w| heat_words().iter().any(|(h, _)| *h == w))
+}
+
+/// Whether `motion` cooks `food`: any heat does, but a food cooked only in water (rice, dry pasta) is
+/// cooked by a motion in water or by a plain "cook" (FOON's pot of rice), not fried or baked raw.
+pub fn cooks_food(food: &str, motion: &str) -> bool {
+    if !care_of(food).is_some_and(|c| c.wet) {
+        return cooks(motion);
+    }
+    motion.trim_end_matches('*').trim() == "cook"
+        || motion_words(motion).any(|w| heat_words().iter().any(|&(h, wet)| wet && h == w))
 }
 
 /// (name, asked state) -> the food meant, in normal form.
@@ -453,7 +477,8 @@ mod tests {
                 .flatten()
             {
                 assert!(
-                    flag == "first" || TRIMS.iter().any(|t| t.flag == flag),
+                    matches!(flag.as_str(), "first" | "wet")
+                        || TRIMS.iter().any(|t| t.flag == flag),
                     "food_care.tsv: flag '{flag}' in {line}"
                 );
             }

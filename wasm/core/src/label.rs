@@ -106,7 +106,8 @@ fn singular_of(word: &str) -> Cow<'_, str> {
     }
     let ends = |suffix: &str| word.ends_with(suffix);
     let cut = |n: usize| &word[..word.len() - n];
-    if ends("ss") || ends("us") || ends("is") || ends("ous") {
+    // recipe data singularised "lemongrass" and "watercress" once already ("lemongras", "watercres")
+    if ends("ss") || ends("us") || ends("is") || ends("ous") || ends("gras") || ends("cres") {
         return Cow::Borrowed(word);
     }
     if ends("ies") {
@@ -156,6 +157,10 @@ mod tests {
             ("asparagus", "asparagus"),
             ("watercress", "watercress"),
             ("lemongrass", "lemongrass"),
+            ("lemongras", "lemongras"),
+            ("watercres", "watercres"),
+            ("grapes", "grape"),
+            ("bananas", "banana"),
             ("cookies", "cookie"),
             ("leaves", "leaf"),
             ("olives", "olive"),

@@ -637,8 +637,22 @@ fn an_override_replaces_the_equivalent_and_is_marked() {
 }
 
 #[test]
+fn a_utensil_named_ingredient_is_planned_as_what_it_clearly_holds() {
+    // FOON's cooking spray is a can holding oil: planned as the ingredient nearest to it
+    let sim = Pairs(&[("cooking spray", "cucumber", 1.0)]);
+    let asked = r#"{"query": {"type": "salad", "ingredients": [
+        {"object": "tomato", "state": "sliced"}, {"object": "cooking spray", "state": "oily"}]}}"#;
+    let p = plan_of(BOTH, &sim, asked);
+    let o = outcome(&p, "cooking spray");
+    assert_eq!(o.status, Status::Planned, "{:?}", o.reason);
+    assert_eq!(o.matched.as_ref().unwrap().label, "cucumber");
+    assert!(o.reason.as_deref().unwrap().contains("container in FOON"));
+    assert_eq!(goal_contents(&p), ["cooking spray", "tomato"]);
+}
+
+#[test]
 fn a_utensil_named_ingredient_offers_alternatives_and_is_planned_as_the_one_picked() {
-    // FOON's cooking spray is a can holding oil: not an ingredient, but the user may say which it is
+    // nothing near enough: the user says which ingredient it is
     let sim = Pairs(&[("cooking spray", "lettuce", 0.6)]);
     let asked = r#"{"query": {"type": "salad", "ingredients": [
         {"object": "tomato", "state": "sliced"}, {"object": "cooking spray", "state": "oily"}]}}"#;

@@ -4,7 +4,7 @@
 mod common;
 use common::{embeddings, foon111, load};
 use foon_core::planner::{Transitions, Verdict};
-use foon_core::{plan, PlanRequest, PlannerIndex, Query};
+use foon_core::{foods, plan, PlanRequest, PlannerIndex, Query};
 
 #[test]
 fn foon_handles_each_form_of_food_only_in_ways_a_cook_would() {
@@ -50,6 +50,16 @@ fn butter_asked_soft_is_never_blended_and_cheese_asked_shredded_is_grated() {
         "{:?}",
         line("butter")
     );
+    // grated by the cook, or bought grated: never cut another way
     let cheddar = line("cheddar");
-    assert!(cheddar.motion.iter().any(|m| m == "grate"), "{cheddar:?}");
+    let grated =
+        cheddar.motion.iter().any(|m| m == "grate") || cheddar.state[0].physical_state == "grated";
+    assert!(grated, "{cheddar:?}");
+    assert!(
+        cheddar
+            .motion
+            .iter()
+            .all(|m| !foods::cuts(m) || m == "grate"),
+        "{cheddar:?}"
+    );
 }

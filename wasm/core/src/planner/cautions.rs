@@ -86,8 +86,8 @@ fn line_caution(plan: &Plan, line: &ProgressLine, meant: &str) -> Option<Caution
         return caution(CautionKind::ShortOfDish, detail);
     }
     let cooked = reaches(line, Category::Cooked)
-        || line.motion.iter().any(|m| foods::cooks(m))
-        || dish_cooked(plan);
+        || line.motion.iter().any(|m| foods::cooks_food(meant, m))
+        || dish_cooked(plan, meant);
     if foods::must_cook(meant) && !cooked && !reaches(line, Category::Preserved) {
         return caution(
             CautionKind::Uncooked,
@@ -102,12 +102,12 @@ fn line_caution(plan: &Plan, line: &ProgressLine, meant: &str) -> Option<Caution
     None
 }
 
-/// Whether a unit cooks the dish itself once it is made (the pancake flipped, then cooked): what is in it
-/// is cooked with it.
-fn dish_cooked(plan: &Plan) -> bool {
-    plan.units
-        .iter()
-        .any(|u| foods::cooks(&u.motion) && u.inputs.iter().any(|n| n.label == plan.goal.label))
+/// Whether a unit cooks the dish itself once it is made (the pancake flipped, then cooked): `food` in it
+/// is cooked with it, if that motion cooks such a food.
+fn dish_cooked(plan: &Plan, food: &str) -> bool {
+    plan.units.iter().any(|u| {
+        foods::cooks_food(food, &u.motion) && u.inputs.iter().any(|n| n.label == plan.goal.label)
+    })
 }
 
 /// The words of the line's physical states ("in batter, baked" is "in batter" and "baked").

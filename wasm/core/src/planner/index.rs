@@ -10,7 +10,7 @@ use crate::model::NodeId;
 use crate::plan::PlanNode;
 use crate::substitute::Taxonomy;
 use crate::taxonomy::{is_transfer_motion, is_utensil};
-use rustc_hash::FxHashMap as HashMap;
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -40,6 +40,8 @@ pub struct PlannerIndex {
     utensil_for_motion: HashMap<String, NodeId>,
     /// Which motion brings a food of each form into which state, in this knowledge base.
     pub(crate) transitions: Transitions,
+    /// Utensils some unit cooks in (`heated_vessels`): an ingredient is not bought in one.
+    heated: HashSet<SmolStr>,
     /// Ingredients sold liquid or ground rather than whole (`sold_as`): a node of one without food
     /// states is in that category.
     sold_as: HashMap<String, Category>,
@@ -233,6 +235,19 @@ fn sold_as(kb: &KnowledgeBase, ingredient_labels: &[String]) -> HashMap<String, 
         .collect()
 }
 
+/// The utensils that units whose motion cooks take in (the pot simmered, the pan fried in): the
+/// knowledge base's own cooking vessels.
+fn heated_vessels(kb: &KnowledgeBase) -> HashSet<SmolStr> {
+    kb.units
+        .iter()
+        .filter(|u| crate::foods::cooks(&u.motion))
+        .flat_map(|u| u.input_nodes())
+        .map(|n| &kb.nodes[n].label)
+        .filter(|l| is_utensil(l))
+        .cloned()
+        .collect()
+}
+
 impl PlannerIndex {
     pub fn new(kb: &KnowledgeBase) -> PlannerIndex {
         let mut by_label: HashMap<SmolStr, Vec<NodeId>> = HashMap::default();
@@ -420,6 +435,7 @@ impl PlannerIndex {
                 .collect(),
             sold_as,
             transitions: Transitions::mine(kb),
+            heated: heated_vessels(kb),
             utensil_for_motion: motion_utensil
                 .iter()
                 .filter_map(|(m, u)| Some((m.clone(), best(u)?)))
@@ -439,6 +455,11 @@ impl PlannerIndex {
                 .take(kb.nodes.len())
                 .collect(),
         }
+    }
+
+    /// Whether some unit of the knowledge base cooks in utensil `label` (a pot, a frying pan).
+    pub(crate) fn is_heated(&self, label: &str) -> bool {
+        self.heated.contains(label)
     }
 
     /// Node `n` as a plan shows it.
@@ -542,6 +563,11 @@ impl PlannerIndex {
     }
 
     /// The motion most used to reach `state` (or a state of its category); `None` for starting states.
+    /// The motion most used to bring an object into exactly the state word `state`, if any unit does.
+    pub(crate) fn motion_making(&self, state: &str) -> Option<&str> {
+        self.motion_for_state.get(state).map(String::as_str)
+    }
+
     pub(crate) fn motion_for(&self, state: &str) -> Option<String> {
         let cat = category(state);
         if cat.is_starting() || cat == Category::Other {

@@ -13,7 +13,7 @@ use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, ObjectNode, State, UnitId};
 use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
 use crate::similarity::Similarity;
-use crate::taxonomy::{dish_class_name, is_utensil};
+use crate::taxonomy::{dish_class_name, is_transfer_motion, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::borrow::Cow;
@@ -368,6 +368,9 @@ pub(crate) fn modify<'kb>(
                 .matched
                 .as_ref()
                 .map_or(w.label.as_str(), |m| m.label.as_str());
+            if let Some(reason) = prepare_kept(ctx, tree, &w.label, eq) {
+                w.reasons.push(reason);
+            }
             let given = trim_first(ctx, tree, &w.label, eq);
             if !given.is_empty() {
                 w.reasons.push(format!(
@@ -524,9 +527,19 @@ fn equivalent(
         w.alternatives = alternatives(v);
         return Some((v.clone(), sim));
     }
-    // a name FOON gives a utensil or container (a cooking spray holds the oil) is planned only as the
-    // ingredient the user picks for it, from the alternatives offered
+    // a name FOON gives a utensil or container (a cooking spray holds the oil) is planned as the
+    // ingredient it clearly holds, else only as the one the user picks from the alternatives offered
     if is_utensil(o) {
+        let held = ranked
+            .first()
+            .filter(|(l, s)| ctx.sim.accepts(*s) && !ctx.sim.low_confidence(name, l, *s));
+        if let Some((label, sim)) = held {
+            w.alternatives = alternatives(label);
+            w.reasons.push(format!(
+                "'{o}' is a container in FOON: planned as the ingredient it holds, '{label}'"
+            ));
+            return Some((label.clone(), *sim));
+        }
         w.alternatives = alternatives("");
         w.reasons.push(format!(
             "'{o}' is a utensil or container in FOON, not an ingredient: pick the ingredient it stands for (an override) to plan it"
@@ -879,17 +892,22 @@ fn state_motion(ctx: &Context, o: &str, eq: &str, s: &str) -> Result<String, Str
         return usual
             .ok_or_else(|| format!("no motion in FOON reaches '{s}'; kept the tree's state"));
     }
-    match usual {
-        Some(m) if model.makes(food, &m, s) == Verdict::Seen => Ok(m),
-        _ => model
-            .motion_for(food, s)
-            .map(str::to_string)
-            .ok_or_else(|| {
-                format!(
-                    "no recipe in FOON brings a food like '{o}' to '{s}'; kept the tree's state"
-                )
-            }),
+    if let Some(m) = usual
+        .as_ref()
+        .filter(|m| model.makes(food, m, s) == Verdict::Seen)
+    {
+        return Ok(m.clone());
     }
+    model
+        .motion_for(food, s)
+        // moving a food does not change it (FOON may list ground cumin poured from a leaf)
+        .filter(|m| !is_transfer_motion(m))
+        .map(str::to_string)
+        // a cut the food's form takes, though no recipe here cuts such a food so (cheese diced)
+        .or_else(|| usual.filter(|m| foods::cuts(m) && foods::takes(food, m)))
+        .ok_or_else(|| {
+            format!("no recipe in FOON brings a food like '{o}' to '{s}'; kept the tree's state")
+        })
 }
 
 /// The state to plan the asked food for: a cooked state of the recipe data that no recipe brings a
@@ -1077,8 +1095,8 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
 }
 
 /// Knowledge-base nodes of `eq` for state `s`, best first: same state, else one of its kind (grated for
-/// shredded), else same category (ties: the state most frequent in recipes of the dish class, then
-/// overall), preferring nodes without a place.
+/// shredded), else same category, preferring one not in a vessel food is cooked in, then one without
+/// a place (ties: the state most frequent in recipes of the dish class, then overall).
 /// The flag says whether the node is in the wanted state (else it is the ingredient as bought).
 /// Remembered by the index: the ranking follows from the knowledge base alone, the same in every plan.
 fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Picks {
@@ -1093,6 +1111,7 @@ fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Picks {
 fn rank_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
     let c = category(s);
     type Key = (
+        bool,
         bool,
         bool,
         bool,
@@ -1131,10 +1150,13 @@ fn rank_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
         }
         let (in_class, overall) = ctx.index.state_frequency(ctx.class, eq, &food);
         let bare = node.container().is_none() && !node.holds_something();
+        // an ingredient comes from a packet, a shaker, a bowl: not from the pan it was cooked in
+        let stored = !node.container().is_some_and(|c| ctx.index.is_heated(c));
         let key = (
             exact,
             kin,
             cat,
+            stored,
             !node.holds_something(),
             bare,
             in_class,
@@ -1170,13 +1192,14 @@ fn private_unit(kb: &KnowledgeBase, u: UnitId, eq: &str) -> bool {
     })
 }
 
-/// Per slot, whether a unit that cooks (`foods::cooks`) takes it or what it becomes on the way on.
-fn cooked_later(tree: &Tree, order: &[TUnitId]) -> Vec<bool> {
+/// Per slot, whether a unit that cooks `food` (`foods::cooks_food`) takes it or what it becomes on the
+/// way on.
+fn cooked_later(tree: &Tree, order: &[TUnitId], food: &str) -> Vec<bool> {
     let mut cooked = vec![false; tree.slots.len()];
     // walked backwards, a unit's outputs are settled before its inputs
     for &v in order.iter().rev() {
         let unit = &tree.units[v];
-        let cooks = foods::cooks(&unit.motion);
+        let cooks = foods::cooks_food(food, &unit.motion);
         for &(s, _) in &unit.inputs {
             cooked[s] |= cooks || unit.outputs.iter().any(|&(x, _)| x != s && cooked[x]);
         }
@@ -1184,10 +1207,10 @@ fn cooked_later(tree: &Tree, order: &[TUnitId]) -> Vec<bool> {
     cooked
 }
 
-/// Whether what joins unit `u` is cooked there or later (`cooked`: `cooked_later`): what it puts things
-/// into (the bowl a ladle fills, not the pot it empties, which may go back on the stove), else any of
-/// its outputs.
-fn cooks_what_joins(tree: &Tree, cooked: &[bool], u: TUnitId) -> bool {
+/// Whether `food` joining unit `u` is cooked there or later (`cooked`: `cooked_later` for it): what the
+/// unit puts things into (the bowl a ladle fills, not the pot it empties, which may go back on the
+/// stove), else any of its outputs.
+fn cooks_what_joins(tree: &Tree, cooked: &[bool], u: TUnitId, food: &str) -> bool {
     let unit = &tree.units[u];
     let contents = |x: SlotId| tree.slots[x].node.contents().count();
     let filled: Vec<SlotId> = unit
@@ -1206,7 +1229,7 @@ fn cooks_what_joins(tree: &Tree, cooked: &[bool], u: TUnitId) -> bool {
         })
         .collect();
     let cooked_later = |x: &SlotId| cooked[*x];
-    foods::cooks(&unit.motion)
+    foods::cooks_food(food, &unit.motion)
         || if filled.is_empty() {
             unit.outputs.iter().map(|o| o.0).any(|x| cooked_later(&x))
         } else {
@@ -1231,6 +1254,7 @@ fn attach_point(
 ) -> Option<TUnitId> {
     let goal_label = tree.slots[tree.goal].node.label.as_str();
     let raw_unsafe = foods::must_cook(o);
+    let food = known_as(ctx, o, o);
     // closest to the goal first: a unit further from it must do strictly better, so its kin
     // ingredients are worked out only when they could make it
     let mut best: Option<(TUnitId, AttachKey)> = None;
@@ -1252,7 +1276,7 @@ fn attach_point(
             i.1 && !x.utensil && x.node.label != goal_label
         });
         let fits = foods::joins_by(o, &unit.motion);
-        let safe = !raw_unsafe || cooks_what_joins(tree, cooked, u);
+        let safe = !raw_unsafe || cooks_what_joins(tree, cooked, u, food);
         let beats = |kin: bool, pref: usize| {
             let key = (reaches, fits, safe, adds, kin, usize::MAX - pref);
             best.as_ref().is_none_or(|(_, b)| key > *b).then_some(key)
@@ -1480,11 +1504,11 @@ fn finish_branch<'kb>(
     }
     let order = tree.order();
     let carries = tree.carriers(&order);
-    let cooked = cooked_later(tree, &order);
+    let cooked = cooked_later(tree, &order, known_as(ctx, o, eq));
     let Some(m) = attach_point(ctx, tree, &order, &carries, &cooked, o, c) else {
         return Err(format!("no unit of the tree can take '{o}'"));
     };
-    if !cooks_what_joins(tree, &cooked, m) {
+    if !cooks_what_joins(tree, &cooked, m, known_as(ctx, o, eq)) {
         last = cook_alone(ctx, tree, o, last, &mut how);
     }
     tree.units[m].inputs.push((last, true));
@@ -1531,6 +1555,34 @@ fn prepare_whole<'kb>(
     add_state_unit(ctx, tree, last, made, &motion)
 }
 
+/// The asked food `o` when the tree takes it to the dish in the piece it is bought as (a block of cheddar
+/// poured into the omelette, asked "creamy"; a chicken baked whole for a salad): brought to the state a
+/// cook gives it (`foods::prepared_state`: grated, chopped) as `restate` brings a food to an asked
+/// state. Foods prepared before anything else (an egg cracked) are the tree's already. Returns the reason.
+fn prepare_kept<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    o: &str,
+    eq: &str,
+) -> Option<String> {
+    let food = known_as(ctx, o, eq);
+    let p = foods::prepared_state(food).filter(|_| foods::prepared_first(food).is_none())?;
+    let slots = tree.slots_with_label(o);
+    let in_piece = slots.iter().all(|&x| {
+        tree.slots[x].node.physical_states().all(|st| {
+            matches!(
+                category(st),
+                Category::Whole | Category::Trimmed | Category::Cooked | Category::Other
+            )
+        })
+    });
+    if slots.is_empty() || !in_piece {
+        return None;
+    }
+    let how = restate(ctx, tree, eq, o, p, &slots).ok()?;
+    Some(format!("kept whole by the tree: {how}, as a cook would"))
+}
+
 /// What a cook takes off the asked food before using it (`foods::trims`: an onion's skin before it is
 /// cut, a cherry's stone before it joins anything), where the tree has it still on: a unit doing so
 /// (FOON's motion for the state, else the trim's own verb) comes at that point of the food's own chain
@@ -1544,20 +1596,23 @@ fn trim_first<'kb>(
     let food = known_as(ctx, o, eq);
     let mut given = Vec::new();
     for trim in foods::trims(food) {
+        // FOON's motion for the very state ("peel"), else the trim's own verb (not another trim's)
         let motion = ctx
             .index
-            .motion_for(trim.state)
-            .unwrap_or_else(|| trim.verb.to_string());
+            .motion_making(trim.state)
+            .unwrap_or(trim.verb)
+            .to_string();
         if cannot_take(ctx, o, eq, &motion).is_some() {
             continue;
         }
-        let order = tree.order();
         let starts: Vec<SlotId> = tree
             .slots_with_label(o)
             .into_iter()
             .filter(|&x| !tree.produced(x))
             .collect();
         for x in starts {
+            // with the trims given so far, so that a chain shared by two starts is trimmed once
+            let order = tree.order();
             let Some((at, u)) = trim_point(tree, &order, o, x, trim) else {
                 continue;
             };
@@ -1616,9 +1671,9 @@ fn own_chain(tree: &Tree, order: &[TUnitId], o: &str, x: SlotId) -> Vec<(SlotId,
     chain
 }
 
-/// Where on `o`'s own chain from `x` the trim comes: before its first cut (a peel), else before the unit
-/// it leaves the chain at (it joins a batter, a blender); None when the chain has it done already, or a
-/// peel finds it cut or joined first, or it was bought preserved.
+/// Where on `o`'s own chain from `x` the trim comes: before its first cut (a peel, a hull), once it is
+/// halved (a stone), else before the unit it leaves the chain at (it joins a batter, a blender); None when
+/// the chain has it done already, or a peel finds it cut or joined first, or it was bought preserved.
 fn trim_point(
     tree: &Tree,
     order: &[TUnitId],
@@ -1647,12 +1702,25 @@ fn trim_point(
             .physical_states()
             .all(|st| matches!(category(st), Category::Whole | Category::Other))
     };
-    if trim.before_cut {
-        return chain
+    let first_cut = || {
+        chain
             .iter()
             .copied()
             .find(|&(_, u)| foods::cuts(&tree.units[u].motion))
-            .filter(|&(y, _)| whole(y));
+    };
+    if trim.before_cut {
+        return first_cut().filter(|&(y, _)| whole(y));
+    }
+    // a stone comes out once the fruit is halved, else before it is cut at all (a cherry pitted
+    // whole, not in slices); a hull before the first cut
+    let halved = chain.iter().copied().find(|&(y, _)| {
+        tree.slots[y]
+            .node
+            .physical_states()
+            .any(|st| st == "halved")
+    });
+    if let Some(point) = halved.or_else(first_cut) {
+        return Some(point);
     }
     let &(y, u) = chain.last()?;
     let joins = !tree.units[u]
@@ -1698,12 +1766,15 @@ fn cook_dish<'kb>(ctx: &Context<'kb>, tree: &mut Tree<'kb>, notes: &mut Vec<Stri
     let raw = !node
         .physical_states()
         .any(|st| category(st) == Category::Cooked);
-    // what is in it must be cooked: flour, or an egg that was not cooked before it joined
-    let must_cook = node.contents().any(|c| match foods::cooking(c) {
-        foods::Cooking::InDish => true,
-        foods::Cooking::Alone => !cooked_somewhere(tree, c),
-        foods::Cooking::No => false,
-    });
+    // what is in it must be cooked: flour, or an egg that was not cooked before it joined (each judged
+    // as the food its asked state says it is: fish asked as sauce is fish sauce)
+    let must_cook = node
+        .contents()
+        .any(|c| match foods::cooking(known_as(ctx, c, c)) {
+            foods::Cooking::InDish => true,
+            foods::Cooking::Alone => !cooked_somewhere(tree, c),
+            foods::Cooking::No => false,
+        });
     if !raw || !must_cook || body_cooked(tree) {
         return;
     }

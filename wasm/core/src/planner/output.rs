@@ -264,14 +264,16 @@ fn progress_line<'t>(
             break;
         }
         followed.push(x);
-        // made into itself again (egg white and yolk beaten into egg): its own states go on
+        // made into itself again (egg white and yolk beaten into egg): its own states go on; so do
+        // those of its parts (the white it was cracked into)
         let itself = product == label;
+        let part = walked.opened;
         walked = walk(order, uses, product, x, pos + 1, slots, relations);
         if itself {
             states.pop();
         }
         for state in walked.states.into_iter().skip(usize::from(!itself)) {
-            states.push(if itself {
+            states.push(if itself || part {
                 state
             } else {
                 inside(product, state)
@@ -279,12 +281,24 @@ fn progress_line<'t>(
         }
         motions.extend(walked.motions);
     }
+    carry_states(&mut states);
     Some(ProgressLine {
         ingredient: label.into(),
         state: states,
         motion: motions,
         end_product: end_product.into(),
     })
+}
+
+/// A state FOON leaves without food states (milk poured into a bowl, "-") is the one before it: moving a
+/// food does not change it.
+fn carry_states(states: &mut [ProgressState]) {
+    for i in 1..states.len() {
+        let before = &states[i - 1].physical_state;
+        if states[i].physical_state.is_empty() && !before.starts_with("in ") {
+            states[i].physical_state = before.clone();
+        }
+    }
 }
 
 /// The unit after position `pos` that cooks the dish at slot `x` (the only units after the dish is made
@@ -335,6 +349,8 @@ struct Walked {
     states: Vec<ProgressState>,
     motions: Vec<SmolStr>,
     into: Option<(usize, SlotId)>,
+    /// `into` is a part the food was opened into (the white an egg was cracked into)
+    opened: bool,
 }
 
 /// The states of `label` from slot `start`, through the units of the order from position `from` on.
@@ -359,6 +375,7 @@ fn walk<'t>(
     seen.clear();
     seen.push(start);
     let mut into = None;
+    let mut opened = false;
     let mut last_step: Option<(usize, TUnitId)> = None;
     loop {
         // no unit before the first to use it takes it (one nothing takes leaves the search where it is,
@@ -430,7 +447,7 @@ fn walk<'t>(
             Some(o) => {
                 seen.push(o);
                 states.push(ProgressState {
-                    physical_state: state_text(&tree.slots[o].node),
+                    physical_state: state_after(label, &tree.units[u].motion, &tree.slots[o].node),
                     location: location(&tree.slots[o].node),
                 });
                 at = o;
@@ -487,9 +504,18 @@ fn walk<'t>(
                             // when the vessel's contents are
                             let rel = relations.to(&n.label);
                             let before = &states[states.len() - 1].physical_state;
+                            let motion = &tree.units[u].motion;
+                            let before = prepared_by(label, motion, before.clone());
                             ProgressState {
-                                physical_state: with_vessel_cooking(before, n),
+                                physical_state: with_vessel_cooking(&before, n),
                                 location: spaced(rel, &n.label),
+                            }
+                        } else if let Some(state) = opened_into(tree, u, label) {
+                            // cracked into its parts (white and yolk): still the food itself
+                            opened = true;
+                            ProgressState {
+                                physical_state: state.into(),
+                                location: location(n),
                             }
                         } else {
                             ProgressState {
@@ -533,7 +559,48 @@ fn walk<'t>(
         states,
         motions,
         into,
+        opened,
     }
+}
+
+/// The state of `label` at `node`, made by `motion`: when the motion is the food's first preparation
+/// ("crack" for an egg's "cracked"), that state, in place of the whole one FOON may keep ("whole" in the
+/// bowl it was cracked into).
+fn state_after(label: &str, motion: &str, node: &ObjectNode) -> SmolStr {
+    prepared_by(label, motion, state_text(node))
+}
+
+/// State text `text` of `label` after `motion`: the food's first preparation when the motion is it
+/// (`state_after`).
+fn prepared_by(label: &str, motion: &str, text: SmolStr) -> SmolStr {
+    let Some(first) = foods::prepared_first(label).filter(|p| p.starts_with(motion)) else {
+        return text;
+    };
+    let mut words: Vec<&str> = text
+        .split(", ")
+        .filter(|w| !w.is_empty() && *w != first && category(w) != Category::Whole)
+        .collect();
+    words.insert(0, first);
+    words.join(", ").into()
+}
+
+/// Whether food `product` is named as a part of food `label` ("egg white" of "egg", but also "egg noodle").
+fn is_part(product: &str, label: &str) -> bool {
+    product
+        .strip_prefix(label)
+        .is_some_and(|rest| rest.starts_with(' '))
+}
+
+/// The state of `label` when unit `u` opens it into two or more parts of it (an egg cracked into white
+/// and yolk): the preparation the food knowledge names for it ("cracked"), if any.
+fn opened_into(tree: &Tree, u: TUnitId, label: &str) -> Option<&'static str> {
+    let parts = tree.units[u]
+        .outputs
+        .iter()
+        .filter(|o| !tree.slots[o.0].utensil && is_part(&tree.slots[o.0].node.label, label))
+        .count();
+    // two parts of it made at once: a part, not a food made of it ("egg noodle")
+    (parts >= 2).then(|| foods::prepared_first(label)).flatten()
 }
 
 /// Whether a state list of `n` names `label` or a part of it (the egg cracked into "egg white" and
@@ -555,11 +622,16 @@ fn with_vessel_cooking(before: &SmolStr, v: &ObjectNode) -> SmolStr {
     let cooked = v
         .physical_states()
         .find(|s| category(s) == Category::Cooked && !before.split(", ").any(|w| w == *s));
-    match cooked {
-        Some(s) if before.is_empty() => s.into(),
-        Some(s) => format!("{before}, {s}").into(),
-        None => before.clone(),
-    }
+    let Some(cooked) = cooked else {
+        return before.clone();
+    };
+    // no longer raw
+    let mut words: Vec<&str> = before
+        .split(", ")
+        .filter(|w| !w.is_empty() && !matches!(*w, "uncooked" | "raw"))
+        .collect();
+    words.push(cooked);
+    words.join(", ").into()
 }
 
 /// The vessel that node `at` of `label` says it is in, when the vessel lists `label` among its contents
@@ -598,6 +670,7 @@ fn product_of(
     // a vessel holding it: the first food made from that vessel's contents
     vessels.clear();
     vessels.push(entered);
+    let mut beside = None;
     for (at, &u) in order.iter().enumerate().skip(pos + 1) {
         let unit = &tree.units[u];
         if !unit.inputs.iter().any(|i| vessels.contains(&i.0)) {
@@ -611,13 +684,24 @@ fn product_of(
         };
         let made = |o: &&(SlotId, bool)| food(o.0) && tree.slots[o.0].node.label != label;
         let listing = unit.outputs.iter().filter(made).find(|o| lists(o.0));
-        let fresh = || unit.outputs.iter().filter(made).find(new);
-        if let Some(&(x, _)) = listing.or_else(fresh) {
-            return Some((at, x));
+        let fresh = unit.outputs.iter().filter(made).find(new);
+        // a new food beside a vessel that still lists it (an egg poached in the broth): it stays in the
+        // vessel, unless nothing is made of that vessel's contents later
+        let kept = unit
+            .outputs
+            .iter()
+            .any(|o| tree.slots[o.0].utensil && lists(o.0));
+        match (listing, fresh) {
+            (Some(&(x, _)), _) => return Some((at, x)),
+            (None, Some(&(x, _))) if !kept => return Some((at, x)),
+            (None, Some(&(x, _))) => {
+                beside.get_or_insert((at, x));
+            }
+            (None, None) => {}
         }
         vessels.extend(unit.outputs.iter().map(|o| o.0).filter(|&x| lists(x)));
     }
-    None
+    beside
 }
 
 /// FOON motions whose words go around the object in English: ("cut in half", "Cut", " in half") makes "Cut

@@ -220,15 +220,35 @@ pub(crate) fn state_text(node: &ObjectNode) -> SmolStr {
     }
 }
 
-/// Whether the state `s` of `node` was undone by another of its states: "unpeeled" beside "peeled",
-/// "uncooked" or "raw" beside a cooked state (a node keeps the states it was given on the way).
+/// Whether the state `s` of `node` was undone by another of its states (a node keeps the states it was
+/// given on the way): "unpeeled" beside "peeled", "uncooked" or "raw" beside a cooked state, "softened"
+/// beside "melted", the piece it was bought as ("whole", "block", "clove") once it is cut, what was
+/// trimmed off ("peeled") once it is grated, ground, juiced or mixed.
 fn undone(node: &ObjectNode, s: &str) -> bool {
-    let mut states = node.physical_states();
-    match s {
-        "uncooked" | "raw" => states.any(|t| category(t) == Category::Cooked),
-        _ => s
-            .strip_prefix("un")
-            .is_some_and(|done| states.any(|t| t == done)),
+    let any = |f: &dyn Fn(&str) -> bool| node.physical_states().any(f);
+    let un = s.strip_prefix("un").is_some_and(|done| any(&|t| t == done));
+    un || match s {
+        "uncooked" | "raw" => any(&|t| category(t) == Category::Cooked),
+        "softened" => any(&|t| t == "melted"),
+        _ => match category(s) {
+            Category::Whole => any(&|t| {
+                matches!(
+                    category(t),
+                    Category::Cut
+                        | Category::FinelyCut
+                        | Category::Ground
+                        | Category::Liquid
+                        | Category::Mixed
+                )
+            }),
+            Category::Trimmed => any(&|t| {
+                matches!(
+                    category(t),
+                    Category::FinelyCut | Category::Ground | Category::Liquid | Category::Mixed
+                )
+            }),
+            _ => false,
+        },
     }
 }
 
@@ -260,6 +280,22 @@ mod tests {
         );
         assert_eq!(state_text(&node(&["unpeeled", "whole"])), "unpeeled, whole");
         assert_eq!(state_text(&node(&["raw"])), "raw");
+        // the piece it was bought as, once cut; what was trimmed off, once grated; softened, once melted
+        assert_eq!(state_text(&node(&["block", "diced"])), "diced");
+        assert_eq!(
+            state_text(&node(&["peppercorn", "whole", "ground"])),
+            "ground"
+        );
+        assert_eq!(state_text(&node(&["grated", "peeled"])), "grated");
+        assert_eq!(state_text(&node(&["sliced", "peeled"])), "peeled, sliced");
+        assert_eq!(
+            state_text(&node(&["chopped", "uncooked"])),
+            "chopped, uncooked"
+        );
+        assert_eq!(
+            state_text(&node(&["liquid", "melted", "softened"])),
+            "liquid, melted"
+        );
     }
 
     #[test]
