@@ -173,7 +173,47 @@ function chickenCongee(): WrittenRecipe {
   return written(r, "congee");
 }
 
+/** Broccoli cheddar rice: cooked rice and broccoli baked in a cheese sauce under more cheddar. */
+function broccoliCheddarRice(): WrittenRecipe {
+  const r = new Recipe("s128-broccoli_cheddar_rice_bake", "Broccoli cheddar rice bake", "rice");
+  r.preheat();
+  steamedRice(r).put("pour", "rice", "baking dish");
+  r.put("rinse", ["broccoli", "whole"], "colander", { plus: ["washed"] }).put("pick-and-place", "broccoli", "cutting board");
+  r.alter("cut", "broccoli", { set: ["cut in pieces"], with: ["knife"] });
+  r.put("pour", WATER, "pot").heat("pot").alter("boil", "water", { plus: ["boiling"] });
+  r.put("pour", "broccoli", "pot").cookEach("boil", "pot", ["broccoli"], { set: ["cut in pieces", "boiled"] });
+  r.put("drain", "broccoli", "strainer").drop("water").put("pour", "broccoli", "baking dish");
+  r.prep(["cheddar", "block", "in [package]"], "grate:shredded");
+  r.put("pick-and-place", BUTTER, "skillet").heat("skillet").alter("melt", "butter", { set: ["melted"] });
+  r.put("sprinkle", ["flour", "powder", "in [package]"], "skillet").put("pour", MILK, "skillet");
+  r.putAll("sprinkle", [SALT, PEPPER], "skillet");
+  r.mix("whisk", "skillet", "cheese sauce", ["thick liquid", "cooked"], { with: ["whisk"] });
+  r.put("pour", "cheese sauce", "baking dish");
+  r.mix("mix", "baking dish", "rice mixture", ["mixed", "coated"], { with: ["spoon"] });
+  r.top("sprinkle", "cheddar", "rice mixture");
+  r.alter("bake", "rice mixture", { as: "rice casserole", set: ["baked", "hot"], with: ["oven"] });
+  return written(r, "rice casserole");
+}
+
+/** A one-pan beef and rice dinner: rice simmered in tomato and broth with browned beef, melted cheddar on top. */
+function beefRiceSkillet(): WrittenRecipe {
+  const r = new Recipe("s129-cheesy_beef_and_rice_skillet", "Cheesy beef and rice skillet", "rice");
+  choppedOnion(r).prep(["sweet pepper", "whole"], "cut:seeded", "dice:diced");
+  mincedGarlic(r);
+  r.put("pour", OLIVE_OIL, "skillet").heat("skillet").put("pick-and-place", ["ground beef", "raw", "in [package]"], "skillet");
+  r.cookEach("cook and stir", "skillet", ["ground beef"], { set: ["crumbled", "cooked"], with: ["wooden spoon"] });
+  for (const v of ["onion", "sweet pepper", "garlic"]) r.put("pour", v, "skillet");
+  r.cookEach("cook and stir", "skillet", ["onion", "sweet pepper", "garlic"], { plus: ["sauteed"], with: ["wooden spoon"] });
+  rinsedRice(r, "skillet").put("pour", ["tomato sauce", "thick liquid", "in [can]"], "skillet").put("pour", [...BROTH], "skillet");
+  r.putAll("sprinkle", [["chili powder", "powder", "in [jar]"], ["cumin", "ground", "in [jar]"], SALT], "skillet");
+  r.mix("simmer", "skillet", "beef and rice", ["cooked", "covered"], { with: ["pot lid"] });
+  r.prep(["cheddar", "block", "in [package]"], "grate:shredded").top("sprinkle", "cheddar", "beef and rice");
+  r.alter("cook", "beef and rice", { set: ["cooked", "covered", "melted"], with: ["pot lid"] });
+  r.prep(["green onion", "whole"], "slice:sliced").top("sprinkle", "green onion", "beef and rice", { plus: ["garnished"] });
+  return written(r, "beef and rice");
+}
+
 export const rice = (): WrittenRecipe[] => [
   plainSteamedRice(), chickenFriedRice(), mushroomRisotto(), mexicanRice(), coconutRice(), cuminRice(), riceSalad(),
-  bakedChickenRice(), bakedRicePudding(), chickenCongee(),
+  bakedChickenRice(), bakedRicePudding(), chickenCongee(), broccoliCheddarRice(), beefRiceSkillet(),
 ];

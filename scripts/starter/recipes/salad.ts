@@ -1,7 +1,7 @@
 // Salad: leafy, layered, grain, pasta, fruit, bean and cooked-vegetable salads, and a composed salad.
 import { Recipe, type Kitchen } from "../recipe";
 import { written, type WrittenRecipe } from "../written";
-import { mincedGarlic, OLIVE_OIL, PEPPER, SALT, VEGETABLE_OIL, WATER } from "./common";
+import { mincedGarlic, OLIVE_OIL, PEPPER, SALT, SUGAR, VEGETABLE_OIL, WATER } from "./common";
 
 const VINEGAR = ["vinegar", "liquid", "in [bottle]"] as const;
 const MUSTARD = ["mustard", "paste", "in [jar]"] as const;
@@ -181,7 +181,42 @@ function eggSalad(): WrittenRecipe {
   return written(r.mix("fold", "mixing bowl", "egg salad", ["mixed", "coated"], { with: ["spatula"] }), "egg salad");
 }
 
+/** Macaroni salad: cooled elbow macaroni in a sweet-sharp mayonnaise dressing with crisp vegetables. */
+function macaroniSalad(): WrittenRecipe {
+  const r = new Recipe("s125-macaroni_salad", "Macaroni salad", "salad");
+  r.put("pour", WATER, "pot").heat("pot").alter("boil", "water", { plus: ["boiling"] });
+  r.put("pour", ["macaroni", "dried", "in [package]"], "pot");
+  r.cookEach("boil", "pot", ["macaroni"], { set: ["cooked"], with: ["wooden spoon"] });
+  r.put("drain", "macaroni", "colander").drop("water").alter("rinse", "macaroni", { plus: ["chilled"] });
+  r.prep(["celery", "stalk"], "dice:diced").prep(["sweet pepper", "whole"], "cut:seeded", "dice:diced");
+  r.prep(["red onion", "whole", "unpeeled"], "peel:peeled,whole", "mince:minced");
+  r.prep(["carrot", "whole", "unpeeled"], "peel:peeled,whole:peeler", "grate:grated");
+  r.put("scoop and pour", ["mayonnaise", "creamy", "in [jar]"], "mixing bowl").put("scoop and pour", [...MUSTARD], "mixing bowl");
+  r.put("pour", [...VINEGAR], "mixing bowl").putAll("sprinkle", [SUGAR, SALT, PEPPER], "mixing bowl");
+  r.mix("whisk", "mixing bowl", "salad dressing", ["creamy", "mixed"], { with: ["whisk"] });
+  for (const i of ["macaroni", "celery", "sweet pepper", "red onion", "carrot"]) r.put("sprinkle", i, "mixing bowl");
+  r.mix("fold", "mixing bowl", "macaroni salad", ["mixed", "coated"], { with: ["spatula"] });
+  return written(r.alter("chill", "macaroni salad", { plus: ["chilled"], with: ["refrigerator"] }), "macaroni salad");
+}
+
+/** Chicken salad: poached chicken breast diced into a lemony mayonnaise with celery and grapes. */
+function chickenSalad(): WrittenRecipe {
+  const r = new Recipe("s126-chicken_salad", "Chicken salad with celery and grapes", "salad");
+  r.put("pour", WATER, "saucepan").heat("saucepan").alter("boil", "water", { plus: ["boiling"] });
+  r.put("pick-and-place", ["chicken", "raw"], "saucepan", { with: ["tongs"] });
+  r.cookEach("simmer", "saucepan", ["chicken"], { set: ["boiled", "cooked"], with: ["pot lid"] });
+  r.put("pick-and-place", "chicken", "cutting board", { with: ["tongs"] }).drop("water");
+  r.alter("cool down", "chicken", { plus: ["cooled"] }).alter("dice", "chicken", { set: ["diced", "cooked"], with: ["knife"] });
+  r.prep(["celery", "stalk"], "dice:diced").prep(["red onion", "whole", "unpeeled"], "peel:peeled,whole", "mince:minced");
+  rinseAndCut(r, ["grape", "whole"], "cut in half:halved");
+  r.put("scoop and pour", ["mayonnaise", "creamy", "in [jar]"], "mixing bowl");
+  squeezed(r, "lemon", "mixing bowl").putAll("sprinkle", [SALT, PEPPER], "mixing bowl");
+  r.mix("stir", "mixing bowl", "salad dressing", ["creamy", "mixed"], { with: ["spoon"] });
+  for (const i of ["chicken", "celery", "red onion", "grape"]) r.put("sprinkle", i, "mixing bowl");
+  return written(r.mix("fold", "mixing bowl", "chicken salad", ["mixed", "coated"], { with: ["spatula"] }), "chicken salad");
+}
+
 export const salad = (): WrittenRecipe[] => [
   gardenSalad(), capreseSalad(), tabbouleh(), pastaSalad(), fruitSalad(), blackBeanSalad(), greenBeanSalad(), cobbSalad(),
-  eggSalad(),
+  eggSalad(), macaroniSalad(), chickenSalad(),
 ];

@@ -179,7 +179,26 @@ function cornChowder(): WrittenRecipe {
   return written(r, "chowder");
 }
 
+/** Chili con carne: browned beef simmered with beans, tomato and chili spices, topped with cheddar. */
+function chiliConCarne(): WrittenRecipe {
+  const r = new Recipe("s127-chili_con_carne", "Chili con carne", "soup");
+  choppedOnion(r).prep(["sweet pepper", "whole"], "cut:seeded", "dice:diced");
+  mincedGarlic(r);
+  r.put("pour", OLIVE_OIL, "pot").heat("pot").put("pick-and-place", ["ground beef", "raw", "in [package]"], "pot");
+  r.cookEach("cook and stir", "pot", ["ground beef"], { set: ["crumbled", "cooked"], with: ["wooden spoon"] });
+  for (const v of ["onion", "sweet pepper", "garlic"]) r.put("pour", v, "pot");
+  r.cookEach("cook and stir", "pot", ["onion", "sweet pepper", "garlic"], { plus: ["sauteed"], with: ["wooden spoon"] });
+  r.putAll("sprinkle", [["chili powder", "powder", "in [jar]"], ["cumin", "ground", "in [jar]"], SALT], "pot");
+  r.put("drain", ["kidney bean", "cooked", "in [can]"], "colander").alter("rinse", "kidney bean", { plus: ["washed"] });
+  r.put("pour", "kidney bean", "pot").put("pour", ["tomato sauce", "thick liquid", "in [can]"], "pot");
+  r.put("pour", ["beef broth", "liquid", "in [carton]"], "pot");
+  r.mix("simmer", "pot", "chili", ["thick liquid", "cooked"], { with: ["wooden spoon"] });
+  ladle(r, "chili");
+  r.prep(["cheddar", "block", "in [package]"], "grate:shredded").top("sprinkle", "cheddar", "chili", { plus: ["garnished"] });
+  return written(r, "chili");
+}
+
 export const soup = (): WrittenRecipe[] => [
   gazpacho(), butternutSquashSoup(), beefVegetableSoup(), blackBeanSoup(), splitPeaSoup(), frenchOnionSoup(),
-  eggDropSoup(), vegetableNoodleSoup(), cornChowder(),
+  eggDropSoup(), vegetableNoodleSoup(), cornChowder(), chiliConCarne(),
 ];

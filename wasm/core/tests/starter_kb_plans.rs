@@ -16,7 +16,7 @@ const DISH_TYPES: [&str; 8] = [
 /// powder's name kept on a reference's cut produce, water poured away with the pasta, a pancake's salt).
 fn most_cautions(kind: CautionKind) -> usize {
     match kind {
-        CautionKind::MotionOnForm => 6,
+        CautionKind::MotionOnForm => 4,
         CautionKind::Uncooked => 0,
         CautionKind::ShortOfDish => 11,
         CautionKind::LeftWhole => 3,
