@@ -2,7 +2,7 @@
 // salad, and baked rice dishes.
 import { Recipe } from "../recipe";
 import { written, type WrittenRecipe } from "../written";
-import { BUTTER, choppedOnion, crackEggs, MILK, mincedGarlic, OLIVE_OIL, PEPPER, SALT, serve, SUGAR, VEGETABLE_OIL, WATER } from "./common";
+import { boilingWater, BUTTER, choppedOnion, crackEggs, MILK, mincedGarlic, OLIVE_OIL, PEPPER, SALT, serve, SUGAR, VEGETABLE_OIL, WATER } from "./common";
 
 const RICE = ["rice", "uncooked", "in [package]"] as const;
 const BROTH = ["chicken broth", "liquid", "in [carton]"] as const;
@@ -180,7 +180,7 @@ function broccoliCheddarRice(): WrittenRecipe {
   steamedRice(r).put("pour", "rice", "baking dish");
   r.put("rinse", ["broccoli", "whole"], "colander", { plus: ["washed"] }).put("pick-and-place", "broccoli", "cutting board");
   r.alter("cut", "broccoli", { set: ["cut in pieces"], with: ["knife"] });
-  r.put("pour", WATER, "pot").heat("pot").alter("boil", "water", { plus: ["boiling"] });
+  boilingWater(r);
   r.put("pour", "broccoli", "pot").cookEach("boil", "pot", ["broccoli"], { set: ["cut in pieces", "boiled"] });
   r.put("drain", "broccoli", "strainer").drop("water").put("pour", "broccoli", "baking dish");
   r.prep(["cheddar", "block", "in [package]"], "grate:shredded");

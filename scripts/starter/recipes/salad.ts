@@ -1,7 +1,7 @@
 // Salad: leafy, layered, grain, pasta, fruit, bean and cooked-vegetable salads, and a composed salad.
 import { Recipe, type Kitchen } from "../recipe";
 import { written, type WrittenRecipe } from "../written";
-import { mincedGarlic, OLIVE_OIL, PEPPER, SALT, SUGAR, VEGETABLE_OIL, WATER } from "./common";
+import { boilingWater, boilNoodles, hardBoiledEgg, mincedGarlic, OLIVE_OIL, PEPPER, SALT, SUGAR, VEGETABLE_OIL } from "./common";
 
 const VINEGAR = ["vinegar", "liquid", "in [bottle]"] as const;
 const MUSTARD = ["mustard", "paste", "in [jar]"] as const;
@@ -67,7 +67,7 @@ function capreseSalad(): WrittenRecipe {
 /** Tabbouleh: a parsley salad with bulgur cooked and cooled, dressed with lemon and olive oil. */
 function tabbouleh(): WrittenRecipe {
   const r = new Recipe("s105-tabbouleh", "Tabbouleh", "salad");
-  r.put("pour", WATER, "saucepan").heat("saucepan").alter("boil", "water", { plus: ["boiling"] });
+  boilingWater(r, "saucepan");
   r.put("pour", ["bulgur", "dried", "in [package]"], "saucepan");
   r.cookEach("boil", "saucepan", ["bulgur"], { set: ["cooked"], with: ["wooden spoon"] });
   r.put("drain", "bulgur", "strainer").drop("water").alter("cool down", "bulgur", { plus: ["cooled"] });
@@ -82,10 +82,7 @@ function tabbouleh(): WrittenRecipe {
 
 function pastaSalad(): WrittenRecipe {
   const r = new Recipe("s106-italian_pasta_salad", "Italian pasta salad", "salad");
-  r.put("pour", WATER, "pot").heat("pot").alter("boil", "water", { plus: ["boiling"] });
-  r.put("pour", ["penne", "dried", "in [package]"], "pot");
-  r.cookEach("boil", "pot", ["penne"], { set: ["cooked"], with: ["wooden spoon"] });
-  r.put("drain", "penne", "colander").drop("water").alter("rinse", "penne", { plus: ["chilled"] });
+  boilNoodles(r, "penne").alter("rinse", "penne", { plus: ["chilled"] });
   r.prep(["cherry tomato", "whole"], "cut in half:halved").prep(["cucumber", "whole"], "dice:diced");
   r.prep(["red onion", "whole", "unpeeled"], "peel:peeled,whole", "slice:sliced");
   r.prep(["black olive", "whole", "in [can]"], "slice:sliced");
@@ -133,7 +130,7 @@ function greenBeanSalad(): WrittenRecipe {
   const r = new Recipe("s109-green_bean_almond_salad", "Green bean salad with toasted almonds", "salad");
   r.put("rinse", ["green bean", "whole"], "colander", { plus: ["washed"] });
   r.alter("cut off ends", "green bean", { set: ["ends removed", "washed"], with: ["knife"] });
-  r.put("pour", WATER, "pot").heat("pot").alter("boil", "water", { plus: ["boiling"] });
+  boilingWater(r);
   r.put("pour", "green bean", "pot").cookEach("boil", "pot", ["green bean"], { set: ["boiled", "cooked"], with: ["tongs"] });
   r.put("drain", "green bean", "strainer").drop("water").alter("rinse", "green bean", { plus: ["chilled"] });
   r.put("pour", ["almond", "sliced", "in [package]"], "frying pan").heat("frying pan");
@@ -146,11 +143,7 @@ function greenBeanSalad(): WrittenRecipe {
 /** Cobb salad: lettuce under rows of chicken, bacon, egg, avocado, tomato and blue cheese. */
 function cobbSalad(): WrittenRecipe {
   const r = new Recipe("s110-cobb_salad", "Cobb salad", "salad");
-  r.put("pour", WATER, "saucepan").heat("saucepan").alter("boil", "water", { plus: ["boiling"] });
-  r.put("pick-and-place", ["egg", "whole"], "saucepan", { with: ["spoon"] });
-  r.cookEach("boil", "saucepan", ["egg"], { set: ["whole", "boiled"] });
-  r.put("pick-and-place", "egg", "cutting board", { with: ["spoon"] }).drop("water");
-  r.alter("peel", "egg", { set: ["peeled", "boiled"] }).alter("chop", "egg", { set: ["chopped", "boiled"], with: ["knife"] });
+  hardBoiledEgg(r).alter("chop", "egg", { set: ["chopped", "boiled"], with: ["knife"] });
   r.put("pick-and-place", ["bacon", "raw", "in [package]"], "skillet").heat("skillet");
   r.cookEach("fry", "skillet", ["bacon"], { set: ["fried"], with: ["tongs"] });
   r.put("pick-and-place", "bacon", "paper towel", { with: ["tongs"] }).alter("chop", "bacon", { set: ["crumbled", "fried"], with: ["knife"] });
@@ -168,11 +161,7 @@ function cobbSalad(): WrittenRecipe {
 /** Egg salad: boiled eggs chopped into a mayonnaise and mustard dressing with celery and chives. */
 function eggSalad(): WrittenRecipe {
   const r = new Recipe("s111-egg_salad", "Egg salad", "salad");
-  r.put("pour", WATER, "saucepan").heat("saucepan").alter("boil", "water", { plus: ["boiling"] });
-  r.put("pick-and-place", ["egg", "whole"], "saucepan", { with: ["spoon"] });
-  r.cookEach("boil", "saucepan", ["egg"], { set: ["whole", "boiled"] });
-  r.put("pick-and-place", "egg", "cutting board", { with: ["spoon"] }).drop("water");
-  r.alter("peel", "egg", { set: ["peeled", "boiled"] }).alter("chop", "egg", { set: ["chopped", "boiled"], with: ["knife"] });
+  hardBoiledEgg(r).alter("chop", "egg", { set: ["chopped", "boiled"], with: ["knife"] });
   r.prep(["celery", "stalk"], "dice:diced").prep(["chive", "whole"], "chop:chopped");
   r.put("scoop and pour", ["mayonnaise", "creamy", "in [jar]"], "mixing bowl").put("scoop and pour", [...MUSTARD], "mixing bowl");
   r.putAll("sprinkle", [["paprika", "ground", "in [jar]"], SALT, PEPPER], "mixing bowl");
@@ -184,10 +173,7 @@ function eggSalad(): WrittenRecipe {
 /** Macaroni salad: cooled elbow macaroni in a sweet-sharp mayonnaise dressing with crisp vegetables. */
 function macaroniSalad(): WrittenRecipe {
   const r = new Recipe("s125-macaroni_salad", "Macaroni salad", "salad");
-  r.put("pour", WATER, "pot").heat("pot").alter("boil", "water", { plus: ["boiling"] });
-  r.put("pour", ["macaroni", "dried", "in [package]"], "pot");
-  r.cookEach("boil", "pot", ["macaroni"], { set: ["cooked"], with: ["wooden spoon"] });
-  r.put("drain", "macaroni", "colander").drop("water").alter("rinse", "macaroni", { plus: ["chilled"] });
+  boilNoodles(r, "macaroni").alter("rinse", "macaroni", { plus: ["chilled"] });
   r.prep(["celery", "stalk"], "dice:diced").prep(["sweet pepper", "whole"], "cut:seeded", "dice:diced");
   r.prep(["red onion", "whole", "unpeeled"], "peel:peeled,whole", "mince:minced");
   r.prep(["carrot", "whole", "unpeeled"], "peel:peeled,whole:peeler", "grate:grated");
@@ -202,7 +188,7 @@ function macaroniSalad(): WrittenRecipe {
 /** Chicken salad: poached chicken breast diced into a lemony mayonnaise with celery and grapes. */
 function chickenSalad(): WrittenRecipe {
   const r = new Recipe("s126-chicken_salad", "Chicken salad with celery and grapes", "salad");
-  r.put("pour", WATER, "saucepan").heat("saucepan").alter("boil", "water", { plus: ["boiling"] });
+  boilingWater(r, "saucepan");
   r.put("pick-and-place", ["chicken", "raw"], "saucepan", { with: ["tongs"] });
   r.cookEach("simmer", "saucepan", ["chicken"], { set: ["boiled", "cooked"], with: ["pot lid"] });
   r.put("pick-and-place", "chicken", "cutting board", { with: ["tongs"] }).drop("water");
