@@ -173,7 +173,7 @@ function chickenCongee(): WrittenRecipe {
   return written(r, "congee");
 }
 
-/** Broccoli cheddar rice: cooked rice and broccoli baked in a cheese sauce under more cheddar. */
+/** Broccoli cheddar rice: cooked rice and broccoli baked in a white sauce under cheddar. */
 function broccoliCheddarRice(): WrittenRecipe {
   const r = new Recipe("s128-broccoli_cheddar_rice_bake", "Broccoli cheddar rice bake", "rice");
   r.preheat();
@@ -187,8 +187,8 @@ function broccoliCheddarRice(): WrittenRecipe {
   r.put("pick-and-place", BUTTER, "skillet").heat("skillet").alter("melt", "butter", { set: ["melted"] });
   r.put("sprinkle", ["flour", "powder", "in [package]"], "skillet").put("pour", MILK, "skillet");
   r.putAll("sprinkle", [SALT, PEPPER], "skillet");
-  r.mix("whisk", "skillet", "cheese sauce", ["thick liquid", "cooked"], { with: ["whisk"] });
-  r.put("pour", "cheese sauce", "baking dish");
+  r.mix("whisk", "skillet", "white sauce", ["thick liquid", "cooked"], { with: ["whisk"] });
+  r.put("pour", "white sauce", "baking dish");
   r.mix("mix", "baking dish", "rice mixture", ["mixed", "coated"], { with: ["spoon"] });
   r.top("sprinkle", "cheddar", "rice mixture");
   r.alter("bake", "rice mixture", { as: "rice casserole", set: ["baked", "hot"], with: ["oven"] });
