@@ -130,7 +130,8 @@ export class Recipe {
     const ins = [this.vesselNode(v), ...v.items.map((l) => this.node(this.get(l)))];
     ins.push(...this.tools(opts.with));
     for (const l of v.items) this.things.delete(l);
-    const mixture: Thing = { label, states, contains: [...v.contents], where: `in [${vesselLabel}]`, flag: 1 };
+    const where = `${ON_TOP.has(vesselLabel) ? "on" : "in"} [${vesselLabel}]`;
+    const mixture: Thing = { label, states, contains: [...v.contents], where, flag: 1 };
     if (this.things.has(label)) throw this.fail(`two things named ${label}`);
     this.things.set(label, mixture);
     v.items = [label];

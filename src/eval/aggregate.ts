@@ -70,6 +70,7 @@ export function metricsRow(group: string, variant: Variant, records: readonly Ev
     extra_mean: mean(metrics.map((m) => m.extra_ingredients.length)),
     plans_with_extra: metrics.length === 0 ? 0 : metrics.filter((m) => m.extra_ingredients.length > 0).length / metrics.length,
     plans_little_reference: metrics.length === 0 ? 0 : metrics.filter((m) => m.reference_units <= LITTLE_REFERENCE).length / metrics.length,
+    own_type_reference: metrics.length === 0 ? 0 : metrics.filter((m) => m.reference_own_type).length / metrics.length,
     cases,
     substitutions,
     low_confidence: lowConfidence,

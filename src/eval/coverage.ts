@@ -68,6 +68,7 @@ export function coverageMetrics(plan: Plan): CoverageMetrics {
     extra_ingredients: extra,
     // the units the planner counts for its note on a plan keeping little of its reference (planner/mod.rs)
     reference_units: plan.units.filter((u) => u.origin === "reference" || u.origin === "renamed" || u.origin === "attached").length,
+    reference_own_type: plan.dish_class !== null && plan.goal.dish_class === plan.dish_class.index,
     cases,
     substitutions,
     low_confidence: lowConfidence,

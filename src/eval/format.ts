@@ -34,6 +34,7 @@ export const METRIC_LINES: readonly MetricLine[] = [
   { key: "extra_mean", label: "extra ingredients / plan", format: (r) => fixed(2)(r.extra_mean) },
   { key: "plans_with_extra", label: "plans with extras", format: (r) => pct(r.plans_with_extra) },
   { key: "plans_little_reference", label: `plans keeping <= ${LITTLE_REFERENCE} reference units`, format: (r) => pct(r.plans_little_reference) },
+  { key: "own_type_reference", label: "reference of the query's dish type", format: (r) => pct(r.own_type_reference) },
   { key: "case1", label: "case 1 (exact)", format: (r) => String(r.cases.c1) },
   { key: "case2", label: "case 2 (object subst.)", format: (r) => String(r.cases.c2) },
   { key: "case3", label: "case 3 (new state)", format: (r) => String(r.cases.c3) },
@@ -74,7 +75,7 @@ export function brokenInvariants(rows: readonly MetricsRow[]): string[] {
 
 const SUMMARY_COLUMNS = [
   "variant", "group", "queries", "plans", "errors", "errors_by_code", "units_mean", "duplicate_units", "units_before_inputs",
-  "dead_units", "goal_missing", "object_share", "dish_share", "pair_share", "extra_mean", "plans_with_extra", "plans_little_reference", "case1", "case2", "case3",
+  "dead_units", "goal_missing", "object_share", "dish_share", "pair_share", "extra_mean", "plans_with_extra", "plans_little_reference", "own_type_reference", "case1", "case2", "case3",
   "case4", "case_none", "unplannable", "substitutions", "low_confidence", "low_confidence_share", ...CAUTION_KINDS, "ms_mean", "ms_p95",
   "ms_max", "ms_total",
 ] as const;
@@ -85,7 +86,7 @@ export function summaryCsv(rows: readonly MetricsRow[]): string {
     rows.map((r): Cell[] => [
       r.variant, r.group, r.queries, r.plans, r.errors, Object.entries(r.errors_by_code).map(([c, n]) => `${c}:${n}`).join(" "),
       r.units_mean, r.duplicate_units, r.units_before_inputs, r.dead_units, r.goal_missing, r.object_share, r.dish_share, r.pair_share,
-      r.extra_mean, r.plans_with_extra, r.plans_little_reference, r.cases.c1, r.cases.c2, r.cases.c3, r.cases.c4, r.cases.none, r.unplannable,
+      r.extra_mean, r.plans_with_extra, r.plans_little_reference, r.own_type_reference, r.cases.c1, r.cases.c2, r.cases.c3, r.cases.c4, r.cases.none, r.unplannable,
       r.substitutions, r.low_confidence, r.low_confidence_share, ...CAUTION_KINDS.map((k) => r.cautions[k]), r.ms_mean, r.ms_p95, r.ms_max, r.ms_total,
     ]),
   );
@@ -93,7 +94,7 @@ export function summaryCsv(rows: readonly MetricsRow[]): string {
 
 const RECIPE_COLUMNS = [
   "type", "id", "variant", "ok", "error_code", "error", "ms", "units", "duplicate_units", "units_before_inputs", "dead_units",
-  "goal_produced", "query_objects", "objects_in_tree", "objects_in_dish", "query_pairs", "pairs_in_tree", "extra_ingredients", "reference_units", "case1", "case2",
+  "goal_produced", "query_objects", "objects_in_tree", "objects_in_dish", "query_pairs", "pairs_in_tree", "extra_ingredients", "reference_units", "reference_own_type", "case1", "case2",
   "case3", "case4", "case_none", "substitutions", "low_confidence", "unplannable", "violations", "cautions",
 ] as const;
 
@@ -106,7 +107,7 @@ export function recipesCsv(records: readonly EvalRecord[]): string {
       const m = r.metrics;
       return [
         ...head, null, null, r.ms, m.units, m.duplicate_units, m.units_before_inputs, m.dead_units, m.goal_produced,
-        m.query_objects, m.objects_in_tree, m.objects_in_dish, m.query_pairs, m.pairs_in_tree, m.extra_ingredients.join(";"), m.reference_units, m.cases.c1,
+        m.query_objects, m.objects_in_tree, m.objects_in_dish, m.query_pairs, m.pairs_in_tree, m.extra_ingredients.join(";"), m.reference_units, m.reference_own_type, m.cases.c1,
         m.cases.c2, m.cases.c3, m.cases.c4, m.cases.none, m.substitutions, m.low_confidence, m.unplannable, m.violations.join(" | "),
         m.caution_details.join(" | "),
       ];

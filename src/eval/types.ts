@@ -38,6 +38,8 @@ export interface CoverageMetrics {
   extra_ingredients: string[];
   /** Units of the reference task tree the plan keeps (as retrieved, renamed, or given a new ingredient). */
   reference_units: number;
+  /** Whether the reference goal node is a dish of the query's own dish class (false for an unknown type). */
+  reference_own_type: boolean;
   /** Substitution case per query ingredient (Table I), `none` when no case applied. */
   cases: CaseCounts;
   /** Query ingredients planned with an equivalent of another name. */
@@ -108,6 +110,11 @@ export interface MetricsRow {
    * base had no recipe of the type like the query, and the plan is mostly the ingredients' own branches.
    */
   plans_little_reference: number;
+  /**
+   * Share of plans whose reference goal node is a dish of the query's own dish class, 0..1: below 1, the
+   * knowledge base lacks a recipe of the type close enough and a kin class's (or any class's) stood in.
+   */
+  own_type_reference: number;
   cases: CaseCounts;
   substitutions: number;
   low_confidence: number;

@@ -53,6 +53,22 @@ describe("batch records and the metrics table", () => {
     expect(formatTable(rows, "title")).toMatch(/plans keeping <= 2 reference units\s+100\.0%\s+50\.0%\s+66\.7%/);
   });
 
+  it("gives the share of plans whose reference is a recipe of the query's own dish type", () => {
+    const kinReference = (request: PlanRequest) => {
+      const p = plan(cleanUnits(), request.query);
+      return { ...p, goal: { ...p.goal, dish_class: 5 } };
+    };
+    const kin = runBatch(kinReference, [q("bread", "k")], ["modified"], now);
+    const own = runBatch(fakePlanner, [q("bread", "o"), q("salad", "s")], ["modified"], now);
+    const rows = metricsTable([...kin, ...own], "modified");
+    expect(rows.map((r) => [r.group, r.own_type_reference])).toEqual([["bread", 0.5], ["salad", 1], ["all", 2 / 3]]);
+    expect(formatTable(rows, "title")).toMatch(/reference of the query's dish type\s+50\.0%\s+100\.0%\s+66\.7%/);
+    const summary = parseCsv(summaryCsv(rows));
+    expect(summary[1]![summary[0]!.indexOf("own_type_reference")]).toBe("0.5");
+    const recipes = parseCsv(recipesCsv([...kin, ...own]));
+    expect(recipes.map((r) => r[recipes[0]!.indexOf("reference_own_type")])).toEqual(["reference_own_type", "false", "true", "true"]);
+  });
+
   it("reports broken invariants of the unmodified variant", () => {
     const rows = metricsTable(records, "unmodified");
     expect(rows[2]!.duplicate_units).toBe(2);

@@ -17,6 +17,16 @@ describe("coverage of the query", () => {
     expect(coverageMetrics(plan(units)).reference_units).toBe(1);
   });
 
+  it("tells whether the reference goal is a dish of the query's own type", () => {
+    expect(coverageMetrics(plan()).reference_own_type).toBe(true);
+    const kin = plan();
+    kin.goal = { ...kin.goal, dish_class: 3 };
+    expect(coverageMetrics(kin).reference_own_type).toBe(false);
+    // an unknown dish type: every class's goals were searched, none is the query's own
+    const unknown = { ...plan(), dish_class: null };
+    expect(coverageMetrics(unknown).reference_own_type).toBe(false);
+  });
+
   it("counts repeated query ingredients once, and missing objects and states", () => {
     const p = plan(cleanUnits(), {
       ingredients: [

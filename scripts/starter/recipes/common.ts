@@ -47,9 +47,22 @@ export function serve(r: Recipe, dish: string, to = "plate", motion = "pick-and-
   return r.put(motion, dish, to, { with: [tool] });
 }
 
+/** Tap water brought to the boil in a pot or saucepan on the stove. */
+export function boilingWater(r: Recipe, pot = "pot"): Recipe {
+  return r.put("pour", WATER, pot).heat(pot).alter("boil", "water", { plus: ["boiling"] });
+}
+
+/** An egg boiled in its shell, lifted onto the cutting board (the water stays behind) and peeled. */
+export function hardBoiledEgg(r: Recipe): Recipe {
+  boilingWater(r, "saucepan").put("pick-and-place", ["egg", "whole"], "saucepan", { with: ["spoon"] });
+  r.cookEach("boil", "saucepan", ["egg"], { set: ["whole", "boiled"] });
+  r.put("pick-and-place", "egg", "cutting board", { with: ["spoon"] }).drop("water");
+  return r.alter("peel", "egg", { set: ["peeled", "boiled"] });
+}
+
 /** Noodles or pasta boiled in a pot of water and drained in a colander (the water stays behind). */
 export function boilNoodles(r: Recipe, noodle: string, state = "dried"): Recipe {
-  r.put("pour", WATER, "pot").heat("pot").alter("boil", "water", { plus: ["boiling"] });
+  boilingWater(r);
   r.put("pour", [noodle, state, "in [package]"], "pot");
   r.cookEach("boil", "pot", [noodle], { set: ["cooked"], with: ["tongs"] });
   return r.put("drain", noodle, "colander").drop("water");

@@ -54,7 +54,7 @@ function spaghettiBolognese(): WrittenRecipe {
   mincedGarlic(r);
   r.put("pour", OLIVE_OIL, "saucepan").heat("saucepan");
   for (const v of ["onion", "carrot", "celery", "garlic"]) r.put("pour", v, "saucepan");
-  r.cookEach("cook and stir", "saucepan", ["onion", "carrot", "celery", "garlic"], { plus: ["sauteed"], with: ["wooden spoon"] });
+  r.mix("cook and stir", "saucepan", "vegetable mixture", ["sauteed", "mixed"], { with: ["wooden spoon"] });
   r.put("pick-and-place", ["ground beef", "raw", "in [package]"], "saucepan");
   r.cookEach("cook and stir", "saucepan", ["ground beef"], { set: ["crumbled", "cooked"], with: ["wooden spoon"] });
   r.put("pour", ["tomato sauce", "thick liquid", "in [can]"], "saucepan");
