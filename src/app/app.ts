@@ -4,7 +4,7 @@
 import type { ExportFormat, KnowledgeBaseFile, Plan } from "../planner/types";
 import { describeError, PlannerError, toPlannerError } from "../planner/errors";
 import type { PlannerService } from "../worker/client";
-import { download, el, plural } from "./dom";
+import { download, el, plural, watchNearScreen } from "./dom";
 import { NO_SELECTION, type Selection } from "./model/tree";
 import { isPlannable, toPlanRequest, type AppQuery } from "./query";
 import { StaleSaveError, type KbPersistence, type SavedKnowledgeBase } from "./kb-store";
@@ -80,6 +80,8 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
   let explain: ExplainViewHandle | null = null;
   let kbUrl = options.kbUrl;
   let destroyed = false;
+  /** The Algorithm view replays the plan's explain trace: asked for while the view is near the screen. */
+  let explainNear = false;
 
   root.classList.add("foon-app");
   const status = el("p", { class: "plan-status", role: "status", "aria-live": "polite" });
@@ -106,8 +108,7 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
     const requested = performance.now();
     store.set({ planning: true });
     try {
-      // the Algorithm view replays the plan's trace: asked for only where it is shown
-      const result = await planner.plan({ ...toPlanRequest(query), explain: has("explain") });
+      const result = await planner.plan({ ...toPlanRequest(query), explain: explainNear });
       if (result === null || seq !== planSeq || destroyed) return; // a newer request replaced this one
       const answered = performance.now();
       const keep = store.state.selection.unit !== null && store.state.selection.unit < result.plan.units.length;
@@ -311,10 +312,19 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
     const host = section("explain");
     host.append(el("p", { class: "muted", text: "Loading the Algorithm view…" }));
     results.append(host);
-    // with Cytoscape, like the tree view
-    void import("./views/explain-view").then(({ mountExplainView }) => {
-      if (!destroyed) explain = mountExplainView(host, store);
-    });
+    // far down the page once there is a plan: off screen, re-plans skip the trace and the view draws no steps;
+    // scrolled to, it loads (the first time) and the plan is made again with the trace
+    let loading: Promise<void> | null = null;
+    cleanups.push(
+      watchNearScreen(host, (near) => {
+        explainNear = near;
+        if (!near) return;
+        loading ??= import("./views/explain-view").then(({ mountExplainView }) => {
+          if (!destroyed) explain = mountExplainView(host, store);
+        });
+        if (store.state.plan !== null && store.state.plan.trace === undefined) void replan();
+      }),
+    );
   }
   const tools = el("div", { class: "pair" });
   if (has("export")) {
