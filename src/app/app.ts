@@ -82,6 +82,8 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
   let destroyed = false;
   /** The Algorithm view replays the plan's explain trace: asked for while the view is near the screen. */
   let explainNear = false;
+  /** Whether the latest plan request asked for the trace. */
+  let traceAsked = false;
 
   root.classList.add("foon-app");
   const status = el("p", { class: "plan-status", role: "status", "aria-live": "polite" });
@@ -108,7 +110,8 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
     const requested = performance.now();
     store.set({ planning: true });
     try {
-      const result = await planner.plan({ ...toPlanRequest(query), explain: explainNear });
+      traceAsked = explainNear;
+      const result = await planner.plan({ ...toPlanRequest(query), explain: traceAsked });
       if (result === null || seq !== planSeq || destroyed) return; // a newer request replaced this one
       const answered = performance.now();
       const keep = store.state.selection.unit !== null && store.state.selection.unit < result.plan.units.length;
@@ -314,15 +317,18 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
     results.append(host);
     // far down the page once there is a plan: off screen, re-plans skip the trace and the view draws no steps;
     // scrolled to, it loads (the first time) and the plan is made again with the trace
-    let loading: Promise<void> | null = null;
+    let loading = false;
     cleanups.push(
       watchNearScreen(host, (near) => {
         explainNear = near;
         if (!near) return;
-        loading ??= import("./views/explain-view").then(({ mountExplainView }) => {
-          if (!destroyed) explain = mountExplainView(host, store);
-        });
-        if (store.state.plan !== null && store.state.plan.trace === undefined) void replan();
+        if (!loading) {
+          loading = true;
+          void import("./views/explain-view").then(({ mountExplainView }) => {
+            if (!destroyed) explain = mountExplainView(host, store);
+          });
+        }
+        if (!traceAsked) void replan();
       }),
     );
   }
