@@ -4,7 +4,7 @@
 import type { ExportFormat, KnowledgeBaseFile, Plan } from "../planner/types";
 import { describeError, PlannerError, toPlannerError } from "../planner/errors";
 import type { PlannerService } from "../worker/client";
-import { download, el, plural } from "./dom";
+import { download, el, plural, watchNearScreen } from "./dom";
 import { NO_SELECTION, type Selection } from "./model/tree";
 import { isPlannable, toPlanRequest, type AppQuery } from "./query";
 import { StaleSaveError, type KbPersistence, type SavedKnowledgeBase } from "./kb-store";
@@ -61,6 +61,8 @@ async function readFiles(files: File[]): Promise<KnowledgeBaseFile[]> {
 
 /** The Performance measure of the last plan: from its request to every view drawn. */
 export const SHOWN_MEASURE = "foon:plan shown";
+/** The part of it after the worker's answer: drawing the views (the rest is the worker's round trip). */
+export const DRAWN_MEASURE = "foon:plan drawn";
 /** Marked when the page's first plan is drawn (navigation start to first plan, for the e2e tests and bench). */
 export const FIRST_PLAN_MARK = "foon:first-plan";
 
@@ -78,6 +80,10 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
   let explain: ExplainViewHandle | null = null;
   let kbUrl = options.kbUrl;
   let destroyed = false;
+  /** The Algorithm view replays the plan's explain trace: asked for while the view is near the screen. */
+  let explainNear = false;
+  /** Whether the latest plan request asked for the trace. */
+  let traceAsked = false;
 
   root.classList.add("foon-app");
   const status = el("p", { class: "plan-status", role: "status", "aria-live": "polite" });
@@ -104,13 +110,16 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
     const requested = performance.now();
     store.set({ planning: true });
     try {
-      // the Algorithm view replays the plan's trace: asked for only where it is shown
-      const result = await planner.plan({ ...toPlanRequest(query), explain: has("explain") });
+      traceAsked = explainNear;
+      const result = await planner.plan({ ...toPlanRequest(query), explain: traceAsked });
       if (result === null || seq !== planSeq || destroyed) return; // a newer request replaced this one
+      const answered = performance.now();
       const keep = store.state.selection.unit !== null && store.state.selection.unit < result.plan.units.length;
       store.set({ plan: result.plan, planMs: result.ms, shownMs: null, planning: false, planError: null, selection: keep ? store.state.selection : NO_SELECTION });
       // the views render synchronously in set(): request to views drawn, also on the Performance timeline
       performance.clearMeasures(SHOWN_MEASURE);
+      performance.clearMeasures(DRAWN_MEASURE);
+      performance.measure(DRAWN_MEASURE, { start: answered });
       store.set({ shownMs: performance.measure(SHOWN_MEASURE, { start: requested }).duration });
       if (performance.getEntriesByName(FIRST_PLAN_MARK).length === 0) performance.mark(FIRST_PLAN_MARK);
       events?.plan?.(result.plan);
@@ -306,10 +315,22 @@ export function createPlannerApp(root: HTMLElement, options: AppOptions): Planne
     const host = section("explain");
     host.append(el("p", { class: "muted", text: "Loading the Algorithm view…" }));
     results.append(host);
-    // with Cytoscape, like the tree view
-    void import("./views/explain-view").then(({ mountExplainView }) => {
-      if (!destroyed) explain = mountExplainView(host, store);
-    });
+    // far down the page once there is a plan: off screen, re-plans skip the trace and the view draws no steps;
+    // scrolled to, it loads (the first time) and the plan is made again with the trace
+    let loading = false;
+    cleanups.push(
+      watchNearScreen(host, (near) => {
+        explainNear = near;
+        if (!near) return;
+        if (!loading) {
+          loading = true;
+          void import("./views/explain-view").then(({ mountExplainView }) => {
+            if (!destroyed) explain = mountExplainView(host, store);
+          });
+        }
+        if (!traceAsked) void replan();
+      }),
+    );
   }
   const tools = el("div", { class: "pair" });
   if (has("export")) {

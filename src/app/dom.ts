@@ -43,6 +43,20 @@ export function download(name: string, content: string | Blob, type = "text/plai
   setTimeout(() => URL.revokeObjectURL(url), 10_000);
 }
 
+/**
+ * Tells `onChange` whether `element` is within half a screen of the viewport, each time that changes (once,
+ * `true`, without IntersectionObserver); returns a function that stops watching.
+ */
+export function watchNearScreen(element: Element, onChange: (near: boolean) => void): () => void {
+  if (typeof IntersectionObserver === "undefined") {
+    onChange(true);
+    return () => undefined;
+  }
+  const observer = new IntersectionObserver((entries) => onChange(entries[entries.length - 1]!.isIntersecting), { rootMargin: "50% 0px" });
+  observer.observe(element);
+  return () => observer.disconnect();
+}
+
 /** "1 recipe", "2 recipes". */
 export function plural(n: number, word: string): string {
   return `${n} ${word}${n === 1 ? "" : "s"}`;

@@ -1,6 +1,7 @@
 // View adapters: the plan as graph data, progress rows, selection sync, substitution rows, SVG export.
 import { describe, expect, it } from "vitest";
 import { graphToSvg, escapeXml } from "../../src/app/export/svg";
+import { COLUMN_GAP, layoutTree, ROW_GAP } from "../../src/app/model/layout";
 import { columnCount, progressRows } from "../../src/app/model/progress";
 import { caseText, substituteChoices } from "../../src/app/model/substitutions";
 import { describeUnit, motionKey, objectKey, planToGraph, selectNode, selectProgressMotion, selectUnit, unitsOfIngredient } from "../../src/app/model/tree";
@@ -39,6 +40,33 @@ describe("task tree graph", () => {
     expect(selectProgressMotion(plan, "chili pepper", 1)).toEqual({ unit: 2, ingredient: "chili pepper", node: motionKey(2) });
     expect(selectUnit(plan, 99).unit).toBeNull();
     expect(describeUnit(plan, 0)).toBe("dice: knife (clean), tomato (whole) → tomato (diced)");
+  });
+});
+
+describe("task tree layout", () => {
+  const graph = planToGraph(fixturePlan());
+  const at = layoutTree(graph);
+  it("places every node, each edge running left to right, the goal node last", () => {
+    expect([...at.keys()].sort()).toEqual(graph.nodes.map((n) => n.id).sort());
+    for (const e of graph.edges) expect(at.get(e.source)!.x, e.id).toBeLessThan(at.get(e.target)!.x);
+    const goal = graph.nodes.find((n) => n.goal)!;
+    expect(at.get(goal.id)!.x).toBe(Math.max(...[...at.values()].map((p) => p.x)));
+  });
+  it("never puts two nodes of a column closer than a row", () => {
+    const points = [...at.values()];
+    for (const p of points) for (const q of points) if (p !== q && p.x === q.x) expect(Math.abs(p.y - q.y)).toBeGreaterThanOrEqual(ROW_GAP);
+  });
+  it("puts an ingredient one column before its first use, and a chain on one row", () => {
+    // the spoon joins at the last unit, not in the first column
+    expect(at.get("o:spoon|clean")!.x).toBe(at.get(motionKey(3))!.x - COLUMN_GAP);
+    const node = graph.nodes[0]!;
+    const chain = { nodes: ["a", "m", "b"].map((id) => ({ ...node, id })), edges: [{ id: "1", source: "a", target: "m" }, { id: "2", source: "m", target: "b" }] };
+    const placed = layoutTree(chain);
+    expect(["a", "m", "b"].map((id) => placed.get(id))).toEqual([0, 1, 2].map((c) => ({ x: c * COLUMN_GAP, y: 0 })));
+  });
+  it("lays out a graph with a cycle without hanging", () => {
+    const cyclic = { nodes: ["a", "b", "c"].map((id) => ({ ...graph.nodes[0]!, id })), edges: [{ id: "1", source: "a", target: "b" }, { id: "2", source: "b", target: "c" }, { id: "3", source: "c", target: "a" }] };
+    expect(layoutTree(cyclic).size).toBe(3);
   });
 });
 

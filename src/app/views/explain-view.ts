@@ -9,7 +9,7 @@ import { el } from "../dom";
 import { explainSteps, type ExplainStep } from "../model/explain";
 import type { AppState, Store } from "../store";
 import { readColors, type GraphColors } from "../theme-colors";
-import { elements, registerDagre, stylesheet } from "./tree-view";
+import { replaceGraph, stylesheet } from "./tree-view";
 
 /** The paper (its sections are named in each step's link). */
 const PAPER_URL = "https://scholar.google.com/scholar?q=%22Approximate+Task+Tree+Retrieval+in+a+Knowledge+Network+for+Robotic+Cooking%22";
@@ -35,7 +35,6 @@ function rowList(step: ExplainStep): HTMLElement {
 }
 
 export function mountExplainView(host: HTMLElement, store: Store): ExplainViewHandle {
-  registerDagre();
   const prev = el("button", { type: "button", text: "◀ Previous", "aria-label": "Previous step" });
   const play = el("button", { type: "button", text: "▶ Play", "aria-pressed": "false" });
   const next = el("button", { type: "button", text: "Next ▶", "aria-label": "Next step" });
@@ -81,13 +80,11 @@ export function mountExplainView(host: HTMLElement, store: Store): ExplainViewHa
     counter.textContent = `Step ${at + 1} of ${steps.length}`;
     caption.textContent = step.caption;
     section.textContent = step.section;
-    cy.elements().remove();
-    cy.add(elements(step.graph));
+    replaceGraph(cy, step.graph);
     cy.batch(() => {
       for (const id of step.frontier) cy.getElementById(id).addClass("frontier");
       for (const id of step.focus) cy.getElementById(id).addClass("focus");
     });
-    cy.layout({ name: "dagre", rankDir: "LR", nodeSep: 34, rankSep: 70, padding: 20, fit: false } as cytoscape.LayoutOptions).run();
     fit();
     canvas.dataset.nodes = String(step.graph.nodes.length);
     canvas.dataset.edges = String(step.graph.edges.length);

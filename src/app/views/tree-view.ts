@@ -1,22 +1,16 @@
-// The task tree with Cytoscape.js and a layered DAG layout (dagre): object nodes as green circles, motion
-// nodes as red squares, edges input -> motion -> output; nodes that modification added, renamed or
-// grafted are outlined and dashed. Selecting a node selects its functional unit and ingredient.
+// The task tree with Cytoscape.js, laid out left to right towards the goal (`model/layout.ts`): object
+// nodes as green circles, motion nodes as red squares, edges input -> motion -> output; nodes that
+// modification added, renamed or grafted are outlined and dashed. Selecting a node selects its
+// functional unit and ingredient.
 
 import cytoscape, { type Core, type ElementDefinition, type StylesheetJson } from "cytoscape";
-import dagre from "cytoscape-dagre";
 import type { Plan } from "../../planner/types";
 import { el } from "../dom";
 import { graphToSvg, type PlacedNode } from "../export/svg";
+import { layoutTree } from "../model/layout";
 import { planToGraph, selectNode, type Selection, type TreeGraph } from "../model/tree";
 import type { AppState, Store } from "../store";
 import { readColors, type GraphColors } from "../theme-colors";
-
-let registered = false;
-export function registerDagre(): void {
-  if (registered) return;
-  cytoscape.use(dagre);
-  registered = true;
-}
 
 const OBJECT_SIZE = 26;
 const MOTION_SIZE = 22;
@@ -33,10 +27,13 @@ export interface TreeViewActions {
   select(selection: Selection): void;
 }
 
+/** The graph's Cytoscape elements, each node at its place in the layout. */
 export function elements(graph: TreeGraph): ElementDefinition[] {
+  const at = layoutTree(graph);
   return [
     ...graph.nodes.map((n) => ({
       group: "nodes" as const,
+      position: at.get(n.id)!,
       data: { id: n.id, label: n.label, caption: n.detail === "" ? n.label : `${n.label}\n${n.detail}`, kind: n.kind, mark: n.mark ?? "", ingredient: n.ingredient ?? "" },
       classes: [n.kind, n.mark === null ? "" : "marked", n.goal ? "goal" : ""].filter((c) => c !== "").join(" "),
     })),
@@ -74,8 +71,15 @@ export function stylesheet(c: GraphColors): StylesheetJson {
   ];
 }
 
+/** Shows a graph in place of the one drawn: one batch, so Cytoscape restyles and redraws once. */
+export function replaceGraph(cy: Core, graph: TreeGraph): void {
+  cy.batch(() => {
+    cy.elements().remove();
+    cy.add(elements(graph));
+  });
+}
+
 export function mountTreeView(host: HTMLElement, store: Store, actions: TreeViewActions): TreeViewHandle {
-  registerDagre();
   const canvas = el("div", { class: "cy", role: "img", "aria-label": "Task tree graph (the Steps list below is the same plan as text)" });
   const fit = el("button", { type: "button", text: "Fit" });
   const zoomIn = el("button", { type: "button", "aria-label": "Zoom in", title: "Zoom in", text: "+" });
@@ -124,9 +128,7 @@ export function mountTreeView(host: HTMLElement, store: Store, actions: TreeView
   function renderPlan(next: Plan | null): void {
     plan = next;
     graph = next === null ? { nodes: [], edges: [] } : planToGraph(next);
-    cy.elements().remove();
-    cy.add(elements(graph));
-    cy.layout({ name: "dagre", rankDir: "LR", nodeSep: 34, rankSep: 70, padding: 20, fit: false } as cytoscape.LayoutOptions).run();
+    replaceGraph(cy, graph);
     fitTree();
     canvas.dataset.nodes = String(graph.nodes.length);
     canvas.dataset.edges = String(graph.edges.length);
