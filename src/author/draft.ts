@@ -1,0 +1,301 @@
+// Draft from recipe text: a FOON subgraph proposed from a recipe's title, ingredient lines and steps.
+// Each step's verbs are looked up in the project's verb table (draft-table.json) and become functional
+// units in a small model of the kitchen (which food is where, what each container holds); containers
+// come from the step's prepositions, the goal node and its dish class from the title. Whatever the
+// drafter had to guess becomes a `# confirm:` mark for the user.
+
+import table from "./draft-table.json";
+import { draftToFoon, foonLabel, type DraftNode, type DraftUnit } from "./draft-foon";
+import { readRecipe, singular, type IngredientLine } from "./recipe-text";
+
+export type VerbKind = "cut" | "mix" | "add" | "transfer" | "cook" | "skip";
+
+export interface Verb {
+  phrase: string;
+  motion?: string;
+  kind: VerbKind;
+  state?: string;
+  appliance?: string;
+}
+
+export const VERBS = table.verbs as Verb[];
+
+export interface Draft {
+  title: string;
+  fileName: string;
+  /** Dish class index of the goal node; null when the title names none (marked for the user). */
+  dishClass: number | null;
+  units: DraftUnit[];
+  /** Marks that belong to no one unit (unknown verbs, unused ingredients, unknown objects). */
+  notes: string[];
+  text: string;
+}
+
+export interface DraftOptions {
+  /** The knowledge base's object labels: an ingredient outside them is marked for the user. */
+  labels?: readonly string[];
+}
+
+const escape = (s: string): string => s.replace(/[.*+?^${}()|[\]\\]/g, "\\$&");
+const byLength = (a: string, b: string): number => b.length - a.length;
+const phraseRegex = (phrases: readonly string[]): RegExp => new RegExp(`\\b(${[...phrases].sort(byLength).map(escape).join("|")})\\b`, "gi");
+
+const VERB_RE = phraseRegex(VERBS.map((v) => v.phrase));
+const VERB_OF = new Map(VERBS.map((v) => [v.phrase, v]));
+const CONTAINER_RE = new RegExp(`\\b(?:in|into|to|on|onto|over|inside)\\s+(?:(?:a|an|the|your|large|big|small|medium|clean|separate|another|greased|prepared|hot)\\s+)*?(${[...table.containers].sort(byLength).map(escape).join("|")})\\b`, "i");
+const CONTAINER_NAMES = table.containerNames as Record<string, string>;
+const START_STATE = new Map<string, string>(Object.entries(table.startStates).flatMap(([state, labels]) => labels.map((l) => [l, state] as [string, string])));
+/** How an ingredient goes into a container when the step's verb does not say: liquids are poured. */
+const motionToAdd = (food: string): string => (START_STATE.get(food) === "liquid" ? "pour" : "pick-and-place");
+const PRONOUN = /\b(them|it|they|everything|all)\b/i;
+const ALL = /\b(everything|all (?:the )?(?:remaining )?ingredients|remaining ingredients|the rest)\b/i;
+
+/** The verbs of a text in order, each with the text up to the next verb. */
+export function verbSegments(text: string): { verb: Verb; text: string }[] {
+  const found = [...text.matchAll(VERB_RE)];
+  return found.map((m, i) => ({ verb: VERB_OF.get(m[1]!.toLowerCase())!, text: text.slice(m.index, found[i + 1]?.index ?? text.length) }));
+}
+
+/** The dish class named in a title: the last dish word in it ("potato salad" -> salad). */
+export function dishClassOf(title: string): number | null {
+  let best: { at: number; cls: number } | null = null;
+  for (const d of table.dishes) {
+    const m = new RegExp(`\\b${escape(d.word)}\\b`, "i").exec(title);
+    if (m !== null && (best === null || m.index + m[0].length > best.at)) best = { at: m.index + m[0].length, cls: d.class };
+  }
+  return best?.cls ?? null;
+}
+
+export function containerOf(text: string): string | null {
+  const m = CONTAINER_RE.exec(text);
+  if (m === null) return null;
+  const word = m[1]!.toLowerCase();
+  return CONTAINER_NAMES[word] ?? word;
+}
+
+const tool = (label: string): DraftNode => ({ label, states: ["clean"], inside: null, contains: null, flag: 1 });
+const appliance = (label: string): DraftNode => ({ label, states: ["on"], inside: null, contains: null, flag: 0 });
+const withState = (n: DraftNode, state: string): DraftNode => ({ ...n, states: [...n.states.filter((s) => s !== "whole" && s !== state), state] });
+const sorted = (xs: Iterable<string>): string[] => [...new Set(xs)].sort();
+
+/** The kitchen as the steps change it: where each ingredient is and what each container holds. */
+class Kitchen {
+  readonly units: DraftUnit[] = [];
+  /** Ingredient -> its node, until it becomes part of a mixture. */
+  readonly foods = new Map<string, DraftNode>();
+  /** Container -> its node; a container with a mixture in it is in `mixtures`. */
+  readonly containers = new Map<string, DraftNode>();
+  readonly mixtures = new Map<string, DraftNode>();
+  current: string | null = null;
+
+  constructor(readonly ingredients: readonly IngredientLine[]) {
+    for (const i of ingredients) this.foods.set(i.label, { label: i.label, states: [START_STATE.get(i.label) ?? "whole"], inside: null, contains: null, flag: 1 });
+  }
+
+  private emit(inputs: DraftNode[], motion: string, outputs: DraftNode[], notes: string[]): void {
+    this.units.push({ inputs, motion, outputs, notes });
+  }
+
+  container(label: string): DraftNode {
+    return this.containers.get(label) ?? { label, states: [], inside: null, contains: [], flag: 0 };
+  }
+
+  /** Where an ingredient is now: in a mixture (its container) or as itself. */
+  mixtureHolding(food: string): string | null {
+    for (const [c, m] of this.mixtures) if (m.contains?.includes(food)) return c;
+    return null;
+  }
+
+  cut(food: string, verb: Verb, notes: string[]): void {
+    const node = this.foods.get(food);
+    if (node === undefined || verb.state === undefined || node.states.includes(verb.state)) return;
+    const out = withState(node, verb.state);
+    this.emit([node, tool(table.tools.cut)], verb.motion!, [out], notes);
+    this.foods.set(food, out);
+  }
+
+  add(food: string, into: string, motion: string, notes: string[]): void {
+    const node = this.foods.get(food);
+    if (node === undefined || node.inside === into) return;
+    const mixture = this.mixtures.get(into);
+    if (mixture !== undefined) {
+      // a topping: the mixture grows
+      const grown = { ...mixture, contains: sorted([...(mixture.contains ?? []), food]) };
+      this.emit([mixture, node], motion, [grown], notes);
+      this.mixtures.set(into, grown);
+      this.foods.delete(food);
+    } else {
+      const holder = this.container(into);
+      const grown = { ...holder, contains: sorted([...(holder.contains ?? []), food]) };
+      const moved = { ...node, inside: into };
+      this.emit([holder, node], motion, [grown, moved], notes);
+      this.containers.set(into, grown);
+      this.foods.set(food, moved);
+    }
+    this.current = into;
+  }
+
+  /** Everything in a container becomes one mixture. */
+  mix(into: string, verb: Verb, notes: string[]): void {
+    const holder = this.container(into);
+    const loose = [...this.foods.values()].filter((n) => n.inside === into);
+    const before = this.mixtures.get(into);
+    if (loose.length === 0 && before === undefined) return;
+    const contains = sorted([...(before?.contains ?? []), ...loose.map((n) => n.label)]);
+    const out: DraftNode = { label: "mixture", states: [verb.state ?? "mixed"], inside: into, contains, flag: 1 };
+    this.emit([...(before === undefined ? [holder] : [before]), ...loose], verb.motion!, [out], notes);
+    for (const n of loose) this.foods.delete(n.label);
+    this.mixtures.set(into, out);
+    this.current = into;
+  }
+
+  /** Cooks foods on their own, or a container's contents: what is cooked in a container becomes what it holds. */
+  cook(foods: readonly string[], into: string | null, verb: Verb, notes: string[]): void {
+    const extra = verb.appliance === undefined || verb.appliance === into ? [] : [appliance(verb.appliance)];
+    if (into === null) {
+      for (const f of foods) {
+        const n = this.foods.get(f);
+        if (n === undefined) continue;
+        const out = withState(n, verb.state!);
+        this.emit([n, ...extra], verb.motion!, [out], notes);
+        this.foods.set(f, out);
+      }
+      return;
+    }
+    const mixture = this.mixtures.get(into);
+    const loose = [...this.foods.values()].filter((n) => n.inside === into);
+    if (mixture === undefined && loose.length === 0) return;
+    const inputs = mixture !== undefined ? [mixture, ...loose] : [this.container(into), ...loose];
+    const base: DraftNode = mixture ?? (loose.length === 1 ? loose[0]! : { label: "mixture", states: [], inside: into, contains: [], flag: 1 });
+    const contains = sorted([...(mixture?.contains ?? []), ...loose.map((n) => n.label)]);
+    const out = { ...withState(base, verb.state!), inside: into, contains };
+    this.emit([...inputs, ...extra], verb.motion!, [out], notes);
+    for (const n of loose) this.foods.delete(n.label);
+    this.mixtures.set(into, out);
+    this.current = into;
+  }
+
+  /** Moves a container's mixture (or its foods) into another container. */
+  transfer(from: string, into: string, motion: string, notes: string[]): void {
+    const mixture = this.mixtures.get(from);
+    if (mixture === undefined) {
+      for (const n of [...this.foods.values()].filter((f) => f.inside === from)) this.add(n.label, into, motion, notes);
+      return;
+    }
+    const holder = this.container(into);
+    const moved = { ...mixture, inside: into };
+    this.emit([holder, mixture], motion, [moved], notes);
+    this.mixtures.delete(from);
+    this.mixtures.set(into, moved);
+    this.current = into;
+  }
+}
+
+/** The ingredients a piece of text names, in the order of the ingredient list. */
+function mentioned(text: string, ingredients: readonly IngredientLine[]): string[] {
+  const lower = text.toLowerCase();
+  const words = new Set(lower.split(/[^a-z-]+/).map(singular));
+  const full = ingredients.filter((i) => new RegExp(`\\b${escape(i.label)}(e?s)?\\b`).test(lower)).map((i) => i.label);
+  // "the onion" for "red onion": the head word, when the full name is not there
+  const heads = ingredients.filter((i) => !full.includes(i.label) && words.has(i.label.split(" ").at(-1)!)).map((i) => i.label);
+  return [...full, ...heads.filter((h) => !full.some((f) => f.endsWith(h.split(" ").at(-1)!)))];
+}
+
+interface StepContext {
+  kitchen: Kitchen;
+  ingredients: readonly IngredientLine[];
+  /** The foods of the previous verb ("them", "it"). */
+  last: string[];
+}
+
+function applySegment(ctx: StepContext, verb: Verb, text: string, step: number): void {
+  const { kitchen } = ctx;
+  let foods = mentioned(text, ctx.ingredients);
+  const notes: string[] = [];
+  if (foods.length === 0 && ALL.test(text)) foods = ctx.ingredients.map((i) => i.label).filter((l) => kitchen.foods.has(l) && kitchen.foods.get(l)!.inside !== kitchen.current);
+  if (foods.length === 0 && (verb.kind === "cut" || verb.kind === "add") && ctx.last.length > 0 && PRONOUN.test(text)) {
+    foods = ctx.last;
+    notes.push(`step ${step}: "${text.trim()}" taken to mean ${foods.join(", ")}`);
+  }
+  let into = containerOf(text);
+  if (into === null && (verb.kind === "add" || verb.kind === "mix" || verb.kind === "transfer") && kitchen.current === null) {
+    into = "mixing bowl";
+    notes.push(`step ${step}: no container named for "${verb.phrase}": a mixing bowl assumed`);
+  }
+  const place = into ?? kitchen.current;
+  switch (verb.kind) {
+    case "cut":
+      for (const f of foods) kitchen.cut(f, verb, notes);
+      break;
+    case "add":
+      for (const f of foods) kitchen.add(f, place!, verb.motion!, notes);
+      break;
+    case "mix":
+      for (const f of foods) if (kitchen.mixtureHolding(f) !== place) kitchen.add(f, place!, motionToAdd(f), notes);
+      kitchen.mix(place!, verb, notes);
+      break;
+    case "cook":
+      if (into !== null) for (const f of foods) kitchen.add(f, into, motionToAdd(f), notes);
+      kitchen.cook(foods, into ?? (foods.length > 0 ? null : kitchen.current), verb, notes);
+      break;
+    case "transfer":
+      if (kitchen.current !== null && into !== null && into !== kitchen.current) kitchen.transfer(kitchen.current, into, verb.motion!, notes);
+      break;
+    case "skip":
+      break;
+  }
+  if (foods.length > 0) ctx.last = foods;
+}
+
+/** Units for what the ingredient lines say was done before the steps ("garlic, minced"). */
+function prepUnits(kitchen: Kitchen, ingredients: readonly IngredientLine[], notes: string[]): void {
+  for (const i of ingredients) {
+    if (i.prep === "") continue;
+    const segments = verbSegments(i.prep).filter((s) => s.verb.kind === "cut" || s.verb.kind === "cook");
+    if (segments.length === 0) notes.push(`ingredient "${i.text}": "${i.prep}" is no preparation the drafter knows`);
+    for (const { verb } of segments) {
+      if (verb.kind === "cut") kitchen.cut(i.label, verb, []);
+      else kitchen.cook([i.label], null, verb, []);
+    }
+  }
+}
+
+/** The last unit's product — what holds everything (a container or mixture), else its food — becomes the goal
+ * node: the dish's name, its dish class, all its ingredients. */
+function markGoal(units: DraftUnit[], label: string, dishClass: number | null): void {
+  const last = units.at(-1);
+  if (last === undefined) return;
+  const holder = last.outputs.findIndex((n) => (n.contains?.length ?? 0) > 0);
+  const index = holder !== -1 ? holder : last.outputs.findIndex((n) => n.flag === 1);
+  const out = last.outputs[index];
+  if (out === undefined) return;
+  last.outputs[index] = { ...out, label, flag: 1, contains: out.contains ?? [out.label], ...(dishClass === null ? {} : { dishClass }) };
+}
+
+function goalLabel(title: string): string {
+  return foonLabel(title.replace(/\b(easy|quick|simple|best|homemade|classic|my|perfect)\b/gi, " ")) || "my dish";
+}
+
+export function draftRecipe(text: string, options: DraftOptions = {}): Draft {
+  const recipe = readRecipe(text);
+  const title = recipe.title === "" ? "My recipe" : recipe.title;
+  const ingredients = recipe.ingredients.map((i) => ({ ...i, label: foonLabel(i.label) })).filter((i) => i.label !== "");
+  const notes: string[] = [];
+  const known = options.labels === undefined ? null : new Set(options.labels);
+  for (const i of ingredients) if (known !== null && !known.has(i.label)) notes.push(`"${i.label}" (from "${i.text}") is not an object of the knowledge base: keep it as new or rename it`);
+  const kitchen = new Kitchen(ingredients);
+  prepUnits(kitchen, ingredients, notes);
+  const ctx: StepContext = { kitchen, ingredients, last: [] };
+  recipe.steps.forEach((step, i) => {
+    const segments = verbSegments(step);
+    if (segments.length === 0) notes.push(`step ${i + 1} ("${step}") has no verb the drafter knows: write its units`);
+    for (const s of segments) applySegment(ctx, s.verb, s.text, i + 1);
+  });
+  const used = new Set(kitchen.units.flatMap((u) => u.inputs.flatMap((n) => [n.label, ...(n.contains ?? [])])));
+  for (const i of ingredients) if (!used.has(i.label)) notes.push(`"${i.label}" is listed but no step uses it`);
+  const dishClass = dishClassOf(title);
+  if (dishClass === null) notes.push("the title names no dish class: add it as the 4th field of the goal node's O line");
+  markGoal(kitchen.units, goalLabel(title), dishClass);
+  const fileName = goalLabel(title).replace(/[^a-z0-9]+/g, "-").replace(/^-|-$/g, "");
+  return { title, fileName, dishClass, units: kitchen.units, notes, text: draftToFoon(title, notes, kitchen.units) };
+}

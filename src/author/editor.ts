@@ -1,0 +1,267 @@
+// The FOON text editor: a plain textarea over a coloured copy of its text (the overlay), a line-number
+// gutter, errors and warnings with line, column and reason, completion of the knowledge base's words,
+// and undo/redo of every change, the page's own included. The page owns the text's meaning: the
+// editor reports each change and shows the diagnostics it is given.
+
+import { el, uid } from "../app/dom";
+import type { Diagnostic } from "./check";
+import { applyCompletion, completeAt, type Completion, type CompletionWords } from "./complete";
+import { EditHistory, type EditKind, type Snapshot } from "./history";
+import { lineKind, tokenizeLine } from "./tokens";
+
+export interface EditorHandle {
+  readonly text: string;
+  /** Replaces the whole text as one undoable step (a draft, a restore). */
+  replace(text: string): void;
+  undo(): void;
+  redo(): void;
+  setDiagnostics(diagnostics: readonly Diagnostic[]): void;
+  setWords(words: CompletionWords): void;
+}
+
+export interface EditorOptions {
+  initial: string;
+  label: string;
+  onChange(text: string): void;
+}
+
+const NO_WORDS: CompletionWords = { labels: [], states: [], motions: [] };
+
+function where(d: Diagnostic): string {
+  if (d.line === null) return "";
+  return d.column === null ? `line ${d.line}: ` : `line ${d.line}, column ${d.column}: `;
+}
+
+/** The overlay's content: one span per line, coloured by token, the error's column marked. */
+function overlayLines(text: string, error: Diagnostic | undefined, marked: ReadonlySet<number>): HTMLElement[] {
+  return text.split("\n").map((line, i) => {
+    const row = el("span", { class: `ln ln-${lineKind(line)}${marked.has(i + 1) ? " ln-flagged" : ""}` });
+    let offset = 0;
+    const errorAt = error?.line === i + 1 ? (error.column ?? 1) - 1 : -1;
+    for (const token of tokenizeLine(line)) {
+      const end = offset + token.text.length;
+      if (errorAt >= offset && errorAt < end) {
+        const cut = errorAt - offset;
+        row.append(el("span", { class: `t-${token.role}`, text: token.text.slice(0, cut) }));
+        row.append(el("span", { class: `t-${token.role} err-at`, text: token.text.slice(cut) }));
+      } else row.append(el("span", { class: `t-${token.role}`, text: token.text }));
+      offset = end;
+    }
+    if (errorAt >= offset) row.append(el("span", { class: "err-at", text: " " }));
+    row.append("\n");
+    return row;
+  });
+}
+
+export function mountEditor(host: HTMLElement, options: EditorOptions): EditorHandle {
+  const inputId = uid("foon-text");
+  const listId = uid("foon-complete");
+  const input = el("textarea", {
+    id: inputId,
+    class: "code-input",
+    spellcheck: "false",
+    autocapitalize: "off",
+    autocomplete: "off",
+    wrap: "off",
+    "aria-autocomplete": "list",
+    "aria-controls": listId,
+    "aria-describedby": `${inputId}-help`,
+  });
+  input.value = options.initial;
+  const overlay = el("pre", { class: "code-overlay", "aria-hidden": "true" });
+  const gutter = el("pre", { class: "code-gutter", "aria-hidden": "true" });
+  const suggestions = el("ul", { id: listId, class: "completions", role: "listbox", "aria-label": "Suggestions", hidden: true });
+  const problems = el("ul", { class: "diagnostics", "aria-label": "Errors and warnings" });
+  const summary = el("p", { class: "diagnostics-summary", role: "status" });
+  host.replaceChildren(
+    el("label", { for: inputId, text: options.label }),
+    el("p", { id: `${inputId}-help`, class: "muted small", text: "Tab types a tab (FOON separates fields with tabs); Escape, then Tab leaves the editor. Ctrl+Z undoes, Ctrl+Shift+Z or Ctrl+Y redoes; Ctrl+Space suggests." }),
+    el("div", { class: "code-editor" }, gutter, el("div", { class: "code-stack" }, overlay, input)),
+    suggestions,
+    summary,
+    problems,
+  );
+
+  const history = new EditHistory({ text: input.value, start: 0, end: 0 });
+  let diagnostics: readonly Diagnostic[] = [];
+  let words = NO_WORDS;
+  let completion: Completion | null = null;
+  let active = 0;
+  let escaped = false;
+
+  function render(): void {
+    const error = diagnostics.find((d) => d.severity === "error");
+    const flagged = new Set(diagnostics.filter((d) => d.line !== null).map((d) => d.line!));
+    overlay.replaceChildren(...overlayLines(input.value, error, flagged));
+    const count = input.value.split("\n").length;
+    gutter.textContent = Array.from({ length: count }, (_, i) => String(i + 1)).join("\n") + "\n";
+    syncScroll();
+  }
+
+  function syncScroll(): void {
+    overlay.scrollTop = input.scrollTop;
+    overlay.scrollLeft = input.scrollLeft;
+    gutter.scrollTop = input.scrollTop;
+  }
+
+  function changed(): void {
+    render();
+    options.onChange(input.value);
+  }
+
+  function show(snapshot: Snapshot): void {
+    input.value = snapshot.text;
+    input.setSelectionRange(snapshot.start, snapshot.end);
+    closeCompletion();
+    changed();
+  }
+
+  function edit(text: string, caret: number, kind: EditKind): void {
+    input.value = text;
+    input.setSelectionRange(caret, caret);
+    history.record({ text, start: caret, end: caret }, kind);
+    changed();
+  }
+
+  function closeCompletion(): void {
+    completion = null;
+    suggestions.hidden = true;
+    input.removeAttribute("aria-activedescendant");
+  }
+
+  function openCompletion(): void {
+    completion = input.selectionStart === input.selectionEnd ? completeAt(input.value, input.selectionStart, words) : null;
+    if (completion === null) return closeCompletion();
+    active = 0;
+    suggestions.replaceChildren(
+      ...completion.options.map((option, i) => {
+        const item = el("li", { id: `${listId}-${i}`, role: "option", "aria-selected": i === 0 ? "true" : "false", text: option });
+        item.addEventListener("mousedown", (event) => {
+          event.preventDefault(); // keep the focus in the textarea
+          accept(i);
+        });
+        return item;
+      }),
+    );
+    suggestions.hidden = false;
+    input.setAttribute("aria-activedescendant", `${listId}-0`);
+  }
+
+  function moveActive(by: number): void {
+    if (completion === null) return;
+    active = (active + by + completion.options.length) % completion.options.length;
+    suggestions.querySelectorAll("li").forEach((li, i) => li.setAttribute("aria-selected", i === active ? "true" : "false"));
+    input.setAttribute("aria-activedescendant", `${listId}-${active}`);
+  }
+
+  function accept(index: number): void {
+    const option = completion?.options[index];
+    if (completion === null || option === undefined) return;
+    const next = applyCompletion(input.value, completion, option);
+    closeCompletion();
+    edit(next.text, next.caret, "replace");
+  }
+
+  const KIND_OF_INPUT: Record<string, EditKind> = { insertText: "type", deleteContentBackward: "delete", deleteContentForward: "delete" };
+
+  input.addEventListener("beforeinput", (event) => {
+    // the browser's own undo knows nothing of the page's edits: use the editor's
+    if (event.inputType === "historyUndo" || event.inputType === "historyRedo") {
+      event.preventDefault();
+      if (event.inputType === "historyUndo") undo();
+      else redo();
+    }
+  });
+  input.addEventListener("input", (event) => {
+    const kind = KIND_OF_INPUT[(event as InputEvent).inputType ?? ""] ?? "replace";
+    history.record({ text: input.value, start: input.selectionStart, end: input.selectionEnd }, kind);
+    changed();
+    if (kind === "type") openCompletion();
+    else closeCompletion();
+  });
+  input.addEventListener("scroll", syncScroll);
+  input.addEventListener("blur", closeCompletion);
+  input.addEventListener("keydown", (event) => {
+    const mod = event.ctrlKey || event.metaKey;
+    const key = event.key.toLowerCase();
+    const wasEscaped = escaped;
+    escaped = event.key === "Escape";
+    if (mod && key === "z") {
+      event.preventDefault();
+      if (event.shiftKey) redo();
+      else undo();
+    } else if (mod && key === "y") {
+      event.preventDefault();
+      redo();
+    } else if (mod && event.key === " ") {
+      event.preventDefault();
+      openCompletion();
+    } else if (completion !== null && (event.key === "ArrowDown" || event.key === "ArrowUp")) {
+      event.preventDefault();
+      moveActive(event.key === "ArrowDown" ? 1 : -1);
+    } else if (completion !== null && (event.key === "Enter" || event.key === "Tab")) {
+      event.preventDefault();
+      accept(active);
+    } else if (event.key === "Escape") {
+      closeCompletion();
+    } else if (event.key === "Tab" && !event.shiftKey && !wasEscaped) {
+      event.preventDefault();
+      const { selectionStart: start, selectionEnd: end, value } = input;
+      edit(value.slice(0, start) + "\t" + value.slice(end), start + 1, "type");
+    }
+  });
+
+  function undo(): void {
+    const snapshot = history.undo();
+    if (snapshot !== null) show(snapshot);
+  }
+
+  function redo(): void {
+    const snapshot = history.redo();
+    if (snapshot !== null) show(snapshot);
+  }
+
+  /** Moves the caret to a diagnostic's place and scrolls it into view. */
+  function goTo(d: Diagnostic): void {
+    if (d.line === null) return;
+    const lines = input.value.split("\n");
+    const offset = lines.slice(0, d.line - 1).reduce((sum, l) => sum + l.length + 1, 0) + Math.max(0, (d.column ?? 1) - 1);
+    input.focus();
+    input.setSelectionRange(offset, offset);
+    const lineHeight = input.scrollHeight / Math.max(1, lines.length);
+    input.scrollTop = Math.max(0, (d.line - 3) * lineHeight);
+    syncScroll();
+  }
+
+  render();
+  return {
+    get text() {
+      return input.value;
+    },
+    replace(text) {
+      edit(text, 0, "replace");
+    },
+    undo,
+    redo,
+    setDiagnostics(next) {
+      diagnostics = next;
+      const count = (s: Diagnostic["severity"]): number => next.filter((d) => d.severity === s).length;
+      host.dataset.errors = String(count("error"));
+      host.dataset.warnings = String(count("warning"));
+      host.dataset.confirm = String(count("confirm"));
+      summary.textContent =
+        next.length === 0 ? "No errors or warnings." : `${count("error")} error(s), ${count("warning")} warning(s), ${count("confirm")} guess(es) to confirm.`;
+      problems.replaceChildren(
+        ...next.map((d) => {
+          const button = el("button", { type: "button", class: "diagnostic", text: `${where(d)}${d.reason}` });
+          button.addEventListener("click", () => goTo(d));
+          return el("li", { "data-severity": d.severity }, el("span", { class: "severity", text: d.severity === "confirm" ? "to confirm" : d.severity }), button);
+        }),
+      );
+      render();
+    },
+    setWords(next) {
+      words = next;
+    },
+  };
+}

@@ -1,0 +1,89 @@
+// The FOON editor page: paste a recipe, draft it, fix an error the editor shows with line and column,
+// use it in the planner, plan with it, reload — the authored text and the knowledge base are still there.
+import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
+import type { Browser, Page } from "playwright-core";
+import { launch, screenshot, watchErrors } from "./browser";
+import { waitForPlan } from "./app-helpers";
+
+let browser: Browser;
+beforeAll(async () => {
+  browser = await launch();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+const RECIPE = `Peanut Butter Banana Toast
+
+Ingredients
+- 2 slices bread
+- 2 tablespoons peanut butter
+- 1 banana, sliced
+- 1 teaspoon honey
+
+Steps
+1. Toast the bread in the toaster.
+2. Spread the peanut butter on the bread.
+3. Top with the banana and drizzle with honey.
+`;
+
+const editor = (page: Page) => page.locator(".editor-host");
+const text = (page: Page) => page.locator("textarea.code-input");
+
+/** Waits until the page has checked the editor's current text (the check runs in the planner's worker). */
+async function waitForCheck(page: Page): Promise<void> {
+  await page.locator("#author[data-checked='yes']").waitFor();
+}
+
+describe("the FOON editor", () => {
+  it("drafts a recipe, shows and clears an error, plans with it, and keeps everything across a reload", async () => {
+    const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+    const page = await context.newPage();
+    const errors = watchErrors(page);
+    await page.goto(`${inject("baseUrl")}author.html`);
+    await page.getByRole("textbox", { name: "Recipe text" }).fill(RECIPE);
+    await page.getByRole("button", { name: "Draft FOON from this recipe" }).click();
+    await waitForCheck(page);
+    const drafted = await text(page).inputValue();
+    expect(drafted).toContain("# title: Peanut Butter Banana Toast");
+    expect(drafted).toMatch(/^O\tpeanut butter banana toast\t1\t0$/m); // the goal node, dish class 0 (bread)
+    expect(await editor(page).getAttribute("data-errors")).toBe("0");
+    await page.locator(".panel-tree .cy[data-nodes]").waitFor();
+    expect(Number(await page.locator(".panel-tree .cy").getAttribute("data-nodes"))).toBeGreaterThan(4);
+    expect(await page.locator(".panel-steps li").count()).toBeGreaterThan(2);
+
+    // a typo: the flag of an object line is not a number
+    const lines = drafted.split("\n");
+    const at = lines.findIndex((l) => l === "O\tbanana\t1");
+    lines[at] = "O\tbanana\tyes";
+    await text(page).fill(lines.join("\n"));
+    await waitForCheck(page);
+    expect(await editor(page).getAttribute("data-errors")).toBe("1");
+    const shown = await page.locator(".diagnostics li[data-severity='error']").textContent();
+    expect(shown).toContain(`line ${at + 1}, column 10`);
+    expect(await page.getByRole("button", { name: "Use in planner" }).isDisabled()).toBe(true);
+
+    // fixed by undo, the editor's own (the page set the text, so the browser's undo would not know it)
+    await text(page).focus();
+    await page.keyboard.press("Control+z");
+    await waitForCheck(page);
+    expect(await editor(page).getAttribute("data-errors")).toBe("0");
+    expect(await text(page).inputValue()).toBe(drafted);
+
+    await page.getByRole("button", { name: "Use in planner" }).click();
+    await page.locator(".use-status[data-state='saved']").waitFor();
+    await page.getByRole("link", { name: "Plan with it" }).click();
+    await waitForPlan(page);
+    expect(await page.locator(".kb-status").getAttribute("data-source")).toBe("custom");
+    expect(await page.locator(".panel-reference .goal-label").textContent()).toBe("Peanut Butter Banana Toast");
+
+    await page.goto(`${inject("baseUrl")}author.html`);
+    await waitForCheck(page);
+    expect(await text(page).inputValue()).toBe(drafted);
+    expect(await page.getByRole("textbox", { name: "Recipe text" }).inputValue()).toBe(RECIPE);
+    expect(await page.locator(".save-status").textContent()).toContain("restored");
+    await screenshot(page, "author");
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+});
