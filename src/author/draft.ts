@@ -16,6 +16,8 @@ export interface Verb {
   kind: VerbKind;
   state?: string;
   appliance?: string;
+  /** The motion depends on the food ("add the milk" pours, "add the tomato" places it). */
+  byFood?: boolean;
 }
 
 export const VERBS = table.verbs as Verb[];
@@ -45,8 +47,10 @@ const VERB_OF = new Map(VERBS.map((v) => [v.phrase, v]));
 const CONTAINER_RE = new RegExp(`\\b(?:in|into|to|on|onto|over|inside)\\s+(?:(?:a|an|the|your|large|big|small|medium|clean|separate|another|greased|prepared|hot)\\s+)*?(${[...table.containers].sort(byLength).map(escape).join("|")})\\b`, "i");
 const CONTAINER_NAMES = table.containerNames as Record<string, string>;
 const START_STATE = new Map<string, string>(Object.entries(table.startStates).flatMap(([state, labels]) => labels.map((l) => [l, state] as [string, string])));
-/** How an ingredient goes into a container when the step's verb does not say: liquids are poured. */
-const motionToAdd = (food: string): string => (START_STATE.get(food) === "liquid" ? "pour" : "pick-and-place");
+const ADD_MOTION = new Map<string, string>(Object.entries(table.addMotions).flatMap(([motion, labels]) => labels.map((l) => [l, motion] as [string, string])));
+const POURED = new Set(["liquid", "powder", "creamy"]);
+/** How an ingredient goes into a container when the verb does not say: eggs are cracked, salt sprinkled, liquids poured. */
+const motionToAdd = (food: string): string => ADD_MOTION.get(food) ?? (POURED.has(START_STATE.get(food) ?? "") ? "pour" : "pick-and-place");
 const PRONOUN = /\b(them|it|they|everything|all)\b/i;
 const ALL = /\b(everything|all (?:the )?(?:remaining )?ingredients|remaining ingredients|the rest)\b/i;
 
@@ -116,6 +120,8 @@ class Kitchen {
 
   add(food: string, into: string, motion: string, notes: string[]): void {
     const node = this.foods.get(food);
+    const held = this.mixtureHolding(food);
+    if (node === undefined && held !== null && held !== into) this.transfer(held, into, motion, notes);
     if (node === undefined || node.inside === into) return;
     const mixture = this.mixtures.get(into);
     if (mixture !== undefined) {
@@ -149,42 +155,45 @@ class Kitchen {
     this.current = into;
   }
 
-  /** Cooks foods on their own, or a container's contents: what is cooked in a container becomes what it holds. */
+  /** Cooks foods on their own, or a container's contents (its mixture, or the foods in it, the container staying as it is). */
   cook(foods: readonly string[], into: string | null, verb: Verb, notes: string[]): void {
     const extra = verb.appliance === undefined || verb.appliance === into ? [] : [appliance(verb.appliance)];
-    if (into === null) {
-      for (const f of foods) {
-        const n = this.foods.get(f);
-        if (n === undefined) continue;
-        const out = withState(n, verb.state!);
-        this.emit([n, ...extra], verb.motion!, [out], notes);
-        this.foods.set(f, out);
-      }
+    const mixture = into === null ? undefined : this.mixtures.get(into);
+    if (mixture !== undefined) {
+      const out = withState(mixture, verb.state!);
+      this.emit([mixture, ...extra], verb.motion!, [out], notes);
+      this.mixtures.set(into!, out);
       return;
     }
-    const mixture = this.mixtures.get(into);
-    const loose = [...this.foods.values()].filter((n) => n.inside === into);
-    if (mixture === undefined && loose.length === 0) return;
-    const inputs = mixture !== undefined ? [mixture, ...loose] : [this.container(into), ...loose];
-    const base: DraftNode = mixture ?? (loose.length === 1 ? loose[0]! : { label: "mixture", states: [], inside: into, contains: [], flag: 1 });
-    const contains = sorted([...(mixture?.contains ?? []), ...loose.map((n) => n.label)]);
-    const out = { ...withState(base, verb.state!), inside: into, contains };
-    this.emit([...inputs, ...extra], verb.motion!, [out], notes);
-    for (const n of loose) this.foods.delete(n.label);
-    this.mixtures.set(into, out);
-    this.current = into;
+    const nodes = into === null ? foods.flatMap((f) => this.foods.get(f) ?? []) : [...this.foods.values()].filter((n) => n.inside === into);
+    if (nodes.length === 0) return;
+    const outputs = nodes.map((n) => withState(n, verb.state!));
+    this.emit([...(into === null ? [] : [this.container(into)]), ...nodes, ...extra], verb.motion!, outputs, notes);
+    for (const out of outputs) this.foods.set(out.label, out);
   }
 
-  /** Moves a container's mixture (or its foods) into another container. */
+  /** A food that others go on ("spread the butter on the bread"): it becomes a holder, keyed by its container or its name. */
+  hold(food: string): string | null {
+    const held = this.mixtureHolding(food);
+    const node = this.foods.get(food);
+    if (node === undefined) return held;
+    const key = node.inside ?? food;
+    if (this.mixtures.has(key)) return key;
+    this.mixtures.set(key, { ...node, contains: [food] });
+    this.foods.delete(food);
+    return key;
+  }
+
+  /** Moves a container's mixture (or its foods) into another container; a mixture there takes it in. */
   transfer(from: string, into: string, motion: string, notes: string[]): void {
     const mixture = this.mixtures.get(from);
     if (mixture === undefined) {
       for (const n of [...this.foods.values()].filter((f) => f.inside === from)) this.add(n.label, into, motion, notes);
       return;
     }
-    const holder = this.container(into);
-    const moved = { ...mixture, inside: into };
-    this.emit([holder, mixture], motion, [moved], notes);
+    const there = this.mixtures.get(into);
+    const moved = there === undefined ? { ...mixture, inside: into } : { ...there, contains: sorted([...(there.contains ?? []), ...(mixture.contains ?? [])]) };
+    this.emit([there ?? this.container(into), mixture], motion, [moved], notes);
     this.mixtures.delete(from);
     this.mixtures.set(into, moved);
     this.current = into;
@@ -201,11 +210,38 @@ function mentioned(text: string, ingredients: readonly IngredientLine[]): string
   return [...full, ...heads.filter((h) => !full.some((f) => f.endsWith(h.split(" ").at(-1)!)))];
 }
 
+/** The food a verb puts things on or into ("on the bread", "to the cabbage"), if the text names one. */
+function targetFood(text: string, foods: readonly string[]): string | null {
+  const lower = text.toLowerCase();
+  return foods.find((f) => new RegExp(`\\b(?:on|onto|over|to|into)\\s+(?:the\\s+|some\\s+)?(?:\\w+\\s+)?${escape(f.split(" ").at(-1)!)}`).test(lower)) ?? null;
+}
+
 interface StepContext {
   kitchen: Kitchen;
   ingredients: readonly IngredientLine[];
   /** The foods of the previous verb ("them", "it"). */
   last: string[];
+}
+
+/** "add", "pour", "spread", "top with": foods into a container, onto a food, or the current container's contents moved on. */
+function addAll(kitchen: Kitchen, foods: readonly string[], verb: Verb, text: string, into: string | null, notes: string[]): void {
+  const motion = (f: string): string => (verb.byFood === true ? motionToAdd(f) : verb.motion!);
+  const target = into === null ? targetFood(text, foods) : null;
+  const others = foods.filter((f) => f !== target);
+  if (target !== null && others.length > 0) {
+    const key = kitchen.hold(target);
+    if (key !== null) for (const f of others) kitchen.add(f, key, motion(f), notes);
+    return;
+  }
+  const from = kitchen.current;
+  if (target !== null) {
+    // "pour the dressing over the cabbage": what is in use goes where that food is
+    const to = kitchen.foods.get(target)?.inside ?? kitchen.mixtureHolding(target);
+    if (from !== null && to !== null && to !== from) kitchen.transfer(from, to, verb.motion!, notes);
+    return;
+  }
+  if (foods.length === 0 && from !== null && into !== null && into !== from) kitchen.transfer(from, into, verb.motion!, notes);
+  for (const f of foods) kitchen.add(f, into ?? from!, motion(f), notes);
 }
 
 function applySegment(ctx: StepContext, verb: Verb, text: string, step: number): void {
@@ -228,16 +264,19 @@ function applySegment(ctx: StepContext, verb: Verb, text: string, step: number):
       for (const f of foods) kitchen.cut(f, verb, notes);
       break;
     case "add":
-      for (const f of foods) kitchen.add(f, place!, verb.motion!, notes);
+      addAll(kitchen, foods, verb, text, into, notes);
       break;
     case "mix":
       for (const f of foods) if (kitchen.mixtureHolding(f) !== place) kitchen.add(f, place!, motionToAdd(f), notes);
       kitchen.mix(place!, verb, notes);
       break;
-    case "cook":
-      if (into !== null) for (const f of foods) kitchen.add(f, into, motionToAdd(f), notes);
-      kitchen.cook(foods, into ?? (foods.length > 0 ? null : kitchen.current), verb, notes);
+    case "cook": {
+      // on the stove, named foods join the pan already in use
+      const pan = into ?? (verb.appliance === "stove" ? kitchen.current : null);
+      if (pan !== null) for (const f of foods) kitchen.add(f, pan, motionToAdd(f), notes);
+      kitchen.cook(foods, pan ?? (foods.length > 0 ? null : kitchen.current), verb, notes);
       break;
+    }
     case "transfer":
       if (kitchen.current !== null && into !== null && into !== kitchen.current) kitchen.transfer(kitchen.current, into, verb.motion!, notes);
       break;
