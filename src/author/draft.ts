@@ -64,7 +64,7 @@ export function verbSegments(text: string): { verb: Verb; text: string }[] {
 export function dishClassOf(title: string): number | null {
   let best: { at: number; cls: number } | null = null;
   for (const d of table.dishes) {
-    const m = new RegExp(`\\b${escape(d.word)}\\b`, "i").exec(title);
+    const m = new RegExp(`\\b${escape(d.word)}(e?s)?\\b`, "i").exec(title);
     if (m !== null && (best === null || m.index + m[0].length > best.at)) best = { at: m.index + m[0].length, cls: d.class };
   }
   return best?.cls ?? null;
