@@ -1,6 +1,6 @@
 // `npm run eval:draft`: how many of the units people wrote for 20 recipes the drafter gets right unaided
 // (tests/data/author-recipes; docs/authoring.md). `--verbose` lists the missed and extra units.
-import { evaluateDrafts, readDraftFixtures } from "../src/author/draft-eval";
+import { connectedDrafts, evaluateDrafts, readDraftFixtures } from "../src/author/draft-eval";
 
 const verbose = process.argv.includes("--verbose");
 const { results, right, expected, drafted } = evaluateDrafts(readDraftFixtures());
@@ -15,3 +15,5 @@ for (const r of results) {
   }
 }
 console.log(`\nunits right unaided: ${right} of ${expected} (${pct(right, expected)}); precision ${right} of ${drafted} drafted (${pct(right, drafted)})`);
+const connected = await connectedDrafts(results);
+console.log(`drafts whose every unit the planner retrieves from the goal node: ${connected.length} of ${results.length}`);

@@ -3,7 +3,10 @@
 
 import { readdirSync, readFileSync } from "node:fs";
 import { join } from "node:path";
-import { ROOT } from "../planner/node";
+import { FoonPlanner, toPlannerError } from "../planner/index";
+import { initPlannerFromDisk, ROOT } from "../planner/node";
+import type { CheckPlanner } from "./check";
+import { checkText } from "./check";
 import { draftRecipe, type Draft } from "./draft";
 import { normalizeSignature, scoreDraft, unitSignature, type DraftScore } from "./draft-score";
 
@@ -41,4 +44,32 @@ export function evaluateDrafts(fixtures: readonly DraftFixture[]): { results: Dr
   });
   const sum = (key: "right" | "expected" | "drafted"): number => results.reduce((n, r) => n + r.score[key], 0);
   return { results, right: sum("right"), expected: sum("expected"), drafted: sum("drafted") };
+}
+
+/** The editor's checks against the WASM module in this process: the calls the page's worker makes. */
+export function localPlanner(): CheckPlanner {
+  initPlannerFromDisk();
+  let planner: FoonPlanner | null = null;
+  return {
+    async loadFiles(files) {
+      const next = FoonPlanner.load(files);
+      planner?.free();
+      planner = next;
+      return { name: files.map((f) => f.name).join(", "), stats: next.stats(), vocabulary: next.vocabulary(), warnings: next.warnings(), embeddings: false, phases: [] };
+    },
+    async plan(request) {
+      if (planner === null) throw toPlannerError(new Error("no knowledge base is loaded"));
+      return { plan: planner.plan(request), ms: 0 };
+    },
+  };
+}
+
+/** Drafts whose every unit the planner retrieves from their goal node (the rest leave units dangling). */
+export async function connectedDrafts(results: readonly DraftResult[], planner: CheckPlanner = localPlanner()): Promise<string[]> {
+  const connected: string[] = [];
+  for (const r of results) {
+    const check = await checkText(planner, r.name, r.draft.text);
+    if (check.preview?.units.length === r.draft.units.length) connected.push(r.name);
+  }
+  return connected;
 }

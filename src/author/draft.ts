@@ -81,6 +81,8 @@ const tool = (label: string): DraftNode => ({ label, states: ["clean"], inside: 
 const appliance = (label: string): DraftNode => ({ label, states: ["on"], inside: null, contains: null, flag: 0 });
 const withState = (n: DraftNode, state: string): DraftNode => ({ ...n, states: [...n.states.filter((s) => s !== "whole" && s !== state), state] });
 const sorted = (xs: Iterable<string>): string[] => [...new Set(xs)].sort();
+/** What a mixture, or a food that others were put on, holds. */
+const holds = (n: DraftNode): string[] => n.contains ?? [n.label];
 
 /** The kitchen as the steps change it: where each ingredient is and what each container holds. */
 class Kitchen {
@@ -106,7 +108,7 @@ class Kitchen {
 
   /** Where an ingredient is now: in a mixture (its container) or as itself. */
   mixtureHolding(food: string): string | null {
-    for (const [c, m] of this.mixtures) if (m.contains?.includes(food)) return c;
+    for (const [c, m] of this.mixtures) if (holds(m).includes(food)) return c;
     return null;
   }
 
@@ -126,7 +128,7 @@ class Kitchen {
     const mixture = this.mixtures.get(into);
     if (mixture !== undefined) {
       // a topping: the mixture grows
-      const grown = { ...mixture, contains: sorted([...(mixture.contains ?? []), food]) };
+      const grown = { ...mixture, contains: sorted([...holds(mixture), food]) };
       this.emit([mixture, node], motion, [grown], notes);
       this.mixtures.set(into, grown);
       this.foods.delete(food);
@@ -147,7 +149,7 @@ class Kitchen {
     const loose = [...this.foods.values()].filter((n) => n.inside === into);
     const before = this.mixtures.get(into);
     if (loose.length === 0 && before === undefined) return;
-    const contains = sorted([...(before?.contains ?? []), ...loose.map((n) => n.label)]);
+    const contains = sorted([...(before === undefined ? [] : holds(before)), ...loose.map((n) => n.label)]);
     const out: DraftNode = { label: "mixture", states: [verb.state ?? "mixed"], inside: into, contains, flag: 1 };
     this.emit([...(before === undefined ? [holder] : [before]), ...loose], verb.motion!, [out], notes);
     for (const n of loose) this.foods.delete(n.label);
@@ -179,7 +181,7 @@ class Kitchen {
     if (node === undefined) return held;
     const key = node.inside ?? food;
     if (this.mixtures.has(key)) return key;
-    this.mixtures.set(key, { ...node, contains: [food] });
+    this.mixtures.set(key, node);
     this.foods.delete(food);
     return key;
   }
@@ -192,7 +194,7 @@ class Kitchen {
       return;
     }
     const there = this.mixtures.get(into);
-    const moved = there === undefined ? { ...mixture, inside: into } : { ...there, contains: sorted([...(there.contains ?? []), ...(mixture.contains ?? [])]) };
+    const moved = there === undefined ? { ...mixture, inside: into } : { ...there, contains: sorted([...holds(there), ...holds(mixture)]) };
     this.emit([there ?? this.container(into), mixture], motion, [moved], notes);
     this.mixtures.delete(from);
     this.mixtures.set(into, moved);
