@@ -1,6 +1,6 @@
-// The FOON editor page (author.html): draft a subgraph from recipe text, write and fix it with live
-// errors and a preview drawn by the planner's own task-tree and steps views, and use it in the planner
-// (merged into the user's knowledge base in IndexedDB). The work is saved on every keystroke.
+// The FOON editor page (author.html): draft a subgraph from recipe text, write and fix it with live errors
+// and a preview drawn by the planner's own task-tree and steps views, and use it in the planner (merged into
+// the user's knowledge base in IndexedDB). The work is saved on every keystroke.
 
 import { download, el } from "../app/dom";
 import { openKbPersistence } from "../app/kb-store";
@@ -13,13 +13,12 @@ import { bundleText } from "../planner/bundle";
 import { describeError, toPlannerError } from "../planner/errors";
 import type { KnowledgeBaseFile, Plan } from "../planner/types";
 import { WorkerPlanner } from "../worker/client";
-import type { LoadedKnowledgeBase } from "../worker/protocol";
 import { EMPTY_WORK, restoreWork, saveWork, type AuthorWork, type TextStorage } from "./autosave";
-import { authoredFile, checkText } from "./check";
+import type { CheckResult } from "./check";
 import { draftRecipe } from "./draft";
-import { mountEditor } from "./editor";
-import { BUNDLED_NAME, cleanFileName, withAuthored } from "./merge";
-import { motionsOf } from "./tokens";
+import { mountEditor, type EditorHandle } from "./editor";
+import { BUNDLED_NAME, cleanFileName } from "./merge";
+import { createAuthorSession, type AuthorSession } from "./session";
 import "../app/style.css";
 import "../app/page.css";
 import "./author.css";
@@ -47,72 +46,108 @@ async function fetchBundled(): Promise<KnowledgeBaseFile> {
 
 /** The planner query that finds the authored recipe: its dish class and the goal's ingredients. */
 function plannerLink(preview: Plan): string {
-  const query = { dish: preview.dish_class?.name ?? preview.query.type, ingredients: preview.goal.ingredients.map((object) => ({ object, state: "" })), overrides: {} };
-  return `./${queryToSearch(query)}`;
+  const ingredients = preview.goal.ingredients.map((object) => ({ object, state: "" }));
+  return `./${queryToSearch({ dish: preview.dish_class?.name ?? preview.query.type, ingredients, overrides: {} })}`;
 }
 
-function start(): void {
-  const found = document.getElementById("author");
-  const themePicker = document.getElementById("theme");
-  if (found === null || !(themePicker instanceof HTMLSelectElement)) return;
-  const host: HTMLElement = found;
-  const { storage, problem } = textStorage();
-  const restored = restoreWork(storage);
-  const work: AuthorWork = { ...(restored ?? EMPTY_WORK) };
-  const planner = new WorkerPlanner();
-  const persistence = openKbPersistence();
-  const preview = new Store();
-
-  const save = (): void => {
-    const failed = saveWork(storage, work);
-    host.dataset.saved = failed === null && problem === null ? "yes" : "no";
-    if (failed !== null) saveStatus.textContent = `Your text cannot be saved in this browser (${failed}): download it to keep it.`;
-  };
-
-  // ---- the recipe text and the drafter ----
-  const recipeInput = el("textarea", { id: "recipe-text", class: "recipe-input", rows: 12, spellcheck: "true" });
-  recipeInput.value = work.recipe;
-  const draftButton = el("button", { type: "button", class: "draft", text: "Draft FOON from this recipe" });
-  const draftSection = el(
+function draftPanel(work: AuthorWork, onDraft: (recipe: string) => void, save: () => void): HTMLElement {
+  const recipe = el("textarea", { id: "recipe-text", class: "recipe-input", rows: 12, spellcheck: "true" });
+  recipe.value = work.recipe;
+  recipe.addEventListener("input", () => {
+    work.recipe = recipe.value;
+    save();
+  });
+  const button = el("button", { type: "button", class: "draft", text: "Draft FOON from this recipe" });
+  button.addEventListener("click", () => onDraft(recipe.value));
+  return el(
     "section",
     { class: "panel panel-draft", "aria-labelledby": "draft-title" },
     el("h2", { id: "draft-title", text: "Draft from recipe text" }),
     el("p", { class: "muted small", text: "Paste a recipe: its title, the ingredient lines, then numbered steps. The draft replaces the editor's text (Undo brings it back); every guess is a “# confirm:” line." }),
     el("label", { for: "recipe-text", text: "Recipe text" }),
-    recipeInput,
-    draftButton,
+    recipe,
+    button,
   );
+}
 
-  // ---- the editor ----
+/** The preview: the planner's task-tree and steps views on a store of their own. */
+function mountPreview(results: HTMLElement, themePicker: HTMLSelectElement): { show(result: CheckResult): void } {
+  const store = new Store();
+  const status = el("p", { class: "plan-status", role: "status", text: "The preview appears once the text loads and has a goal node." });
+  const treeHost = el("section", { class: "panel panel-tree", "data-view": "tree" });
+  const stepsHost = el("section", { class: "panel panel-steps", "data-view": "steps" });
+  results.replaceChildren(status, treeHost, stepsHost);
+  const select = { select: (selection: Store["state"]["selection"]) => store.set({ selection }) };
+  mountStepsView(stepsHost, store, select);
+  let tree: TreeViewHandle | null = null;
+  void import("../app/views/tree-view").then(({ mountTreeView }) => {
+    tree = mountTreeView(treeHost, store, select);
+  });
+  bindThemePicker(themePicker, document.documentElement, () => tree?.restyle());
+  return {
+    show({ preview }) {
+      store.set({ plan: preview });
+      status.dataset.state = preview === null ? "idle" : "ready";
+      status.textContent =
+        preview === null ? "The preview appears once the text loads and has a goal node." : `Preview: ${preview.units.length} functional units from “${preview.goal.label}”, as the planner retrieves them.`;
+    },
+  };
+}
+
+/** "Use in planner": adds the checked text to the user's knowledge base and links to a plan with it. */
+function bindUse(button: HTMLButtonElement, status: HTMLElement, session: AuthorSession, editor: EditorHandle, current: () => { name: string; text: string | null; preview: Plan | null }): void {
+  button.addEventListener("click", () => {
+    const { name, text, preview } = current();
+    if (text === null) return;
+    status.dataset.state = "saving";
+    status.textContent = "Adding it to your knowledge base…";
+    session.useInPlanner(name, text).then(
+      ({ files, words }) => {
+        editor.setWords(words);
+        status.dataset.state = "saved";
+        status.replaceChildren(`Saved in your knowledge base (${files.length} files). `, preview === null ? "" : el("a", { href: plannerLink(preview), class: "plan-link", text: "Plan with it" }));
+      },
+      (e: unknown) => {
+        status.dataset.state = "error";
+        status.textContent = `Not added: ${e instanceof Error && "code" in e ? describeError(toPlannerError(e)) : String(e)}`;
+      },
+    );
+  });
+}
+
+function start(): void {
+  const host = document.getElementById("author");
+  const themePicker = document.getElementById("theme");
+  if (host === null || !(themePicker instanceof HTMLSelectElement)) return;
+  const root: HTMLElement = host;
+  const { storage, problem } = textStorage();
+  const restored = restoreWork(storage);
+  const work: AuthorWork = { ...(restored ?? EMPTY_WORK) };
+  const session = createAuthorSession({ planner: new WorkerPlanner(), persistence: openKbPersistence(), bundled: fetchBundled });
+
+  const saveStatus = el("p", { class: "save-status muted small", role: "status" });
+  const save = (): void => {
+    const failed = saveWork(storage, work);
+    if (failed !== null) saveStatus.textContent = `Your text cannot be saved in this browser (${failed}): download it to keep it.`;
+  };
+  saveStatus.textContent =
+    problem !== null
+      ? `This browser does not keep your text (${problem}): download it to keep it.`
+      : restored !== null && restored.text !== ""
+        ? "Your text was restored. Everything you type is saved in this browser."
+        : "Everything you type is saved in this browser.";
+
   const nameInput = el("input", { id: "file-name", type: "text", value: work.name, class: "file-name" });
   const undoButton = el("button", { type: "button", class: "icon", text: "Undo" });
   const redoButton = el("button", { type: "button", class: "icon", text: "Redo" });
-  const useButton = el("button", { type: "button", class: "use", text: "Use in planner", disabled: true });
   const txtButton = el("button", { type: "button", class: "icon", text: "Download .txt" });
   const bundleButton = el("button", { type: "button", class: "icon", text: "Download knowledge base (.foon)" });
+  const useButton = el("button", { type: "button", class: "use", text: "Use in planner", disabled: true });
   const useStatus = el("p", { class: "use-status", role: "status" });
-  const saveStatus = el("p", { class: "save-status muted small", role: "status" });
   const editorHost = el("div", { class: "editor-host" });
-  const editorSection = el(
-    "section",
-    { class: "panel panel-editor", "aria-labelledby": "editor-title" },
-    el("div", { class: "view-head" }, el("h2", { id: "editor-title", text: "FOON editor" }), el("div", { class: "toolbar wrap", role: "toolbar", "aria-label": "Editor" }, undoButton, redoButton, txtButton, bundleButton)),
-    el("div", { class: "field" }, el("label", { for: "file-name", text: "File name in your knowledge base" }), nameInput),
-    editorHost,
-    el("div", { class: "use-row" }, useButton, useStatus),
-    saveStatus,
-  );
+  const results = el("div", { class: "results" });
 
-  const treeHost = el("section", { class: "panel panel-tree", "data-view": "tree" });
-  const stepsHost = el("section", { class: "panel panel-steps", "data-view": "steps" });
-  const previewStatus = el("p", { class: "plan-status", role: "status" });
-  host.classList.add("foon-app");
-  host.replaceChildren(
-    el("div", { class: "author-layout" }, el("div", { class: "author-inputs" }, draftSection, editorSection), el("div", { class: "results" }, previewStatus, treeHost, stepsHost)),
-  );
-
-  let checkedText: string | null = null;
-  let lastPreview: Plan | null = null;
+  let checked: { text: string | null; preview: Plan | null } = { text: null, preview: null };
   const editor = mountEditor(editorHost, {
     initial: work.text,
     label: "FOON text (plain dialect)",
@@ -122,113 +157,58 @@ function start(): void {
       scheduleCheck();
     },
   });
-  saveStatus.textContent =
-    problem !== null ? `This browser does not keep your text (${problem}): download it to keep it.` : restored !== null && restored.text !== "" ? "Your text was restored. Everything you type is saved in this browser." : "Everything you type is saved in this browser.";
+  const preview = mountPreview(results, themePicker);
 
-  recipeInput.addEventListener("input", () => {
-    work.recipe = recipeInput.value;
-    save();
-  });
+  function scheduleCheck(): void {
+    const text = editor.text;
+    root.dataset.checked = "no";
+    const result = text.trim() === "" ? Promise.resolve({ diagnostics: [], preview: null }) : session.check(cleanFileName(work.name), text);
+    void result.then((r) => {
+      if (r === null || text !== editor.text) return; // a newer edit is being checked
+      editor.setDiagnostics(r.diagnostics);
+      preview.show(r);
+      checked = { text: r.diagnostics.some((d) => d.severity === "error") || r.preview === null ? null : text, preview: r.preview };
+      useButton.disabled = checked.text === null;
+      root.dataset.checked = "yes";
+    });
+  }
+
+  const onDraft = (recipe: string): void => {
+    const draft = draftRecipe(recipe);
+    work.name = cleanFileName(draft.fileName);
+    nameInput.value = work.name;
+    editor.replace(draft.text);
+  };
   nameInput.addEventListener("input", () => {
     work.name = nameInput.value;
     save();
     scheduleCheck();
   });
-  draftButton.addEventListener("click", () => {
-    const draft = draftRecipe(recipeInput.value);
-    work.name = cleanFileName(draft.fileName);
-    nameInput.value = work.name;
-    editor.replace(draft.text);
-  });
   undoButton.addEventListener("click", () => editor.undo());
   redoButton.addEventListener("click", () => editor.redo());
   txtButton.addEventListener("click", () => download(cleanFileName(work.name), editor.text));
-
-  // ---- the planner: one job at a time (a check loads the text alone, "use" loads the merged knowledge base) ----
-  let chain: Promise<void> = Promise.resolve();
-  const exclusive = (job: () => Promise<void>): Promise<void> => (chain = chain.then(job, job));
-  let checkSeq = 0;
-
-  function setWords(kb: LoadedKnowledgeBase, files: readonly KnowledgeBaseFile[]): void {
-    const decoder = new TextDecoder();
-    const motions = [...new Set(files.flatMap((f) => motionsOf(decoder.decode(f.bytes))))].sort();
-    editor.setWords({ labels: kb.vocabulary.labels, states: kb.vocabulary.states, motions });
-  }
-
-  async function userFiles(): Promise<KnowledgeBaseFile[] | null> {
-    return (await persistence).restore().catch(() => null);
-  }
-
-  function scheduleCheck(): void {
-    const seq = ++checkSeq;
-    host.dataset.checked = "no";
-    void exclusive(async () => {
-      if (seq !== checkSeq) return; // a newer edit will be checked instead
-      const text = editor.text;
-      const name = cleanFileName(work.name);
-      const result = text.trim() === "" ? { diagnostics: [], preview: null } : await checkText(planner, name, text);
-      if (seq !== checkSeq) return;
-      editor.setDiagnostics(result.diagnostics);
-      lastPreview = result.preview;
-      checkedText = result.diagnostics.some((d) => d.severity === "error") || result.preview === null ? null : text;
-      useButton.disabled = checkedText === null;
-      preview.set({ plan: result.preview });
-      previewStatus.dataset.state = result.preview === null ? "idle" : "ready";
-      previewStatus.textContent =
-        result.preview === null ? "The preview appears once the text loads and has a goal node." : `Preview: ${result.preview.units.length} functional units from “${result.preview.goal.label}”, as the planner retrieves them.`;
-      host.dataset.checked = "yes";
-    });
-  }
-
-  async function useInPlanner(): Promise<void> {
-    const text = checkedText;
-    if (text === null) return;
-    const file = authoredFile(cleanFileName(work.name), text);
-    useStatus.dataset.state = "saving";
-    useStatus.textContent = "Adding it to your knowledge base…";
-    try {
-      const files = await withAuthored(await userFiles(), fetchBundled, file);
-      const kb = await planner.loadFiles(files); // the merged knowledge base must load too (cycles, clashes)
-      setWords(kb, files);
-      await (await persistence).save(files);
-      useStatus.dataset.state = "saved";
-      useStatus.replaceChildren(
-        `Saved in your knowledge base (${files.length} files). `,
-        lastPreview === null ? "" : el("a", { href: plannerLink(lastPreview), class: "plan-link", text: "Plan with it" }),
-      );
-    } catch (e) {
-      useStatus.dataset.state = "error";
-      useStatus.textContent = `Not added: ${e instanceof Error && "code" in e ? describeError(toPlannerError(e)) : String(e)}`;
-    }
-    checkSeq++; // the worker now holds the merged knowledge base: check the text alone again
-    scheduleCheck();
-  }
-  useButton.addEventListener("click", () => void exclusive(useInPlanner));
   bundleButton.addEventListener("click", () => {
-    void (async () => {
-      const files = await withAuthored(await userFiles(), fetchBundled, authoredFile(cleanFileName(work.name), editor.text));
-      download("my-knowledge-base.foon", bundleText(files));
-    })();
+    void session.knowledgeBaseWith(cleanFileName(work.name), editor.text).then((files) => download("my-knowledge-base.foon", bundleText(files)));
   });
+  bindUse(useButton, useStatus, session, editor, () => ({ name: cleanFileName(work.name), ...checked }));
 
-  // the words to complete: the user's knowledge base (else the bundled one)
-  void exclusive(async () => {
-    try {
-      const files = (await userFiles()) ?? [await fetchBundled()];
-      setWords(await planner.loadFiles(files), files);
-    } catch (e) {
-      saveStatus.textContent = `The knowledge base's words could not be loaded for completion: ${String(e)}`;
-    }
-  });
+  const editorSection = el(
+    "section",
+    { class: "panel panel-editor", "aria-labelledby": "editor-title" },
+    el("div", { class: "view-head" }, el("h2", { id: "editor-title", text: "FOON editor" }), el("div", { class: "toolbar wrap", role: "toolbar", "aria-label": "Editor" }, undoButton, redoButton, txtButton, bundleButton)),
+    el("div", { class: "field" }, el("label", { for: "file-name", text: "File name in your knowledge base" }), nameInput),
+    editorHost,
+    el("div", { class: "use-row" }, useButton, useStatus),
+    saveStatus,
+  );
+  root.classList.add("foon-app");
+  root.replaceChildren(el("div", { class: "author-layout" }, el("div", { class: "author-inputs" }, draftPanel(work, onDraft, save), editorSection), results));
+
+  session.words().then(
+    (words) => editor.setWords(words),
+    (e: unknown) => (saveStatus.textContent = `The knowledge base's words could not be loaded for completion: ${String(e)}`),
+  );
   scheduleCheck();
-
-  // the planner's own views draw the preview
-  let tree: TreeViewHandle | null = null;
-  mountStepsView(stepsHost, preview, { select: (selection) => preview.set({ selection }) });
-  void import("../app/views/tree-view").then(({ mountTreeView }) => {
-    tree = mountTreeView(treeHost, preview, { select: (selection) => preview.set({ selection }) });
-  });
-  bindThemePicker(themePicker, document.documentElement, () => tree?.restyle());
 }
 
 start();
