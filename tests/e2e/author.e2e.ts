@@ -86,4 +86,33 @@ describe("the FOON editor", () => {
     expect(errors).toEqual([]);
     await context.close();
   });
+
+  it("completes the knowledge base's words, types tabs, and keeps each keystroke when the tab is closed at once", async () => {
+    const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+    const page = await context.newPage();
+    const errors = watchErrors(page);
+    await page.goto(`${inject("baseUrl")}author.html`);
+    await waitForCheck(page);
+    await text(page).focus();
+    await page.keyboard.type("# title: Quick dip");
+    await page.keyboard.press("Enter");
+    await page.keyboard.type("M");
+    await page.keyboard.press("Tab"); // a tab character, not a move of the focus
+    await page.keyboard.type("whis");
+    await page.locator(".completions li[aria-selected='true']", { hasText: "whisk" }).waitFor();
+    await page.keyboard.press("Enter");
+    expect(await text(page).inputValue()).toBe("# title: Quick dip\nM\twhisk");
+    await page.keyboard.type("\t<Assumed>");
+    const typed = await text(page).inputValue();
+    await page.close(); // at once: no wait for anything after the last keystroke
+
+    const again = await context.newPage();
+    await again.goto(`${inject("baseUrl")}author.html`);
+    await waitForCheck(again);
+    expect(await text(again).inputValue()).toBe(typed);
+    // the reader's own complaint about a motion without inputs, with its place
+    expect(await again.locator(".diagnostics li[data-severity='error']").textContent()).toMatch(/line 2, column \d+: /);
+    expect(errors).toEqual([]);
+    await context.close();
+  });
 });
