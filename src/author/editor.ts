@@ -5,7 +5,8 @@
 
 import { el, uid } from "../app/dom";
 import type { Diagnostic } from "./check";
-import { applyCompletion, completeAt, type Completion, type CompletionWords } from "./complete";
+import { applyCompletion, completeAt, type CompletionWords } from "./complete";
+import { mountCompletionList } from "./completion-list";
 import { EditHistory, type EditKind, type Snapshot } from "./history";
 import { lineKind, tokenizeLine } from "./tokens";
 
@@ -85,9 +86,11 @@ export function mountEditor(host: HTMLElement, options: EditorOptions): EditorHa
   const history = new EditHistory({ text: input.value, start: 0, end: 0 });
   let diagnostics: readonly Diagnostic[] = [];
   let words = NO_WORDS;
-  let completion: Completion | null = null;
-  let active = 0;
   let escaped = false;
+  const completion = mountCompletionList(suggestions, input, (c, option) => {
+    const next = applyCompletion(input.value, c, option);
+    edit(next.text, next.caret, "replace");
+  });
 
   function render(): void {
     const error = diagnostics.find((d) => d.severity === "error");
@@ -112,7 +115,7 @@ export function mountEditor(host: HTMLElement, options: EditorOptions): EditorHa
   function show(snapshot: Snapshot): void {
     input.value = snapshot.text;
     input.setSelectionRange(snapshot.start, snapshot.end);
-    closeCompletion();
+    completion.close();
     changed();
   }
 
@@ -123,43 +126,8 @@ export function mountEditor(host: HTMLElement, options: EditorOptions): EditorHa
     changed();
   }
 
-  function closeCompletion(): void {
-    completion = null;
-    suggestions.hidden = true;
-    input.removeAttribute("aria-activedescendant");
-  }
-
   function openCompletion(): void {
-    completion = input.selectionStart === input.selectionEnd ? completeAt(input.value, input.selectionStart, words) : null;
-    if (completion === null) return closeCompletion();
-    active = 0;
-    suggestions.replaceChildren(
-      ...completion.options.map((option, i) => {
-        const item = el("li", { id: `${listId}-${i}`, role: "option", "aria-selected": i === 0 ? "true" : "false", text: option });
-        item.addEventListener("mousedown", (event) => {
-          event.preventDefault(); // keep the focus in the textarea
-          accept(i);
-        });
-        return item;
-      }),
-    );
-    suggestions.hidden = false;
-    input.setAttribute("aria-activedescendant", `${listId}-0`);
-  }
-
-  function moveActive(by: number): void {
-    if (completion === null) return;
-    active = (active + by + completion.options.length) % completion.options.length;
-    suggestions.querySelectorAll("li").forEach((li, i) => li.setAttribute("aria-selected", i === active ? "true" : "false"));
-    input.setAttribute("aria-activedescendant", `${listId}-${active}`);
-  }
-
-  function accept(index: number): void {
-    const option = completion?.options[index];
-    if (completion === null || option === undefined) return;
-    const next = applyCompletion(input.value, completion, option);
-    closeCompletion();
-    edit(next.text, next.caret, "replace");
+    completion.show(input.selectionStart === input.selectionEnd ? completeAt(input.value, input.selectionStart, words) : null);
   }
 
   const KIND_OF_INPUT: Record<string, EditKind> = { insertText: "type", deleteContentBackward: "delete", deleteContentForward: "delete" };
@@ -177,33 +145,23 @@ export function mountEditor(host: HTMLElement, options: EditorOptions): EditorHa
     history.record({ text: input.value, start: input.selectionStart, end: input.selectionEnd }, kind);
     changed();
     if (kind === "type") openCompletion();
-    else closeCompletion();
+    else completion.close();
   });
   input.addEventListener("scroll", syncScroll);
-  input.addEventListener("blur", closeCompletion);
+  input.addEventListener("blur", () => completion.close());
   input.addEventListener("keydown", (event) => {
     const mod = event.ctrlKey || event.metaKey;
     const key = event.key.toLowerCase();
     const wasEscaped = escaped;
     escaped = event.key === "Escape";
-    if (mod && key === "z") {
+    if (completion.key(event)) return;
+    if (mod && (key === "z" || key === "y")) {
       event.preventDefault();
-      if (event.shiftKey) redo();
-      else undo();
-    } else if (mod && key === "y") {
-      event.preventDefault();
-      redo();
+      if (key === "z" && !event.shiftKey) undo();
+      else redo();
     } else if (mod && event.key === " ") {
       event.preventDefault();
       openCompletion();
-    } else if (completion !== null && (event.key === "ArrowDown" || event.key === "ArrowUp")) {
-      event.preventDefault();
-      moveActive(event.key === "ArrowDown" ? 1 : -1);
-    } else if (completion !== null && (event.key === "Enter" || event.key === "Tab")) {
-      event.preventDefault();
-      accept(active);
-    } else if (event.key === "Escape") {
-      closeCompletion();
     } else if (event.key === "Tab" && !event.shiftKey && !wasEscaped) {
       event.preventDefault();
       const { selectionStart: start, selectionEnd: end, value } = input;

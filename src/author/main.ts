@@ -16,7 +16,8 @@ import { WorkerPlanner } from "../worker/client";
 import { EMPTY_WORK, restoreWork, saveWork, type AuthorWork, type TextStorage } from "./autosave";
 import type { CheckResult } from "./check";
 import { draftRecipe } from "./draft";
-import { mountEditor, type EditorHandle } from "./editor";
+import type { CompletionWords } from "./complete";
+import { mountEditor } from "./editor";
 import { BUNDLED_NAME, cleanFileName } from "./merge";
 import { createAuthorSession, type AuthorSession } from "./session";
 import "../app/style.css";
@@ -95,7 +96,7 @@ function mountPreview(results: HTMLElement, themePicker: HTMLSelectElement): { s
 }
 
 /** "Use in planner": adds the checked text to the user's knowledge base and links to a plan with it. */
-function bindUse(button: HTMLButtonElement, status: HTMLElement, session: AuthorSession, editor: EditorHandle, current: () => { name: string; text: string | null; preview: Plan | null }): void {
+function bindUse(button: HTMLButtonElement, status: HTMLElement, session: AuthorSession, onWords: (words: CompletionWords) => void, current: () => { name: string; text: string | null; preview: Plan | null }): void {
   button.addEventListener("click", () => {
     const { name, text, preview } = current();
     if (text === null) return;
@@ -103,7 +104,7 @@ function bindUse(button: HTMLButtonElement, status: HTMLElement, session: Author
     status.textContent = "Adding it to your knowledge base…";
     session.useInPlanner(name, text).then(
       ({ files, words }) => {
-        editor.setWords(words);
+        onWords(words);
         status.dataset.state = "saved";
         status.replaceChildren(`Saved in your knowledge base (${files.length} files). `, preview === null ? "" : el("a", { href: plannerLink(preview), class: "plan-link", text: "Plan with it" }));
       },
@@ -173,8 +174,14 @@ function start(): void {
     });
   }
 
+  /** The knowledge base's labels: the drafter marks ingredients outside them. */
+  let labels: readonly string[] | undefined;
+  const setWords = (words: CompletionWords): void => {
+    labels = words.labels;
+    editor.setWords(words);
+  };
   const onDraft = (recipe: string): void => {
-    const draft = draftRecipe(recipe);
+    const draft = draftRecipe(recipe, { labels });
     work.name = cleanFileName(draft.fileName);
     nameInput.value = work.name;
     editor.replace(draft.text);
@@ -190,7 +197,7 @@ function start(): void {
   bundleButton.addEventListener("click", () => {
     void session.knowledgeBaseWith(cleanFileName(work.name), editor.text).then((files) => download("my-knowledge-base.foon", bundleText(files)));
   });
-  bindUse(useButton, useStatus, session, editor, () => ({ name: cleanFileName(work.name), ...checked }));
+  bindUse(useButton, useStatus, session, setWords, () => ({ name: cleanFileName(work.name), ...checked }));
 
   const editorSection = el(
     "section",
@@ -205,7 +212,7 @@ function start(): void {
   root.replaceChildren(el("div", { class: "author-layout" }, el("div", { class: "author-inputs" }, draftPanel(work, onDraft, save), editorSection), results));
 
   session.words().then(
-    (words) => editor.setWords(words),
+    setWords,
     (e: unknown) => (saveStatus.textContent = `The knowledge base's words could not be loaded for completion: ${String(e)}`),
   );
   scheduleCheck();
