@@ -3,7 +3,8 @@
 import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
 import type { Browser, Page } from "playwright-core";
 import { launch, screenshot, watchErrors } from "./browser";
-import { waitForPlan } from "./app-helpers";
+import { downloadOf, waitForPlan } from "./app-helpers";
+import { lowContrast, unlabelledControls } from "./app-a11y";
 
 let browser: Browser;
 beforeAll(async () => {
@@ -37,7 +38,7 @@ async function waitForCheck(page: Page): Promise<void> {
 
 describe("the FOON editor", () => {
   it("drafts a recipe, shows and clears an error, plans with it, and keeps everything across a reload", async () => {
-    const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+    const context = await browser.newContext({ viewport: { width: 1400, height: 1000 }, acceptDownloads: true });
     const page = await context.newPage();
     const errors = watchErrors(page);
     await page.goto(`${inject("baseUrl")}author.html`);
@@ -82,6 +83,11 @@ describe("the FOON editor", () => {
     expect(await text(page).inputValue()).toBe(drafted);
     expect(await page.getByRole("textbox", { name: "Recipe text" }).inputValue()).toBe(RECIPE);
     expect(await page.locator(".save-status").textContent()).toContain("restored");
+    const file = await downloadOf(page, () => page.getByRole("button", { name: "Download .txt" }).click());
+    expect([file.name, file.bytes.toString("utf8")]).toEqual(["peanut-butter-banana-toast.txt", drafted]);
+    const bundle = await downloadOf(page, () => page.getByRole("button", { name: "Download knowledge base (.foon)" }).click());
+    expect(bundle.bytes.toString("utf8")).toContain(`#@file peanut-butter-banana-toast.txt\n${drafted}`);
+    expect(bundle.bytes.toString("utf8")).toContain("#@file s01-greek_salad.txt\n"); // the bundled knowledge base's files too
     await screenshot(page, "author");
     expect(errors).toEqual([]);
     await context.close();
@@ -112,6 +118,24 @@ describe("the FOON editor", () => {
     expect(await text(again).inputValue()).toBe(typed);
     // the reader's own complaint about a motion without inputs, with its place
     expect(await again.locator(".diagnostics li[data-severity='error']").textContent()).toMatch(/line 2, column \d+: /);
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
+  it("has labelled controls and AA contrast in both themes", async () => {
+    const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+    const page = await context.newPage();
+    const errors = watchErrors(page);
+    await page.goto(`${inject("baseUrl")}author.html`);
+    await page.getByRole("textbox", { name: "Recipe text" }).fill(RECIPE);
+    await page.getByRole("button", { name: "Draft FOON from this recipe" }).click();
+    await waitForCheck(page);
+    expect(await page.evaluate(unlabelledControls)).toEqual([]);
+    const text = "h1, h2, p, label, a, button, li, input";
+    for (const theme of ["light", "dark"]) {
+      await page.getByLabel("Theme").selectOption(theme);
+      expect(await page.evaluate(lowContrast, { selector: text, min: 4.5 }), `contrast in the ${theme} theme`).toEqual([]);
+    }
     expect(errors).toEqual([]);
     await context.close();
   });
