@@ -1,8 +1,11 @@
 // Nothing typed is lost: the editor's text, its file name and the pasted recipe are written to the
 // browser's storage on every change (synchronously, so a crash or a closed tab right after a keystroke
-// still finds it) and restored when the page opens again.
+// still finds it) and restored when the page opens again. Each tab writes its own record, so two tabs
+// never overwrite each other: the newest is restored, the others are offered (the newest few are kept).
 
-export const AUTOSAVE_KEY = "foon-planner-author";
+export const AUTOSAVE_PREFIX = "foon-planner-author:";
+/** Records kept: one per tab that wrote, the oldest dropped beyond this. */
+export const AUTOSAVE_KEEP = 5;
 
 export interface AuthorWork {
   /** The FOON text being written. */
@@ -13,36 +16,71 @@ export interface AuthorWork {
   recipe: string;
 }
 
+export interface SavedWork extends AuthorWork {
+  /** ms since the epoch. */
+  savedAt: number;
+}
+
 /** The part of the Web Storage API used here (localStorage in the page, a Map in tests). */
 export interface TextStorage {
+  readonly length: number;
+  key(index: number): string | null;
   getItem(key: string): string | null;
   setItem(key: string, value: string): void;
+  removeItem(key: string): void;
+}
+
+/** Storage for the page's lifetime only: where the browser refuses localStorage (and in tests). */
+export function memoryStorage(): TextStorage {
+  const memory = new Map<string, string>();
+  return {
+    get length() {
+      return memory.size;
+    },
+    key: (i) => [...memory.keys()][i] ?? null,
+    getItem: (k) => memory.get(k) ?? null,
+    setItem: (k, v) => void memory.set(k, v),
+    removeItem: (k) => void memory.delete(k),
+  };
 }
 
 export const EMPTY_WORK: AuthorWork = { text: "", name: "my-recipe.txt", recipe: "" };
 
-function isWork(value: unknown): value is AuthorWork {
+function isSaved(value: unknown): value is SavedWork {
   if (typeof value !== "object" || value === null) return false;
   const v = value as Record<string, unknown>;
-  return typeof v.text === "string" && typeof v.name === "string" && typeof v.recipe === "string";
+  return typeof v.text === "string" && typeof v.name === "string" && typeof v.recipe === "string" && typeof v.savedAt === "number";
 }
 
-/** The saved work, or null when there is none or it is unreadable (never throws). */
-export function restoreWork(storage: TextStorage): AuthorWork | null {
+function records(storage: TextStorage): { key: string; work: SavedWork }[] {
+  const found: { key: string; work: SavedWork }[] = [];
+  for (let i = 0; i < storage.length; i++) {
+    const key = storage.key(i);
+    if (key === null || !key.startsWith(AUTOSAVE_PREFIX)) continue;
+    try {
+      const value: unknown = JSON.parse(storage.getItem(key) ?? "");
+      if (isSaved(value)) found.push({ key, work: value });
+    } catch {
+      // an unreadable record is skipped, never fatal
+    }
+  }
+  return found.sort((a, b) => b.work.savedAt - a.work.savedAt);
+}
+
+/** The saved works, newest first (never throws). */
+export function restoreWorks(storage: TextStorage): SavedWork[] {
   try {
-    const raw = storage.getItem(AUTOSAVE_KEY);
-    if (raw === null) return null;
-    const value: unknown = JSON.parse(raw);
-    return isWork(value) ? value : null;
+    return records(storage).map((r) => r.work);
   } catch {
-    return null;
+    return [];
   }
 }
 
-/** Saves the work; the reason when the browser refused (full, private mode), else null. */
-export function saveWork(storage: TextStorage, work: AuthorWork): string | null {
+/** Saves this tab's work and drops the oldest records beyond the limit; the reason when the browser refused. */
+export function saveWork(storage: TextStorage, tab: string, work: AuthorWork, now: number = Date.now()): string | null {
   try {
-    storage.setItem(AUTOSAVE_KEY, JSON.stringify(work));
+    storage.setItem(`${AUTOSAVE_PREFIX}${tab}`, JSON.stringify({ ...work, savedAt: now }));
+    for (const old of records(storage).slice(AUTOSAVE_KEEP)) storage.removeItem(old.key);
     return null;
   } catch (e) {
     return e instanceof Error ? e.message : String(e);

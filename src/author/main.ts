@@ -13,7 +13,7 @@ import { bundleText } from "../planner/bundle";
 import { describeError, toPlannerError } from "../planner/errors";
 import type { KnowledgeBaseFile, Plan } from "../planner/types";
 import { WorkerPlanner } from "../worker/client";
-import { EMPTY_WORK, restoreWork, saveWork, type AuthorWork, type TextStorage } from "./autosave";
+import { EMPTY_WORK, memoryStorage, restoreWorks, saveWork, type AuthorWork, type SavedWork, type TextStorage } from "./autosave";
 import type { CheckResult } from "./check";
 import { draftRecipe } from "./draft";
 import type { CompletionWords } from "./complete";
@@ -33,10 +33,34 @@ function textStorage(): { storage: TextStorage; problem: string | null } {
     storage.getItem("probe");
     return { storage, problem: null };
   } catch (e) {
-    const memory = new Map<string, string>();
-    const storage: TextStorage = { getItem: (k) => memory.get(k) ?? null, setItem: (k, v) => void memory.set(k, v) };
-    return { storage, problem: e instanceof Error ? e.message : String(e) };
+    return { storage: memoryStorage(), problem: e instanceof Error ? e.message : String(e) };
   }
+}
+
+/** This tab's name for its autosave record: kept across reloads of the tab, new in a new tab. */
+function tabId(): string {
+  const key = "foon-planner-author-tab";
+  try {
+    const known = sessionStorage.getItem(key);
+    if (known !== null) return known;
+    const id = crypto.randomUUID();
+    sessionStorage.setItem(key, id);
+    return id;
+  } catch {
+    return crypto.randomUUID();
+  }
+}
+
+/** Texts other tabs saved, offered to open (the editor's undo brings the current text back). */
+function otherWorks(works: readonly SavedWork[], open: (work: SavedWork) => void): HTMLElement {
+  const list = el("ul", { class: "other-works" });
+  for (const w of works) {
+    const title = /^# title:\s*(.+)$/m.exec(w.text)?.[1] ?? w.name;
+    const button = el("button", { type: "button", class: "icon", text: "Open" });
+    button.addEventListener("click", () => open(w));
+    list.append(el("li", {}, `${title} (${w.name}, saved ${new Date(w.savedAt).toLocaleString()}) `, button));
+  }
+  return el("details", { class: "other-works-box", hidden: works.length === 0 }, el("summary", { text: `Other texts saved in this browser (${works.length})` }), list);
 }
 
 async function fetchBundled(): Promise<KnowledgeBaseFile> {
@@ -122,19 +146,20 @@ function start(): void {
   if (host === null || !(themePicker instanceof HTMLSelectElement)) return;
   const root: HTMLElement = host;
   const { storage, problem } = textStorage();
-  const restored = restoreWork(storage);
-  const work: AuthorWork = { ...(restored ?? EMPTY_WORK) };
+  const tab = tabId();
+  const [restored, ...older] = restoreWorks(storage);
+  const work: AuthorWork = restored === undefined ? { ...EMPTY_WORK } : { text: restored.text, name: restored.name, recipe: restored.recipe };
   const session = createAuthorSession({ planner: new WorkerPlanner(), persistence: openKbPersistence(), bundled: fetchBundled });
 
   const saveStatus = el("p", { class: "save-status muted small", role: "status" });
   const save = (): void => {
-    const failed = saveWork(storage, work);
+    const failed = saveWork(storage, tab, work);
     if (failed !== null) saveStatus.textContent = `Your text cannot be saved in this browser (${failed}): download it to keep it.`;
   };
   saveStatus.textContent =
     problem !== null
       ? `This browser does not keep your text (${problem}): download it to keep it.`
-      : restored !== null && restored.text !== ""
+      : restored !== undefined && restored.text !== ""
         ? "Your text was restored. Everything you type is saved in this browser."
         : "Everything you type is saved in this browser.";
 
@@ -179,6 +204,7 @@ function start(): void {
   const setWords = (words: CompletionWords): void => {
     labels = words.labels;
     editor.setWords(words);
+    root.dataset.words = "ready";
   };
   const onDraft = (recipe: string): void => {
     const draft = draftRecipe(recipe, { labels });
@@ -207,6 +233,14 @@ function start(): void {
     editorHost,
     el("div", { class: "use-row" }, useButton, useStatus),
     saveStatus,
+    otherWorks(
+      older.filter((w) => w.text.trim() !== "" && w.text !== work.text),
+      (w) => {
+        work.name = w.name;
+        nameInput.value = w.name;
+        editor.replace(w.text);
+      },
+    ),
   );
   root.classList.add("foon-app");
   root.replaceChildren(el("div", { class: "author-layout" }, el("div", { class: "author-inputs" }, draftPanel(work, onDraft, save), editorSection), results));

@@ -98,7 +98,7 @@ describe("the FOON editor", () => {
     const page = await context.newPage();
     const errors = watchErrors(page);
     await page.goto(`${inject("baseUrl")}author.html`);
-    await waitForCheck(page);
+    await page.locator("#author[data-words='ready']").waitFor(); // the knowledge base's words are loaded
     await text(page).focus();
     await page.keyboard.type("# title: Quick dip");
     await page.keyboard.press("Enter");
@@ -136,6 +136,36 @@ describe("the FOON editor", () => {
       await page.getByLabel("Theme").selectOption(theme);
       expect(await page.evaluate(lowContrast, { selector: text, min: 4.5 }), `contrast in the ${theme} theme`).toEqual([]);
     }
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
+  it("never lets two tabs overwrite each other's text: the newest is restored, the other offered", async () => {
+    const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+    const [a, b] = [await context.newPage(), await context.newPage()];
+    const errors = [...watchErrors(a), ...watchErrors(b)];
+    for (const page of [a, b]) {
+      await page.goto(`${inject("baseUrl")}author.html`);
+      await waitForCheck(page);
+    }
+    for (const [page, title] of [[a, "Tab A"], [b, "Tab B"]] as const) {
+      await text(page).focus();
+      await page.keyboard.type(`# title: ${title}`);
+    }
+    await a.keyboard.type(" again"); // A typed last
+    await a.close();
+    await b.close();
+
+    const page = await context.newPage();
+    await page.goto(`${inject("baseUrl")}author.html`);
+    await waitForCheck(page);
+    expect(await text(page).inputValue()).toBe("# title: Tab A again");
+    await page.getByText("Other texts saved in this browser (1)").click();
+    expect(await page.locator(".other-works li").textContent()).toContain("Tab B");
+    await page.locator(".other-works li").getByRole("button", { name: "Open" }).click();
+    expect(await text(page).inputValue()).toBe("# title: Tab B");
+    await page.getByRole("button", { name: "Undo" }).click();
+    expect(await text(page).inputValue()).toBe("# title: Tab A again");
     expect(errors).toEqual([]);
     await context.close();
   });

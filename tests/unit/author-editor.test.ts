@@ -1,7 +1,7 @@
 // The FOON editor's logic without a browser: undo/redo, autosave and restore, completion, line colouring,
 // and how "use in planner" merges the authored file into the user's knowledge base.
 import { describe, expect, it } from "vitest";
-import { AUTOSAVE_KEY, restoreWork, saveWork, type TextStorage } from "../../src/author/autosave";
+import { AUTOSAVE_KEEP, AUTOSAVE_PREFIX, memoryStorage, restoreWorks, saveWork } from "../../src/author/autosave";
 import { applyCompletion, completeAt } from "../../src/author/complete";
 import { EditHistory } from "../../src/author/history";
 import { BUNDLED_NAME, cleanFileName, withAuthored } from "../../src/author/merge";
@@ -40,32 +40,37 @@ describe("undo and redo", () => {
   });
 });
 
-function memoryStorage(): TextStorage & { map: Map<string, string> } {
-  const map = new Map<string, string>();
-  return { map, getItem: (k) => map.get(k) ?? null, setItem: (k, v) => void map.set(k, v) };
-}
-
 describe("autosave", () => {
+  const work = { text: "O\ttomato\t1\n", name: "salsa.txt", recipe: "Salsa\n1. Dice the tomato." };
+
   it("restores exactly what was saved", () => {
     const storage = memoryStorage();
-    const work = { text: "O\ttomato\t1\n", name: "salsa.txt", recipe: "Salsa\n1. Dice the tomato." };
-    expect(saveWork(storage, work)).toBeNull();
-    expect(restoreWork(storage)).toEqual(work);
+    expect(saveWork(storage, "tab-1", work, 1000)).toBeNull();
+    expect(restoreWorks(storage)).toEqual([{ ...work, savedAt: 1000 }]);
   });
 
-  it("says why when the browser refuses, and restores nothing from unreadable data", () => {
-    const full: TextStorage = {
-      getItem: () => null,
-      setItem: () => {
-        throw new Error("QuotaExceededError");
-      },
-    };
-    expect(saveWork(full, { text: "x", name: "x.txt", recipe: "" })).toContain("QuotaExceededError");
+  it("keeps each tab's work apart, newest first, and drops the oldest beyond the limit", () => {
     const storage = memoryStorage();
-    storage.map.set(AUTOSAVE_KEY, "{not json");
-    expect(restoreWork(storage)).toBeNull();
-    storage.map.set(AUTOSAVE_KEY, JSON.stringify({ text: 3 }));
-    expect(restoreWork(storage)).toBeNull();
+    saveWork(storage, "a", { ...work, text: "from a" }, 1);
+    saveWork(storage, "b", { ...work, text: "from b" }, 2);
+    saveWork(storage, "a", { ...work, text: "from a, later" }, 3);
+    expect(restoreWorks(storage).map((w) => w.text)).toEqual(["from a, later", "from b"]);
+    for (let i = 0; i < AUTOSAVE_KEEP + 2; i++) saveWork(storage, `tab-${i}`, { ...work, text: `text ${i}` }, 10 + i);
+    const kept = restoreWorks(storage);
+    expect(kept).toHaveLength(AUTOSAVE_KEEP);
+    expect(kept[0]!.text).toBe(`text ${AUTOSAVE_KEEP + 1}`);
+  });
+
+  it("says why when the browser refuses, and skips unreadable records", () => {
+    const full = { ...memoryStorage(), setItem: () => {
+      throw new Error("QuotaExceededError");
+    } };
+    expect(saveWork(full, "a", work)).toContain("QuotaExceededError");
+    const storage = memoryStorage();
+    storage.setItem(`${AUTOSAVE_PREFIX}x`, "{not json");
+    storage.setItem(`${AUTOSAVE_PREFIX}y`, JSON.stringify({ text: 3 }));
+    saveWork(storage, "z", work, 5);
+    expect(restoreWorks(storage)).toEqual([{ ...work, savedAt: 5 }]);
   });
 });
 
