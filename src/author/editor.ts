@@ -28,6 +28,27 @@ export interface EditorOptions {
 
 const NO_WORDS: CompletionWords = { labels: [], states: [], motions: [] };
 
+/** Typing and deleting merge into one undo step per word; anything else (paste, drop, cut) is its own. */
+const KIND_OF_INPUT: Record<string, EditKind> = { insertText: "type", deleteContentBackward: "delete", deleteContentForward: "delete" };
+
+const count = (ds: readonly Diagnostic[], s: Diagnostic["severity"]): number => ds.filter((d) => d.severity === s).length;
+
+/** The list under the editor: each diagnostic a button that moves the caret to its place. */
+function renderDiagnostics(host: HTMLElement, summary: HTMLElement, list: HTMLElement, next: readonly Diagnostic[], goTo: (d: Diagnostic) => void): void {
+  host.dataset.errors = String(count(next, "error"));
+  host.dataset.warnings = String(count(next, "warning"));
+  host.dataset.confirm = String(count(next, "confirm"));
+  summary.textContent =
+    next.length === 0 ? "No errors or warnings." : `${count(next, "error")} error(s), ${count(next, "warning")} warning(s), ${count(next, "confirm")} guess(es) to confirm.`;
+  list.replaceChildren(
+    ...next.map((d) => {
+      const button = el("button", { type: "button", class: "diagnostic", text: `${where(d)}${d.reason}` });
+      button.addEventListener("click", () => goTo(d));
+      return el("li", { "data-severity": d.severity }, el("span", { class: "severity", text: d.severity === "confirm" ? "to confirm" : d.severity }), button);
+    }),
+  );
+}
+
 function where(d: Diagnostic): string {
   if (d.line === null) return "";
   return d.column === null ? `line ${d.line}: ` : `line ${d.line}, column ${d.column}: `;
@@ -130,8 +151,6 @@ export function mountEditor(host: HTMLElement, options: EditorOptions): EditorHa
     completion.show(input.selectionStart === input.selectionEnd ? completeAt(input.value, input.selectionStart, words) : null);
   }
 
-  const KIND_OF_INPUT: Record<string, EditKind> = { insertText: "type", deleteContentBackward: "delete", deleteContentForward: "delete" };
-
   input.addEventListener("beforeinput", (event) => {
     // the browser's own undo knows nothing of the page's edits: use the editor's
     if (event.inputType === "historyUndo" || event.inputType === "historyRedo") {
@@ -203,19 +222,7 @@ export function mountEditor(host: HTMLElement, options: EditorOptions): EditorHa
     redo,
     setDiagnostics(next) {
       diagnostics = next;
-      const count = (s: Diagnostic["severity"]): number => next.filter((d) => d.severity === s).length;
-      host.dataset.errors = String(count("error"));
-      host.dataset.warnings = String(count("warning"));
-      host.dataset.confirm = String(count("confirm"));
-      summary.textContent =
-        next.length === 0 ? "No errors or warnings." : `${count("error")} error(s), ${count("warning")} warning(s), ${count("confirm")} guess(es) to confirm.`;
-      problems.replaceChildren(
-        ...next.map((d) => {
-          const button = el("button", { type: "button", class: "diagnostic", text: `${where(d)}${d.reason}` });
-          button.addEventListener("click", () => goTo(d));
-          return el("li", { "data-severity": d.severity }, el("span", { class: "severity", text: d.severity === "confirm" ? "to confirm" : d.severity }), button);
-        }),
-      );
+      renderDiagnostics(host, summary, problems, next, goTo);
       render();
     },
     setWords(next) {
