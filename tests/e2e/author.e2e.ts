@@ -169,4 +169,21 @@ describe("the FOON editor", () => {
     expect(errors).toEqual([]);
     await context.close();
   });
+
+  it("shows a hostile recipe and FOON text as text: no element is made of it, no script runs", async () => {
+    const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+    const page = await context.newPage();
+    const errors = watchErrors(page);
+    await page.goto(`${inject("baseUrl")}author.html`);
+    const hostile = "<img src=x onerror=\"window.xss=1\">";
+    await page.getByRole("textbox", { name: "Recipe text" }).fill(`${hostile} salad\n- 1 ${hostile}\n1. Dice the ${hostile}.\n2. Frobnicate ${hostile}.`);
+    await page.getByRole("button", { name: "Draft FOON from this recipe" }).click();
+    await waitForCheck(page);
+    expect(await text(page).inputValue()).toContain(`# title: ${hostile} salad`);
+    expect(await page.locator(".diagnostics li[data-severity='confirm']").allTextContents()).toContainEqual(expect.stringContaining(hostile));
+    expect(await page.locator("#author img").count()).toBe(0);
+    expect(await page.evaluate(() => (window as unknown as { xss?: number }).xss)).toBeUndefined();
+    expect(errors).toEqual([]);
+    await context.close();
+  });
 });
