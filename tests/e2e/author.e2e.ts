@@ -64,9 +64,21 @@ describe("the FOON editor", () => {
     expect(shown).toContain(`line ${at + 1}, column 10`);
     expect(await page.getByRole("button", { name: "Use in planner" }).isDisabled()).toBe(true);
 
-    // fixed by undo, the editor's own (the page set the text, so the browser's undo would not know it)
-    await text(page).focus();
+    // the error's place, clicked, puts the caret there: the user types the fix
+    await page.locator(".diagnostics li[data-severity='error'] button").click();
+    const caret = await text(page).evaluate((t: HTMLTextAreaElement) => t.selectionStart);
+    expect(caret).toBe(lines.slice(0, at).join("\n").length + 1 + "O\tbanana\t".length);
+    await page.keyboard.press("Shift+End");
+    await page.keyboard.type("1");
+    await waitForCheck(page);
+    expect(await editor(page).getAttribute("data-errors")).toBe("0");
+    expect(await text(page).inputValue()).toBe(drafted);
+
+    // undo and redo, the editor's own (the page set the text, so the browser's undo would not know it)
     await page.keyboard.press("Control+z");
+    await waitForCheck(page);
+    expect(await editor(page).getAttribute("data-errors")).toBe("1");
+    await page.keyboard.press("Control+Shift+z");
     await waitForCheck(page);
     expect(await editor(page).getAttribute("data-errors")).toBe("0");
     expect(await text(page).inputValue()).toBe(drafted);
