@@ -188,6 +188,7 @@ function start(): void {
   function scheduleCheck(): void {
     const text = editor.text;
     root.dataset.checked = "no";
+    useButton.disabled = true; // until this text is checked
     const result = text.trim() === "" ? Promise.resolve({ diagnostics: [], preview: null }) : session.check(cleanFileName(work.name), text);
     void result.then((r) => {
       if (r === null || text !== editor.text) return; // a newer edit is being checked
