@@ -140,6 +140,51 @@ function bindUse(button: HTMLButtonElement, status: HTMLElement, session: Author
   });
 }
 
+interface EditorControls {
+  nameInput: HTMLInputElement;
+  undoButton: HTMLButtonElement;
+  redoButton: HTMLButtonElement;
+  txtButton: HTMLButtonElement;
+  bundleButton: HTMLButtonElement;
+  useButton: HTMLButtonElement;
+  useStatus: HTMLElement;
+}
+
+function editorControls(name: string): EditorControls {
+  return {
+    nameInput: el("input", { id: "file-name", type: "text", value: name, class: "file-name" }),
+    undoButton: el("button", { type: "button", class: "icon", text: "Undo" }),
+    redoButton: el("button", { type: "button", class: "icon", text: "Redo" }),
+    txtButton: el("button", { type: "button", class: "icon", text: "Download .txt" }),
+    bundleButton: el("button", { type: "button", class: "icon", text: "Download knowledge base (.foon)" }),
+    useButton: el("button", { type: "button", class: "use", text: "Use in planner", disabled: true }),
+    useStatus: el("p", { class: "use-status", role: "status" }),
+  };
+}
+
+function editorSection(ui: EditorControls, editorHost: HTMLElement, saveStatus: HTMLElement, others: HTMLElement): HTMLElement {
+  return el(
+    "section",
+    { class: "panel panel-editor", "aria-labelledby": "editor-title" },
+    el(
+      "div",
+      { class: "view-head" },
+      el("h2", { id: "editor-title", text: "FOON editor" }),
+      el("div", { class: "toolbar wrap", role: "toolbar", "aria-label": "Editor" }, ui.undoButton, ui.redoButton, ui.txtButton, ui.bundleButton),
+    ),
+    el("div", { class: "field" }, el("label", { for: "file-name", text: "File name in your knowledge base" }), ui.nameInput),
+    editorHost,
+    el("div", { class: "use-row" }, ui.useButton, ui.useStatus),
+    saveStatus,
+    others,
+  );
+}
+
+function saveStatusText(problem: string | null, restored: SavedWork | undefined): string {
+  if (problem !== null) return `This browser does not keep your text (${problem}): download it to keep it.`;
+  return restored !== undefined && restored.text !== "" ? "Your text was restored. Everything you type is saved in this browser." : "Everything you type is saved in this browser.";
+}
+
 function start(): void {
   const host = document.getElementById("author");
   const themePicker = document.getElementById("theme");
@@ -156,20 +201,10 @@ function start(): void {
     const failed = saveWork(storage, tab, work);
     if (failed !== null) saveStatus.textContent = `Your text cannot be saved in this browser (${failed}): download it to keep it.`;
   };
-  saveStatus.textContent =
-    problem !== null
-      ? `This browser does not keep your text (${problem}): download it to keep it.`
-      : restored !== undefined && restored.text !== ""
-        ? "Your text was restored. Everything you type is saved in this browser."
-        : "Everything you type is saved in this browser.";
+  saveStatus.textContent = saveStatusText(problem, restored);
 
-  const nameInput = el("input", { id: "file-name", type: "text", value: work.name, class: "file-name" });
-  const undoButton = el("button", { type: "button", class: "icon", text: "Undo" });
-  const redoButton = el("button", { type: "button", class: "icon", text: "Redo" });
-  const txtButton = el("button", { type: "button", class: "icon", text: "Download .txt" });
-  const bundleButton = el("button", { type: "button", class: "icon", text: "Download knowledge base (.foon)" });
-  const useButton = el("button", { type: "button", class: "use", text: "Use in planner", disabled: true });
-  const useStatus = el("p", { class: "use-status", role: "status" });
+  const ui = editorControls(work.name);
+  const { nameInput, useButton } = ui;
   const editorHost = el("div", { class: "editor-host" });
   const results = el("div", { class: "results" });
 
@@ -218,33 +253,24 @@ function start(): void {
     save();
     scheduleCheck();
   });
-  undoButton.addEventListener("click", () => editor.undo());
-  redoButton.addEventListener("click", () => editor.redo());
-  txtButton.addEventListener("click", () => download(cleanFileName(work.name), editor.text));
-  bundleButton.addEventListener("click", () => {
+  ui.undoButton.addEventListener("click", () => editor.undo());
+  ui.redoButton.addEventListener("click", () => editor.redo());
+  ui.txtButton.addEventListener("click", () => download(cleanFileName(work.name), editor.text));
+  ui.bundleButton.addEventListener("click", () => {
     void session.knowledgeBaseWith(cleanFileName(work.name), editor.text).then((files) => download("my-knowledge-base.foon", bundleText(files)));
   });
-  bindUse(useButton, useStatus, session, setWords, () => ({ name: cleanFileName(work.name), ...checked }));
+  bindUse(useButton, ui.useStatus, session, setWords, () => ({ name: cleanFileName(work.name), ...checked }));
 
-  const editorSection = el(
-    "section",
-    { class: "panel panel-editor", "aria-labelledby": "editor-title" },
-    el("div", { class: "view-head" }, el("h2", { id: "editor-title", text: "FOON editor" }), el("div", { class: "toolbar wrap", role: "toolbar", "aria-label": "Editor" }, undoButton, redoButton, txtButton, bundleButton)),
-    el("div", { class: "field" }, el("label", { for: "file-name", text: "File name in your knowledge base" }), nameInput),
-    editorHost,
-    el("div", { class: "use-row" }, useButton, useStatus),
-    saveStatus,
-    otherWorks(
-      older.filter((w) => w.text.trim() !== "" && w.text !== work.text),
-      (w) => {
-        work.name = w.name;
-        nameInput.value = w.name;
-        editor.replace(w.text);
-      },
-    ),
+  const others = otherWorks(
+    older.filter((w) => w.text.trim() !== "" && w.text !== work.text),
+    (w) => {
+      work.name = w.name;
+      nameInput.value = w.name;
+      editor.replace(w.text);
+    },
   );
   root.classList.add("foon-app");
-  root.replaceChildren(el("div", { class: "author-layout" }, el("div", { class: "author-inputs" }, draftPanel(work, onDraft, save), editorSection), results));
+  root.replaceChildren(el("div", { class: "author-layout" }, el("div", { class: "author-inputs" }, draftPanel(work, onDraft, save), editorSection(ui, editorHost, saveStatus, others)), results));
 
   session.words().then(
     setWords,
