@@ -24,6 +24,7 @@ export default defineConfig({
         main: here("src/index.html"),
         embed: here("src/embed.html"),
         workbench: here("src/workbench.html"),
+        author: here("src/author.html"),
         "widget-page": here("src/widget.html"),
         // the embeddable widget keeps a stable name at the top, for pages on other hosts to link to
         "foon-planner": here("src/widget/index.ts"),

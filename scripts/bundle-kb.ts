@@ -8,25 +8,14 @@ import { mkdirSync, writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { describeError, FoonPlanner } from "../src/planner/index";
 import { initPlannerFromDisk, readKnowledgeBase, ROOT, STARTER_KB_DIR } from "../src/planner/node";
-import type { KnowledgeBaseFile } from "../src/planner/types";
+import { bundleText } from "../src/planner/bundle";
 
 const OUT = join(ROOT, "public/kb/default.foon");
-const FILE_MARK = "#@file ";
 
 function sources(): string[] {
   const custom = process.env.FOON_DIR?.split(":").filter((p) => p !== "").map((p) => resolve(p));
   if (custom === undefined || custom.length === 0) return [STARTER_KB_DIR];
   return process.env.FOON_MERGE === "1" ? [STARTER_KB_DIR, ...custom] : custom;
-}
-
-function bundle(files: KnowledgeBaseFile[]): string {
-  const decoder = new TextDecoder("utf-8", { fatal: true });
-  return files
-    .map((f) => {
-      const text = decoder.decode(f.bytes);
-      return `${FILE_MARK}${f.name}\n${text}${text.endsWith("\n") ? "" : "\n"}`;
-    })
-    .join("");
 }
 
 const files = sources().flatMap((dir) => readKnowledgeBase(dir));
@@ -36,5 +25,5 @@ for (const w of planner.warnings()) console.warn(`warning: ${describeError(w)}`)
 const stats = planner.stats();
 planner.free();
 mkdirSync(join(ROOT, "public/kb"), { recursive: true });
-writeFileSync(OUT, bundle(files));
+writeFileSync(OUT, bundleText(files));
 console.log(`bundled ${files.length} files (${stats.units} units, ${stats.goal_nodes} goal nodes) from ${sources().join(", ")} into ${OUT}`);

@@ -33,6 +33,9 @@ npm run --silent build:kb
 step "vitest (unit tests on the real WASM build)"
 npx vitest run
 
+step "recipe drafter: units right unaided on the project's recipes (docs/authoring.md)"
+npm run --silent eval:draft | grep -E '^(## |units right|drafts whose)'
+
 step "evaluation: dev queries with FOON-111 (fails on duplicated, out-of-order or dead units)"
 SHARED="${FOON_SHARED:-../shared}"
 npm run --silent eval -- --kb "$SHARED/foon/subgraphs-plain" --queries "$SHARED/recipes/dev" --both --quiet --out test-results/eval

@@ -197,7 +197,7 @@ describe("markup in FOON files and queries is text everywhere", () => {
   });
 
   it("serves every page with a Content-Security-Policy that blocks inline script", async () => {
-    for (const name of ["index.html", "workbench.html", "embed.html"]) {
+    for (const name of ["index.html", "workbench.html", "embed.html", "author.html"]) {
       const html = readFileSync(join(ROOT, process.env.E2E_DIST ?? "dist", name), "utf8");
       const policy = /http-equiv="Content-Security-Policy"\s+content="([^"]+)"/.exec(html)?.[1] ?? "";
       const scriptSrc = /(?:^|;)\s*script-src ([^;]*)/.exec(policy)?.[1] ?? "";
