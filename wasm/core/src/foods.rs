@@ -547,4 +547,21 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn rice_and_dry_pasta_are_cooked_only_in_water() {
+        assert!(!cooks_food("rice", "cook and stir"));
+        assert!(!cooks_food("spaghetti", "bake"));
+        assert!(cooks_food("rice", "boil") && cooks_food("rice", "cook"));
+        assert!(cooks_food("chicken", "cook and stir"));
+    }
+
+    #[test]
+    fn a_sauce_or_powder_word_reads_the_name_as_that_product() {
+        assert_eq!(reading("fish", "sauce"), Some("fish sauce"));
+        assert_eq!(reading("oyster", "thick sauce"), Some("oyster sauce"));
+        assert_eq!(reading("curry", "ground"), Some("curry powder"));
+        assert_eq!(reading("sprout", "bean"), Some("bean sprout"));
+        assert_eq!(reading("fish", "fillet"), None);
+    }
 }

@@ -1164,3 +1164,178 @@ S\tcontains\t{peach,strawberry}
     );
     assert_eq!(line_motions(&p, "strawberry"), ["blend"]);
 }
+
+/// The states of `food`'s progress line, as the plan shows them.
+fn line_states<'p>(p: &'p Plan, food: &str) -> Vec<&'p str> {
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == food)
+        .unwrap_or_else(|| panic!("no line for {food}: {:#?}", p.progress_lines));
+    line.state
+        .iter()
+        .map(|s| s.physical_state.as_str())
+        .collect()
+}
+
+#[test]
+fn a_stone_comes_out_once_the_fruit_is_halved_not_after_it_is_sliced() {
+    // a peach halved, then sliced, into a shake: pitted between the two cuts; cherries sliced whole
+    // are pitted before the knife touches them
+    let shake = "//
+O\tpeach\t1
+S\twhole
+O\tknife\t1
+M\tslice\t<Assumed>
+O\tpeach\t1
+S\thalved
+//
+O\tpeach\t1
+S\thalved
+O\tknife\t1
+M\tslice\t<Assumed>
+O\tpeach\t1
+S\tsliced
+//
+O\tcherry\t1
+S\twhole
+O\tknife\t1
+M\tslice\t<Assumed>
+O\tcherry\t1
+S\tsliced
+//
+O\tpeach\t1
+S\tsliced
+O\tcherry\t1
+S\tsliced
+O\tblender\t0
+S\ton
+M\tblend\t<Assumed>
+O\tpeach shake\t1\t9
+S\tcontains\t{cherry,peach}
+//
+";
+    let ask = query("drinks", &[("peach", "sliced"), ("cherry", "sliced")]);
+    let p = plan_of(&[("shake.txt", shake)], &ExactMatch, &ask);
+    assert_eq!(
+        line_motions(&p, "peach"),
+        ["slice", "pit", "slice", "blend"],
+        "{:#?}",
+        p.units
+    );
+    assert_eq!(line_motions(&p, "cherry"), ["pit", "slice", "blend"]);
+    assert_eq!(kinds(&p), []);
+}
+
+#[test]
+fn an_egg_cracked_into_white_and_yolk_is_shown_cracked_not_in_its_white() {
+    let p = plan_of(
+        &[("omelette.txt", CRACKED_INTO_BOWL)],
+        &ExactMatch,
+        &query("omelette", &[("egg", "whole")]),
+    );
+    let states = line_states(&p, "egg");
+    assert_eq!(states[1], "cracked", "{states:?}");
+    assert!(
+        states.iter().all(|s| !s.contains("egg white")),
+        "{states:?}"
+    );
+}
+
+#[test]
+fn a_block_of_cheese_the_tree_pours_in_whole_is_grated_first() {
+    // asked in the recipe data's coarse word "creamy": the cook grates the block before it goes in
+    let omelette = "//
+O\tegg\t1
+S\tbeaten
+O\tcheddar\t1
+S\tblock
+O\tfrying pan\t0
+S\thot
+M\tcook\t<Assumed>
+O\tomelette\t1\t17
+S\tcontains\t{cheddar,egg}
+S\tin\t[frying pan]
+//
+O\tcheddar\t1
+S\tblock
+O\tgrater\t0
+M\tgrate\t<Assumed>
+O\tcheddar\t1
+S\tgrated
+//
+";
+    let ask = query("omelette", &[("egg", "beaten"), ("cheddar", "creamy")]);
+    let p = plan_of(&[("omelette.txt", omelette)], &ExactMatch, &ask);
+    assert_eq!(
+        line_motions(&p, "cheddar"),
+        ["grate", "cook"],
+        "{:#?}",
+        p.units
+    );
+    assert_eq!(line_states(&p, "cheddar")[1], "grated");
+}
+
+#[test]
+fn uncooked_rice_joining_a_stir_fry_is_boiled_first_for_frying_does_not_cook_it() {
+    let p = plan_of(
+        &[("fried_rice.txt", EGG_FRIED_RICE)],
+        &ExactMatch,
+        &query(
+            "rice",
+            &[("egg", "cracked"), ("oil", "liquid"), ("rice", "grain")],
+        ),
+    );
+    let motions = line_motions(&p, "rice");
+    let boiled = motions.iter().position(|m| *m == "boil");
+    let fried = motions.iter().position(|m| *m == "cook and stir");
+    assert!(
+        boiled.is_some() && boiled < fried,
+        "{motions:?} {:#?}",
+        p.units
+    );
+    assert_eq!(kinds(&p), []);
+}
+
+#[test]
+fn an_ingredient_starts_from_its_shaker_not_from_the_pan_a_recipe_had_it_in() {
+    // FOON has ground pepper both in a frying pan it was sprinkled into and in its shaker
+    let elsewhere = "//
+O\tblack pepper\t1
+S\tground
+S\tin\t[frying pan]
+O\tegg\t1
+S\tbeaten
+S\tin\t[frying pan]
+O\tfrying pan\t0
+S\thot
+M\tcook\t<Assumed>
+O\tscrambled egg\t1\t17
+S\tcontains\t{black pepper,egg}
+//
+O\tblack pepper\t1
+S\tground
+S\tin\t[shaker]
+O\tsteak\t1
+S\tcooked
+M\tsprinkle\t<Assumed>
+O\tsteak\t1
+S\tcooked
+S\tpeppered
+//
+";
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("other.txt", elsewhere)],
+        &ExactMatch,
+        &query(
+            "salad",
+            &[("lettuce", "chopped"), ("black pepper", "ground")],
+        ),
+    );
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "black pepper")
+        .unwrap();
+    assert_eq!(line.state[0].location, "in shaker", "{line:?}");
+}
