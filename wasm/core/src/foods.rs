@@ -121,7 +121,8 @@ struct Care {
     prepared: Option<String>,
     /// The preparation comes before anything else is done to the food.
     first: bool,
-    /// Cooked only in water (boiled, simmered, steamed): rice is not cooked by stir-frying it raw.
+    /// Cooked only with water (boiled, simmered, steamed, baked covered): rice is not cooked by
+    /// stir-frying it raw.
     wet: bool,
     /// What a cook takes off it before it is used or cut (an onion's skin, a cherry's stone).
     trims: Vec<&'static Trim>,
@@ -281,8 +282,8 @@ pub fn cooks(motion: &str) -> bool {
     motion_words(motion).any(|w| heat_words().iter().any(|(h, _)| *h == w))
 }
 
-/// Whether `motion` cooks `food`: any heat does, but a food cooked only in water (rice, dry pasta) is
-/// cooked by a motion in water or by a plain "cook" (FOON's pot of rice), not fried or baked raw.
+/// Whether `motion` cooks `food`: any heat does, but a food cooked only with water (rice, dry pasta) is
+/// cooked by a motion with water or by a plain "cook" (FOON's pot of rice), not fried raw.
 pub fn cooks_food(food: &str, motion: &str) -> bool {
     if !care_of(food).is_some_and(|c| c.wet) {
         return cooks(motion);
@@ -551,7 +552,7 @@ mod tests {
     #[test]
     fn rice_and_dry_pasta_are_cooked_only_in_water() {
         assert!(!cooks_food("rice", "cook and stir"));
-        assert!(!cooks_food("spaghetti", "bake"));
+        assert!(!cooks_food("spaghetti", "fry"));
         assert!(cooks_food("rice", "boil") && cooks_food("rice", "cook"));
         assert!(cooks_food("chicken", "cook and stir"));
     }
