@@ -97,9 +97,11 @@ export function mountStepsView(host: HTMLElement, store: Store, actions: StepsVi
   // focus follows the selection only when it was moved from the keyboard in this list
   let keyboard = false;
   const update = (state: AppState, previous: AppState | null): void => {
+    // a re-plan redraws the list: a step that had the focus keeps it (the user may be using the arrow keys)
+    const focused = list.contains(document.activeElement);
     if (previous === null || state.plan !== previous.plan) render(state.plan);
     if (previous === null || state.plan !== previous.plan || state.selection !== previous.selection) {
-      renderSelection(state.selection, keyboard);
+      renderSelection(state.selection, keyboard || focused);
       keyboard = false;
     }
   };
