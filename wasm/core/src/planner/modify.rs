@@ -1168,14 +1168,21 @@ fn rank_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
     }
     ranked.sort_by_key(|r| std::cmp::Reverse(r.0));
     let mut out: Vec<(NodeId, bool)> = ranked.into_iter().map(|(_, n)| (n, true)).collect();
-    // the ingredient as it comes from the kitchen, fewest states first
+    // the ingredient as it comes from the kitchen, fresh unless asked preserved (a grape halved is not a
+    // raisin), fewest states first
+    let preserved = |n: NodeId| {
+        c != Category::Preserved
+            && ctx.kb.nodes[n]
+                .physical_states()
+                .any(|st| category(st) == Category::Preserved)
+    };
     if let Some(n) = ctx
         .index
         .nodes_of(eq)
         .iter()
         .copied()
         .filter(|&n| ctx.kb.kitchen[n] && !ctx.kb.nodes[n].holds_something())
-        .min_by_key(|&n| (ctx.kb.nodes[n].states.len(), n))
+        .min_by_key(|&n| (preserved(n), ctx.kb.nodes[n].states.len(), n))
         .or_else(|| ctx.index.nodes_of(eq).first().copied())
     {
         out.push((n, false));
