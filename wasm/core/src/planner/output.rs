@@ -231,19 +231,52 @@ fn progress_line<'t>(
     slots: &mut Vec<SlotId>,
     relations: &mut Relations<'t>,
 ) -> Option<ProgressLine> {
-    let tree = relations.tree;
-    // its first slot, and the first used of those no unit makes (one pass over the labels)
-    let (mut first, mut start) = (None, None::<SlotId>);
-    for &(x, l) in &uses.live {
-        if l != label {
-            continue;
-        }
-        first.get_or_insert(x);
-        if !uses.made[x] && start.is_none_or(|s| uses.first_use[x] < uses.first_use[s]) {
-            start = Some(x);
-        }
+    // the slots no unit makes, first used first (else its first slot): the line follows the first that
+    // reaches the dish (FOON may also pour some of it into a jar of another mixture), else the first
+    let mine = || {
+        uses.live
+            .iter()
+            .filter(|&&(_, l)| l == label)
+            .map(|&(x, _)| x)
+    };
+    let mut starts: Vec<SlotId> = mine().filter(|&x| !uses.made[x]).collect();
+    starts.sort_by_key(|&x| uses.first_use[x]);
+    if starts.is_empty() {
+        starts.extend(mine().next());
     }
-    let start = start.or(first)?;
+    let mut first = None;
+    for start in starts {
+        let line = line_from(order, uses, label, start, slots, relations);
+        if reaches_dish(&line, &relations.tree.slots[relations.tree.goal].node.label) {
+            return Some(line);
+        }
+        first.get_or_insert(line);
+    }
+    first
+}
+
+/// Whether a progress line goes into the dish `goal` (or onto it: butter spread on the pancake).
+fn reaches_dish(line: &ProgressLine, goal: &str) -> bool {
+    let on = spaced("on", goal);
+    line.end_product == goal
+        && line.state.iter().any(|s| {
+            s.location == on
+                || s.physical_state
+                    .split(", ")
+                    .any(|w| w.strip_prefix("in ") == Some(goal))
+        })
+}
+
+/// `progress_line` from the starting slot `start`.
+fn line_from<'t>(
+    order: &[TUnitId],
+    uses: &Uses,
+    label: &str,
+    start: SlotId,
+    slots: &mut Vec<SlotId>,
+    relations: &mut Relations<'t>,
+) -> ProgressLine {
+    let tree = relations.tree;
     let mut walked = walk(order, uses, label, start, 0, slots, relations);
     let mut states = walked.states;
     let mut motions = walked.motions;
@@ -282,12 +315,12 @@ fn progress_line<'t>(
         motions.extend(walked.motions);
     }
     carry_states(&mut states);
-    Some(ProgressLine {
+    ProgressLine {
         ingredient: label.into(),
         state: states,
         motion: motions,
         end_product: end_product.into(),
-    })
+    }
 }
 
 /// A state FOON leaves without food states (milk poured into a bowl, "-") is the one before it: moving a
