@@ -259,6 +259,15 @@ const CUTS: &[&str] = &[
     "cut", "chop", "slice", "dice", "mince", "julienne", "cube", "quarter", "halve",
 ];
 
+/// Motion words that take a food out of what it is bought in, leaving it as it was.
+const UNWRAPS: &[&str] = &["unwrap", "unpack", "unbox", "open", "drain"];
+
+/// Whether `motion` only takes a food out of its packaging ("unwrap").
+pub fn unwraps(motion: &str) -> bool {
+    let m = motion.trim_end_matches('*').trim();
+    UNWRAPS.contains(&m)
+}
+
 /// Whether `motion` cuts what it acts on into pieces ("chop", "cut in half").
 pub fn cuts(motion: &str) -> bool {
     motion_words(motion).any(|w| CUTS.contains(&w))

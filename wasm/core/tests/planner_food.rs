@@ -1339,3 +1339,85 @@ S\tpeppered
         .unwrap();
     assert_eq!(line.state[0].location, "in shaker", "{line:?}");
 }
+
+#[test]
+fn an_egg_is_cracked_before_it_is_beaten_and_cheese_unwrapped_before_it_is_grated() {
+    // the trees crack the egg and unwrap the cheese first: the asked state comes after that, not in the
+    // shell or the packet
+    let kb = "//
+O\tegg\t1
+S\twhole
+O\tbowl\t0
+S\tempty
+M\tcrack\t<Assumed>
+O\tegg\t1
+S\tcracked
+S\tin\t[bowl]
+//
+O\tcheese\t1
+S\tsliced
+S\tin\t[packet]
+M\tunwrap\t<Assumed>
+O\tcheese\t1
+S\tsliced
+S\ton\t[plate]
+//
+O\tegg\t1
+S\tcracked
+S\tin\t[bowl]
+O\tcheese\t1
+S\tsliced
+S\ton\t[plate]
+O\tfrying pan\t0
+S\thot
+M\tcook\t<Assumed>
+O\tomelette\t1\t23
+S\tcontains\t{cheese,egg}
+S\tin\t[frying pan]
+//
+O\tcream\t1
+S\tliquid
+O\twhisk\t0
+M\tbeat\t<Assumed>
+O\tcream\t1
+S\twhipped
+//
+O\tcarrot\t1
+S\twhole
+O\tgrater\t0
+M\tgrate\t<Assumed>
+O\tcarrot\t1
+S\tgrated
+//
+";
+    let ask = query("omelette", &[("egg", "whipped"), ("cheese", "grated")]);
+    let p = plan_of(&[("omelette.txt", kb)], &ExactMatch, &ask);
+    assert_eq!(
+        line_motions(&p, "egg"),
+        ["crack", "beat", "cook"],
+        "{:#?}",
+        p.units
+    );
+    assert_eq!(line_motions(&p, "cheese"), ["unwrap", "grate", "cook"]);
+}
+
+#[test]
+fn fruit_bought_cut_is_not_pitted() {
+    let salad = "//
+O\tavocado\t1
+S\tchopped
+S\tin\t[bowl]
+O\tlettuce\t1
+S\tchopped
+O\tsalad bowl\t0
+S\tempty
+M\tmix\t<Assumed>
+O\tgreen salad\t1\t15
+S\tcontains\t{avocado,lettuce}
+S\tin\t[salad bowl]
+//
+";
+    let ask = query("salad", &[("avocado", "chopped"), ("lettuce", "chopped")]);
+    let p = plan_of(&[("salad.txt", salad)], &ExactMatch, &ask);
+    assert_eq!(line_motions(&p, "avocado"), ["mix"], "{:#?}", p.units);
+}

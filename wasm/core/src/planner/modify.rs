@@ -824,7 +824,7 @@ fn restate<'kb>(
         });
         (goes_on && food_category(ctx, &tree.slots[x].node).reaches(c)).then_some((x, u))
     });
-    let from = cut.map_or(leaf, |(x, _)| x);
+    let from = cut.map_or_else(|| past_handling(ctx, tree, &order, o, leaf), |(x, _)| x);
     // a whole food its first use opens into other foods (an egg cracked into white and yolk) is not
     // blended or cooked before: those foods are what go on
     if cut.is_none() && !SEPARATION.contains(&c) {
@@ -879,6 +879,33 @@ fn restate<'kb>(
         ),
         None => format!("added '{motion}' to make it '{s}'"),
     })
+}
+
+/// Where on `o`'s own chain from `leaf` a change of state can come: past the units that unwrap it or
+/// give it the preparation that comes before anything else (an egg is cracked before it is beaten;
+/// cheese is unwrapped before it is grated), so that nothing is done to it in its shell or packet; never
+/// past the unit it leaves its chain at.
+fn past_handling(ctx: &Context, tree: &Tree, order: &[TUnitId], o: &str, leaf: SlotId) -> SlotId {
+    let first = foods::prepared_first(known_as(ctx, o, o));
+    let handling =
+        |motion: &str| foods::unwraps(motion) || first.is_some_and(|p| p.starts_with(motion));
+    let chain = own_chain(tree, order, o, leaf);
+    let mut at = leaf;
+    // the last unit of the chain takes it on: a change of state comes before it at the latest
+    for &(_, u) in chain.iter().take(chain.len().saturating_sub(1)) {
+        if !handling(&tree.units[u].motion) {
+            break;
+        }
+        let Some(&(next, _)) = tree.units[u]
+            .outputs
+            .iter()
+            .find(|&&(y, _)| tree.slots[y].node.label == o)
+        else {
+            break;
+        };
+        at = next;
+    }
+    at
 }
 
 /// The motion bringing `o` (`eq` in FOON) into state `s`: the one FOON uses most for the state, if
@@ -1695,12 +1722,20 @@ fn trim_point(
             .physical_states()
             .any(|st| st == trim.state)
     };
-    // frozen or dried fruit was bought with its stone and hull taken out
-    let preserved = tree.slots[x]
-        .node
-        .physical_states()
-        .any(|st| category(st) == Category::Preserved);
-    if preserved || chain.iter().any(done) {
+    // frozen or dried fruit was bought with its stone and hull taken out, cut fruit too (an avocado
+    // bought chopped has no stone left)
+    let bought_ready = tree.slots[x].node.physical_states().any(|st| {
+        matches!(
+            category(st),
+            Category::Preserved
+                | Category::Cut
+                | Category::FinelyCut
+                | Category::Ground
+                | Category::Liquid
+                | Category::Mixed
+        )
+    });
+    if bought_ready || chain.iter().any(done) {
         return None;
     }
     let whole = |y: SlotId| {
