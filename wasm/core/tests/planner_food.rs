@@ -1421,3 +1421,24 @@ S\tin\t[salad bowl]
     let p = plan_of(&[("salad.txt", salad)], &ExactMatch, &ask);
     assert_eq!(line_motions(&p, "avocado"), ["mix"], "{:#?}", p.units);
 }
+
+#[test]
+fn fruit_asked_dried_is_bought_dried_and_not_pitted() {
+    let elsewhere = "//
+O\tapricot\t1
+S\twhole
+O\tknife\t1
+M\tslice\t<Assumed>
+O\tapricot\t1
+S\tsliced
+//
+";
+    let ask = query("salad", &[("lettuce", "chopped"), ("apricot", "dried")]);
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("other.txt", elsewhere)],
+        &ExactMatch,
+        &ask,
+    );
+    assert_eq!(line_motions(&p, "apricot"), ["mix"], "{:#?}", p.units);
+    assert_eq!(line_states(&p, "apricot")[0], "dried");
+}

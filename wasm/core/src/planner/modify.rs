@@ -1498,6 +1498,19 @@ fn finish_branch<'kb>(
     // whole (of the starting states only 'whole' speaks of the cut: dried fruit may well be diced)
     let node = &tree.slots[last].node;
     let from = food_category(ctx, node);
+    let bought_preserved = kind(s) == Some("dried") || s == "frozen";
+    if bought_preserved && from == Category::Whole {
+        // asked dried or frozen (dried apricots), bought so: no stone or skin to take off then
+        let whole: Vec<String> = food_states(node)
+            .into_iter()
+            .filter(|st| category(st) == Category::Whole)
+            .map(str::to_string)
+            .collect();
+        tree.slots[last].node = Cow::Owned(replace_states(node, &whole, s));
+        let _ = write!(how, ", bought '{s}'");
+        chosen_state = s.into();
+    }
+    let node = &tree.slots[last].node;
     let as_sold = ctx.index.sold_as(eq) == Some(c) && !has_food_state(node);
     if !(in_state || as_sold || c == Category::Other) {
         if !from.reaches(c) && (c == Category::Whole || !c.is_starting()) {
