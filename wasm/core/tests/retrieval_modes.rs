@@ -137,15 +137,7 @@ fn on_dev_queries_each_mode_is_at_least_as_good_as_the_heuristic() {
         let fewest = run(q, RetrievalMode::FewestUnits);
         let cheapest = run(q, RetrievalMode::LowestCost);
         let surest = run(q, RetrievalMode::MostReliable);
-        assert!(
-            fewest.units.len() <= base.units.len(),
-            "{path} {} {}\n{:#?}\n{:#?}\n{:#?}",
-            fewest.units.len(),
-            base.units.len(),
-            fewest.notes,
-            common::hand::units(&fewest),
-            common::hand::units(&base)
-        );
+        assert!(fewest.units.len() <= base.units.len(), "{path}");
         assert!(view(&cheapest).cost <= view(&base).cost + 1e-9, "{path}");
         assert!(
             view(&surest).success_rate >= view(&base).success_rate - 1e-9,

@@ -27,9 +27,7 @@ use crate::error::{ErrorCode, FoonError, Result};
 use crate::kb::KnowledgeBase;
 use crate::label::{normalize_label, normalize_word};
 use crate::limits;
-use crate::plan::{
-    DishClassRef, Plan, PlanRequest, Query, QueryIngredient, RetrievalMode, FORMAT_VERSION,
-};
+use crate::plan::{DishClassRef, Plan, PlanRequest, Query, QueryIngredient, FORMAT_VERSION};
 use crate::robot::{robot_view, Motions};
 use crate::similarity::Similarity;
 use crate::taxonomy::{dish_class_name, dish_class_of};
@@ -65,23 +63,15 @@ pub fn plan(
                 "the knowledge base has no goal node with a functional unit that makes it",
             )
         })?;
+    let goal_subgraph = index.subgraph_id(&chosen.goal.subgraph);
     let in_mode = request
         .robot
         .as_ref()
         .zip(motions.as_ref())
         .and_then(|(o, m)| {
-            optimal::retrieve_in_mode(kb, index, &scorer, chosen.goal.node, o.mode, m, &trace)
+            let root = (chosen.goal.node, goal_subgraph);
+            optimal::retrieve_in_mode(kb, index, &scorer, root, o.mode, m, &trace, &mut notes)
         });
-    if in_mode.is_none()
-        && request
-            .robot
-            .as_ref()
-            .is_some_and(|o| o.mode != RetrievalMode::Heuristic)
-    {
-        notes.push(
-            "every tree of the retrieval mode runs into a cycle: retrieved by the heuristic".into(),
-        );
-    }
     let reference = in_mode.unwrap_or_else(|| {
         retrieve::retrieve_explained(
             kb,

@@ -11,7 +11,7 @@
 
 use super::explain::{kb_unit, Recorder};
 use super::index::PlannerIndex;
-use super::retrieve::Retrieved;
+use super::retrieve::{retrieve, Retrieved};
 use super::score::Scorer;
 use crate::kb::KnowledgeBase;
 use crate::model::{NodeId, UnitId};
@@ -106,6 +106,7 @@ fn retrieve_lightest(
     let mut takers: HashMap<NodeId, Vec<UnitId>> = HashMap::default();
     let mut waiting: HashMap<UnitId, (usize, Value)> = HashMap::default();
     let mut heap = BinaryHeap::new();
+    let mut order = Finished::default();
     let mut units: Vec<&UnitId> = space.keys().collect();
     units.sort_unstable();
     for &u in units {
@@ -119,6 +120,7 @@ fn retrieve_lightest(
         waiting.insert(u, (space[&u].len(), own));
         if space[&u].is_empty() {
             offer(kb, &wanted, u, own, &mut heap);
+            order.completed.insert(u, 0);
         }
     }
     // Knuth's algorithm: a node's value is final when it leaves the heap; a unit is offered to its outputs
@@ -129,6 +131,8 @@ fn retrieve_lightest(
             continue;
         }
         best.insert(node, (value, u));
+        let tick = best.len();
+        order.nodes.insert(node, tick);
         for &t in takers.get(&node).map_or(&[][..], Vec::as_slice) {
             let (left, sum) = waiting.get_mut(&t)?;
             *left -= 1;
@@ -136,17 +140,15 @@ fn retrieve_lightest(
             if *left == 0 {
                 let sum = *sum;
                 offer(kb, &wanted, t, sum, &mut heap);
+                order.completed.insert(t, tick);
             }
         }
     }
     best.get(&root)?;
-    let chosen: HashMap<NodeId, UnitId> = tree_nodes(&space, &best, root)
-        .into_iter()
-        .map(|n| (n, best[&n].1))
-        .collect();
+    let (nodes, chosen) = choose(kb, &space, &best, &order, root);
     trace.record(|t| {
         let value = |u: UnitId| unit_value(&space, &best, weight, u);
-        for n in tree_nodes(&space, &best, root) {
+        for &n in &nodes {
             t.retrieval
                 .push(expansion(kb, scorer, &space, n, chosen[&n], &value, why));
         }
@@ -180,23 +182,47 @@ fn unit_value(
         .try_fold(weight(u), |sum, n| Some(sum + best.get(n)?.0.weight))
 }
 
-/// The nodes of the chosen tree that a unit makes, breadth first from the root.
-fn tree_nodes(
+/// When Knuth's algorithm finished each node (its value final) and completed each unit (its inputs final).
+#[derive(Default)]
+struct Finished {
+    nodes: HashMap<NodeId, usize>,
+    completed: HashMap<UnitId, usize>,
+}
+
+/// The tree: from the root, breadth first, each node made by a unit already in the tree when one makes it
+/// (a unit with two outputs the tree needs counts once) and was complete before the node was final (so no
+/// cycle), else by its best unit. Returns the nodes in that order and the unit making each.
+fn choose(
+    kb: &KnowledgeBase,
     space: &HashMap<UnitId, Vec<NodeId>>,
     best: &HashMap<NodeId, (Value, UnitId)>,
+    finished: &Finished,
     root: NodeId,
-) -> Vec<NodeId> {
-    let mut out = vec![root];
+) -> (Vec<NodeId>, HashMap<NodeId, UnitId>) {
+    let mut nodes = vec![root];
+    let mut chosen: HashMap<NodeId, UnitId> = HashMap::default();
+    let mut in_tree: Vec<UnitId> = Vec::new();
     let mut at = 0;
-    while at < out.len() {
-        for &n in &space[&best[&out[at]].1] {
-            if !out.contains(&n) {
-                out.push(n);
+    while at < nodes.len() {
+        let n = nodes[at];
+        at += 1;
+        let reused = in_tree.iter().copied().find(|&u| {
+            kb.units[u].output_nodes().any(|o| o == n)
+                && finished.completed[&u] < finished.nodes[&n]
+        });
+        let u = reused.unwrap_or(best[&n].1);
+        chosen.insert(n, u);
+        if reused.is_some() {
+            continue;
+        }
+        in_tree.push(u);
+        for &i in &space[&u] {
+            if !nodes.contains(&i) {
+                nodes.push(i);
             }
         }
-        at += 1;
     }
-    out
+    (nodes, chosen)
 }
 
 /// The chosen units, each after the units making its inputs (post-order from the root).
@@ -265,16 +291,20 @@ fn expansion(
     }
 }
 
-/// The reference task tree in `mode`, or `None` for the heuristic (Algorithm 2's own search) and when every
-/// way of making `root` runs into a cycle.
+/// The reference task tree in `mode`, or `None` for the heuristic's tree: in the heuristic mode, when
+/// every way of making `root` runs into a cycle, and when the heuristic's tree is better by the mode's own
+/// measure (the lightest derivation counts a node that two units of the tree take once for each; `notes`
+/// says so).
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn retrieve_in_mode(
     kb: &KnowledgeBase,
     index: &PlannerIndex,
     scorer: &Scorer,
-    root: NodeId,
+    (root, prefer): (NodeId, Option<u32>),
     mode: RetrievalMode,
     motions: &Motions,
     trace: &Recorder,
+    notes: &mut Vec<String>,
 ) -> Option<Retrieved> {
     let why = match mode {
         RetrievalMode::Heuristic => return None,
@@ -290,5 +320,25 @@ pub(crate) fn retrieve_in_mode(
             _ => 1.0,
         }
     };
+    let off = &Recorder::OFF;
+    let Some(lightest) = retrieve_lightest(kb, index, scorer, root, &weight, why, off) else {
+        notes.push(format!(
+            "every tree of retrieval mode {why} runs into a cycle: the heuristic's tree instead"
+        ));
+        return None;
+    };
+    let heuristic = retrieve(kb, index, scorer, root, prefer);
+    let measure = |r: &Retrieved| Value {
+        weight: r.units.iter().map(|&u| weight(u)).sum(),
+        units: r.units.len() as u32,
+    };
+    let (h, l) = (measure(&heuristic), measure(&lightest));
+    if h.weight < l.weight - 1e-9 || (h.weight <= l.weight + 1e-9 && h.units < l.units) {
+        notes.push(format!(
+            "retrieval mode {why}: the heuristic's tree is as good or better by its measure (it shares \
+             a node between two units), and is kept"
+        ));
+        return None;
+    }
     retrieve_lightest(kb, index, scorer, root, &weight, why, trace)
 }
