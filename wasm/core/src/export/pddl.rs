@@ -59,10 +59,10 @@ pub fn pddl(plan: &Plan) -> Pddl {
     for (i, a) in world.actions.iter().enumerate() {
         let _ = writeln!(domain, "  (:action {}", action_name(plan, i));
         let _ = writeln!(domain, "    :parameters ()");
-        let _ = writeln!(domain, "    :precondition (and {})", condition(a));
+        let _ = writeln!(domain, "    :precondition (and{})", condition(a));
         let _ = writeln!(
             domain,
-            "    :effect (and {}))",
+            "    :effect (and{}))",
             texts(&a.add, false) + &texts(&a.del, true)
         );
     }
@@ -76,11 +76,7 @@ pub fn pddl(plan: &Plan) -> Pddl {
     for f in &world.init {
         let _ = writeln!(problem, "    {}", f.text());
     }
-    let _ = writeln!(
-        problem,
-        "  )\n  (:goal (and {}))\n)",
-        condition(&world.goal)
-    );
+    let _ = writeln!(problem, "  )\n  (:goal (and{}))\n)", condition(&world.goal));
     Pddl { domain, problem }
 }
 
