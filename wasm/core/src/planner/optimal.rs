@@ -335,9 +335,8 @@ pub(crate) fn retrieve_in_mode(
     let (h, l) = (measure(&heuristic), measure(&lightest));
     if h.weight < l.weight - 1e-9 || (h.weight <= l.weight + 1e-9 && h.units < l.units) {
         notes.push(format!(
-            "retrieval mode {why}: the heuristic's tree is as good or better by its measure (it shares \
-             a node between two units), and is kept"
-        ));
+            "retrieval mode {why}: the paper's heuristic finds a better tree by this mode's measure \
+             here (the lightest derivation counts a node two units take twice), and it is kept"));
         return None;
     }
     retrieve_lightest(kb, index, scorer, root, &weight, why, trace)
