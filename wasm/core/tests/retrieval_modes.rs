@@ -105,6 +105,12 @@ fn without_robot_options_the_plan_has_no_robot_view_and_bad_figures_are_refused(
     let e = try_plan(FILES, &ExactMatch, &bad).expect_err("a rate above 1");
     assert_eq!(e.code, ErrorCode::BadQuery);
     assert!(e.message.contains("'slice'"), "{e}");
+    // an unknown mode or option is a bad request with its place in the JSON
+    for wrong in [r#""mode": "fastest""#, r#""human_step": 1"#] {
+        let text = format!(r#"{{"query": {{"type": "salad"}}, "robot": {{{wrong}}}}}"#);
+        let e = foon_core::decode::plan_request(&text).expect_err(wrong);
+        assert_eq!((e.code, e.line), (ErrorCode::BadQuery, Some(1)), "{e}");
+    }
 }
 
 #[test]
