@@ -106,7 +106,7 @@ pub(super) struct World {
     pub actions: Vec<Action>,
     pub init: BTreeSet<Fact>,
     /// The goal node's object exactly as the goal node says, and each object the plan touches as the plan
-    /// leaves it.
+    /// leaves it (`States::goal`).
     pub goal: Action,
 }
 
@@ -133,78 +133,93 @@ pub(super) fn world(plan: &Plan, goal_node: &PlanNode) -> World {
         let step = follow(&mut objects, &mut kitchen, &mut steps, j + 1, u);
         steps.push(step);
     }
-    // every fact each object ever has, for the exact states
-    let mut ever: BTreeMap<usize, BTreeSet<Fact>> = BTreeMap::new();
-    let mut record = |k: usize, n: &PlanNode, objects: &[Object]| {
-        ever.entry(k)
-            .or_default()
-            .extend(facts(&objects[k].name, n));
-    };
-    for &(k, n) in &kitchen {
-        record(k, n, &objects);
-    }
-    for s in &steps {
-        for &(k, n) in &s.outputs {
-            record(k, n, &objects);
-        }
-    }
-    let exactly = |k: usize, n: &PlanNode| {
-        let have = facts(&objects[k].name, n);
-        let pre_not = ever[&k].difference(&have).cloned().collect();
-        Action {
-            pre: have,
-            pre_not,
-            ..Action::default()
-        }
-    };
-    let actions = steps
-        .iter()
-        .map(|s| {
-            let mut a = Action::default();
-            for &(k, n) in &s.inputs {
-                let e = exactly(k, n);
-                a.pre.extend(e.pre);
-                a.pre_not.extend(e.pre_not);
-            }
-            for &(k, o) in &s.outputs {
-                let after = facts(&objects[k].name, o);
-                if let Some(&(_, before)) = s.inputs.iter().find(|(i, _)| *i == k) {
-                    a.del
-                        .extend(facts(&objects[k].name, before).difference(&after).cloned());
-                }
-                a.add.extend(after);
-            }
-            for &(k, n) in s.inputs.iter().filter(|(k, _)| s.used_up.contains(k)) {
-                a.del.extend(facts(&objects[k].name, n));
-            }
-            a
-        })
-        .collect();
+    let states = States::new(&objects, &kitchen, &steps);
+    let actions = steps.iter().map(|s| states.action(s)).collect();
     let init = kitchen
         .iter()
-        .flat_map(|&(k, n)| facts(&objects[k].name, n))
+        .flat_map(|&(k, n)| states.facts(k, n))
         .collect();
-    let mut goal = match goal_object(&objects, plan, goal_node) {
-        Some((k, n)) => exactly(k, n),
-        None => Action::default(),
-    };
-    // and every object a unit touched, as the plan leaves it: a unit is in the plan for a reason
-    for (k, o) in objects.iter().enumerate().filter(|(_, o)| o.since > 0) {
-        let end = match o.node {
-            Some(n) => exactly(k, n),
-            None => Action {
-                pre_not: ever[&k].clone(),
-                ..Action::default()
-            },
-        };
-        goal.pre.extend(end.pre);
-        goal.pre_not.extend(end.pre_not);
-    }
+    let goal = states.goal(plan, goal_node);
     World {
         objects: objects.into_iter().map(|o| o.name).collect(),
         actions,
         init,
         goal,
+    }
+}
+
+impl Action {
+    /// Needs what `other` needs too.
+    fn require(&mut self, other: Action) {
+        self.pre.extend(other.pre);
+        self.pre_not.extend(other.pre_not);
+    }
+}
+
+/// The objects' facts: in a node, and every fact each object ever has (for the exact states).
+struct States<'w, 'p> {
+    objects: &'w [Object<'p>],
+    ever: BTreeMap<usize, BTreeSet<Fact>>,
+}
+
+impl<'w, 'p> States<'w, 'p> {
+    fn new(objects: &'w [Object<'p>], kitchen: &[(usize, &PlanNode)], steps: &[Step]) -> Self {
+        let mut ever: BTreeMap<usize, BTreeSet<Fact>> = BTreeMap::new();
+        for &(k, n) in kitchen.iter().chain(steps.iter().flat_map(|s| &s.outputs)) {
+            ever.entry(k)
+                .or_default()
+                .extend(facts(&objects[k].name, n));
+        }
+        States { objects, ever }
+    }
+
+    fn facts(&self, k: usize, n: &PlanNode) -> BTreeSet<Fact> {
+        facts(&self.objects[k].name, n)
+    }
+
+    /// Object `k` exactly in node `n` (`None`: used up): its facts, and none of the others it ever has.
+    fn exactly(&self, k: usize, n: Option<&PlanNode>) -> Action {
+        let pre = n.map(|n| self.facts(k, n)).unwrap_or_default();
+        let pre_not = self.ever[&k].difference(&pre).cloned().collect();
+        Action {
+            pre,
+            pre_not,
+            ..Action::default()
+        }
+    }
+
+    /// A step's action: its inputs exactly; its outputs' facts added, and the facts an object left
+    /// deleted; a used-up input's facts deleted.
+    fn action(&self, s: &Step) -> Action {
+        let mut a = Action::default();
+        for &(k, n) in &s.inputs {
+            a.require(self.exactly(k, Some(n)));
+        }
+        for &(k, o) in &s.outputs {
+            let after = self.facts(k, o);
+            if let Some(&(_, before)) = s.inputs.iter().find(|(i, _)| *i == k) {
+                a.del
+                    .extend(self.facts(k, before).difference(&after).cloned());
+            }
+            a.add.extend(after);
+        }
+        for &(k, n) in s.inputs.iter().filter(|(k, _)| s.used_up.contains(k)) {
+            a.del.extend(self.facts(k, n));
+        }
+        a
+    }
+
+    /// The goal node's object exactly in the goal node, and every object a unit touched as the plan
+    /// leaves it (a unit is in the plan for a reason).
+    fn goal(&self, plan: &Plan, goal_node: &PlanNode) -> Action {
+        let mut goal = Action::default();
+        if let Some((k, n)) = goal_object(self.objects, plan, goal_node) {
+            goal.require(self.exactly(k, Some(n)));
+        }
+        for (k, o) in self.objects.iter().enumerate().filter(|(_, o)| o.since > 0) {
+            goal.require(self.exactly(k, o.node));
+        }
+        goal
     }
 }
 
