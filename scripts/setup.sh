@@ -26,6 +26,16 @@ if [ ! -x /usr/bin/chromium ] && [ "${FOON_SKIP_CHROMIUM:-0}" != 1 ]; then
   $SUDO apt-get update -qq && $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null
 fi
 
+step "Python venv with Fast Downward (the PDDL planner test)"
+if ! .venv/bin/python -c "import unified_planning, up_fast_downward" 2>/dev/null; then
+  if ! python3 -m venv --help >/dev/null 2>&1 || ! python3 -c "import ensurepip" 2>/dev/null; then
+    SUDO=""; [ "$(id -u)" = 0 ] || SUDO="sudo"
+    $SUDO apt-get update -qq && $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-venv >/dev/null
+  fi
+  python3 -m venv .venv
+  .venv/bin/pip install --quiet --disable-pip-version-check -r scripts/requirements-pddl.txt
+fi
+
 step "npm packages"
 if [ -f package-lock.json ]; then npm ci --no-audit --no-fund --loglevel=warn; else npm install --no-audit --no-fund --loglevel=warn; fi
 

@@ -1,7 +1,7 @@
 // The user's query as the app holds it (dish type, ingredient rows, chosen substitutes), its URL form,
 // and the parsing of pasted ingredient lists. Pure functions: unit-tested without a browser.
 
-import type { PlanRequest, QueryIngredient } from "../planner/types";
+import { RETRIEVAL_MODES, type PlanRequest, type QueryIngredient, type RetrievalMode } from "../planner/types";
 
 export interface AppQuery {
   /** Dish type: a dish class name ("salad") or free text. */
@@ -9,6 +9,8 @@ export interface AppQuery {
   ingredients: QueryIngredient[];
   /** Query object -> the equivalent label the user chose in the substitutions panel. */
   overrides: Record<string, string>;
+  /** How the reference task tree is retrieved (docs/robot.md); absent: the paper's heuristic. */
+  mode?: RetrievalMode;
 }
 
 export const EMPTY_QUERY: AppQuery = { dish: "", ingredients: [], overrides: {} };
@@ -28,7 +30,15 @@ export function toPlanRequest(query: AppQuery): PlanRequest {
   for (const [object, label] of Object.entries(query.overrides)) {
     if (asked.has(object) && label !== "") overrides[object] = label;
   }
-  return { query: { type: normalizeName(query.dish), ingredients }, overrides };
+  const request: PlanRequest = { query: { type: normalizeName(query.dish), ingredients }, overrides };
+  // the paper's heuristic sends no robot options: the plan is the default one
+  if (query.mode !== undefined && query.mode !== "heuristic") request.robot = { mode: query.mode };
+  return request;
+}
+
+/** A retrieval mode named in text (a URL, an attribute), or undefined for anything else. */
+export function parseMode(value: string | null | undefined): RetrievalMode | undefined {
+  return RETRIEVAL_MODES.find((m) => m === value);
 }
 
 /** Whether a query has enough to plan: a dish type or at least one ingredient. */
@@ -53,6 +63,7 @@ export function queryToSearch(query: AppQuery): string {
   for (const [object, label] of Object.entries(request.overrides ?? {}).sort(([a], [b]) => a.localeCompare(b))) {
     parts.push(`sub=${encode(`${object}${SEP}${label}`)}`);
   }
+  if (request.robot?.mode !== undefined) parts.push(`mode=${request.robot.mode}`);
   return parts.length === 0 ? "" : `?${parts.join("&")}`;
 }
 
@@ -75,7 +86,8 @@ export function queryFromSearch(search: string): AppQuery | null {
     const [object, label] = splitPair(value);
     if (object !== "" && label !== "") overrides[object] = label;
   }
-  return { dish: normalizeName(params.get("dish") ?? ""), ingredients, overrides };
+  const mode = parseMode(params.get("mode"));
+  return { dish: normalizeName(params.get("dish") ?? ""), ingredients, overrides, ...(mode === undefined ? {} : { mode }) };
 }
 
 // ---- Pasted lists: "chopped chili pepper, whole tomato, cool whip" ----

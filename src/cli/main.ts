@@ -6,7 +6,7 @@ import { dirname, join } from "node:path";
 import { parseArgs } from "node:util";
 import { describeError, PlannerError, type FoonPlanner } from "../planner/index";
 import { loadPlannerFromDisk, STARTER_KB_DIR } from "../planner/node";
-import type { ExportFormat, PlanRequest } from "../planner/types";
+import { RETRIEVAL_MODES, type ExportFormat, type PlanRequest, type RetrievalMode, type RobotOptions } from "../planner/types";
 import { evalCommand } from "./eval";
 import { readQueries, readQuery } from "./queries";
 
@@ -17,7 +17,10 @@ commands:
   plan    [--kb <dir-or-file>] --query <file.json>   one plan as JSON
           [--no-modify] [--override <object>=<label>]... [--format json|foon|pddl|pddl-domain|pddl-problem|progress]
           [--explain]                                adds the trace: how the plan was found (JSON only)
-  batch   [--kb <dir>] --queries <dir> --out <dir> [--no-modify]
+          [--mode heuristic|fewest_units|lowest_cost|most_reliable] [--human-steps <M>]
+          [--motion-cost <motion>=<cost>]... [--success-rate <motion>=<rate>]...
+                                                     retrieval mode and robot figures (docs/robot.md)
+  batch   [--kb <dir>] --queries <dir> --out <dir> [--no-modify] [--mode ...] [--human-steps <M>]
                                                      plans every query, writes <out>/<type>/<id>.json
   similar [--kb <dir>] [--top 5] [--names <file>] <name>...
                                                      the equivalents the planner would use, best first
@@ -36,14 +39,48 @@ function planner(values: { kb?: string; exact?: boolean }): FoonPlanner {
   return p;
 }
 
-function overrides(list: string[] | undefined): Record<string, string> {
+/** `name=value` pairs of a repeated option, e.g. `--override "cool whip=whipped cream"`. */
+function pairs(option: string, list: string[] | undefined, shape: string): Record<string, string> {
   const out: Record<string, string> = {};
   for (const item of list ?? []) {
     const at = item.indexOf("=");
-    if (at <= 0) throw new Error(`--override '${item}': expected <object>=<label>`);
+    if (at <= 0) throw new Error(`--${option} '${item}': expected ${shape}`);
     out[item.slice(0, at).trim()] = item.slice(at + 1).trim();
   }
   return out;
+}
+
+function numbers(option: string, list: string[] | undefined): Record<string, number> {
+  const out: Record<string, number> = {};
+  for (const [motion, text] of Object.entries(pairs(option, list, "<motion>=<number>"))) {
+    const value = Number(text);
+    if (text === "" || !Number.isFinite(value)) throw new Error(`--${option} '${motion}=${text}': not a number`);
+    out[motion] = value;
+  }
+  return out;
+}
+
+const ROBOT_OPTIONS = {
+  mode: { type: "string" },
+  "human-steps": { type: "string" },
+  "motion-cost": { type: "string", multiple: true },
+  "success-rate": { type: "string", multiple: true },
+} as const;
+
+/** The request's `robot` from --mode and the figures, or undefined when none is given (the default plan). */
+function robotOptions(values: { mode?: string; "human-steps"?: string; "motion-cost"?: string[]; "success-rate"?: string[] }): RobotOptions | undefined {
+  const given = [values.mode, values["human-steps"], values["motion-cost"], values["success-rate"]].some((v) => v !== undefined);
+  if (!given) return undefined;
+  const mode = (values.mode ?? "heuristic") as RetrievalMode;
+  if (!RETRIEVAL_MODES.includes(mode)) throw new Error(`--mode must be one of ${RETRIEVAL_MODES.join(", ")}`);
+  const humanSteps = Number(values["human-steps"] ?? "0");
+  if (!Number.isInteger(humanSteps) || humanSteps < 0) throw new Error("--human-steps must be a whole number, 0 or more");
+  return {
+    mode,
+    motion_costs: numbers("motion-cost", values["motion-cost"]),
+    success_rates: numbers("success-rate", values["success-rate"]),
+    human_steps: humanSteps,
+  };
 }
 
 const FORMATS: readonly ExportFormat[] = ["json", "foon", "pddl", "pddl-domain", "pddl-problem", "progress"];
@@ -71,6 +108,7 @@ const commands: Record<string, (args: string[]) => void> = {
         override: { type: "string", multiple: true },
         format: { type: "string", default: "json" },
         explain: { type: "boolean" },
+        ...ROBOT_OPTIONS,
       },
       strict: true,
     });
@@ -79,7 +117,13 @@ const commands: Record<string, (args: string[]) => void> = {
     if (!FORMATS.includes(format)) throw new Error(`--format must be one of ${FORMATS.join(", ")}`);
     const explain = values.explain === true;
     if (explain && format !== "json") throw new Error("--explain adds the trace to the plan JSON: it needs --format json");
-    const request: PlanRequest = { query: readQuery(values.query), modify: values["no-modify"] !== true, overrides: overrides(values.override), explain };
+    const request: PlanRequest = {
+      query: readQuery(values.query),
+      modify: values["no-modify"] !== true,
+      overrides: pairs("override", values.override, "<object>=<label>"),
+      explain,
+      robot: robotOptions(values),
+    };
     const p = planner(values);
     if (format === "json") console.log(JSON.stringify(p.plan(request), null, 2));
     else process.stdout.write(p.exportPlan(request, format));
@@ -88,13 +132,14 @@ const commands: Record<string, (args: string[]) => void> = {
   batch(args) {
     const { values } = parseArgs({
       args,
-      options: { ...KB_OPTIONS, queries: { type: "string" }, out: { type: "string" }, "no-modify": { type: "boolean" } },
+      options: { ...KB_OPTIONS, queries: { type: "string" }, out: { type: "string" }, "no-modify": { type: "boolean" }, ...ROBOT_OPTIONS },
       strict: true,
     });
     if (values.queries === undefined || values.out === undefined) throw new Error("batch needs --queries <dir> and --out <dir>");
     const queries = readQueries(values.queries);
     const p = planner(values);
     const modify = values["no-modify"] !== true;
+    const robot = robotOptions(values);
     const errors: Record<string, number> = {};
     const times: number[] = [];
     const tty = process.stderr.isTTY === true;
@@ -102,7 +147,7 @@ const commands: Record<string, (args: string[]) => void> = {
       const started = performance.now();
       let result: unknown;
       try {
-        result = p.plan({ query: q.query, modify });
+        result = p.plan({ query: q.query, modify, robot });
       } catch (e) {
         if (!(e instanceof PlannerError)) throw e;
         errors[e.code] = (errors[e.code] ?? 0) + 1;

@@ -75,6 +75,41 @@ export interface PlanRequest {
   overrides?: Record<string, string>;
   /** true adds `Plan.trace`: how the plan was found, step by step (default false). */
   explain?: boolean;
+  /** The retrieval mode and a robot's figures; the plan then has `robot` (docs/robot.md). */
+  robot?: RobotOptions;
+}
+
+/** How Algorithm 2 chooses among the units making a node: the paper's heuristic or an exact optimum. */
+export type RetrievalMode = "heuristic" | "fewest_units" | "lowest_cost" | "most_reliable";
+
+export const RETRIEVAL_MODES: readonly RetrievalMode[] = ["heuristic", "fewest_units", "lowest_cost", "most_reliable"];
+
+export interface RobotOptions {
+  mode?: RetrievalMode;
+  /** Motion -> cost (1 = a pick-and-place), over the project's table. */
+  motion_costs?: Record<string, number>;
+  /** Motion -> success rate in (0, 1], over the project's table. */
+  success_rates?: Record<string, number>;
+  /** How many of the least reliable units a person does instead of the robot (default 0). */
+  human_steps?: number;
+}
+
+/** A unit's motion for a robot, in the order of `Plan.units`. */
+export interface RobotUnit {
+  cost: number;
+  success_rate: number;
+  by: "robot" | "human";
+}
+
+export interface RobotView {
+  mode: RetrievalMode;
+  units: RobotUnit[];
+  /** Indices of the units a person does, in plan order. */
+  human_units: number[];
+  /** Sum of the robot's units' costs. */
+  cost: number;
+  /** Product of the robot's units' success rates. */
+  success_rate: number;
 }
 
 export interface PlanNode {
@@ -152,6 +187,8 @@ export interface Plan {
   cautions: Caution[];
   /** Only when the request asked to `explain`. */
   trace?: Trace;
+  /** Only when the request gave `robot`. */
+  robot?: RobotView;
 }
 
 // ---- The explain trace (docs/plan-format.md "Explain trace"; wasm/core/src/trace.rs) ----
@@ -177,13 +214,23 @@ export type GoalTieBreak = "score" | "exact_matches" | "fewer_ingredients" | "na
 
 export type ExpansionOutcome = "kitchen" | "recipe_start" | "expanded" | "cycle" | "had_from_start";
 
-export type ChoiceReason = "only" | "reused" | "same_recipe" | "no_detour" | "heuristic" | "fewer_inputs" | "id";
+export type ChoiceReason =
+  | "only"
+  | "reused"
+  | "same_recipe"
+  | "no_detour"
+  | "heuristic"
+  | "fewer_inputs"
+  | "id"
+  | Exclude<RetrievalMode, "heuristic">;
 
 export interface CandidateUnit extends TraceUnit {
   heuristic: number;
   reused: boolean;
   same_recipe: boolean;
   cycle: boolean;
+  /** In a retrieval mode other than the heuristic: the best tree's value through this unit (least wins). */
+  value?: number;
 }
 
 export interface Expansion {

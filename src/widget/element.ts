@@ -1,11 +1,12 @@
 // <foon-planner dish-type="salad" ingredients="chopped chili pepper, whole tomato" view="all"
-//               theme="light" kb-url="kb/default.foon">
+//               theme="light" kb-url="kb/default.foon" mode="most_reliable">
 // Emits `plan`, `select` and `error` CustomEvents (bubbling, composed) with typed details.
 
 import { mount, type ErrorEventDetail, type PlanEventDetail, type PlannerHandle, type SelectEventDetail } from "./mount";
+import { parseMode } from "../app/query";
 import { parseTheme, parseView, type WidgetOptions } from "./options";
 
-const ATTRIBUTES = ["dish-type", "ingredients", "view", "theme", "kb-url"] as const;
+const ATTRIBUTES = ["dish-type", "ingredients", "view", "theme", "kb-url", "mode"] as const;
 
 export class FoonPlannerElement extends HTMLElement {
   static readonly observedAttributes: readonly string[] = ATTRIBUTES;
@@ -18,6 +19,7 @@ export class FoonPlannerElement extends HTMLElement {
       view: parseView(this.getAttribute("view")),
       theme: parseTheme(this.getAttribute("theme")),
       kbUrl: this.getAttribute("kb-url") ?? undefined,
+      mode: parseMode(this.getAttribute("mode")),
     };
   }
 

@@ -1,6 +1,7 @@
 // The iframe page's contract (dist/widget.html): its URL parameters, and the messages it posts to the
 // parent page. Pure, so the page script stays a few lines and the shapes are typed for npm users.
 
+import { parseMode } from "../app/query";
 import type { ErrorEventDetail, PlanEventDetail, SelectEventDetail } from "./mount";
 import { parseTheme, parseView, type WidgetOptions } from "./options";
 
@@ -24,7 +25,7 @@ export interface FrameSettings {
 }
 
 /**
- * Reads `?dish=salad&i=chili+pepper~chopped&ingredients=whole+tomato&view=progress&theme=dark&kb-url=…&id=…&origin=…`.
+ * Reads `?dish=salad&i=chili+pepper~chopped&ingredients=whole+tomato&view=progress&theme=dark&kb-url=…&mode=…&id=…&origin=…`.
  * `i` is one row as object~state (the app's own URL form); `ingredients` the attribute's comma-separated list.
  */
 export function frameSettings(search: string): FrameSettings {
@@ -38,6 +39,7 @@ export function frameSettings(search: string): FrameSettings {
       view: parseView(params.get("view")),
       theme: parseTheme(params.get("theme")),
       kbUrl: params.get("kb-url") ?? undefined,
+      mode: parseMode(params.get("mode")),
     },
     frame: params.get("id") ?? "",
     targetOrigin: params.get("origin") ?? "*",

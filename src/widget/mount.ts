@@ -71,7 +71,8 @@ export function mount(element: HTMLElement, initial: WidgetOptions = {}, callbac
   const applyQuery = (): void => {
     if (app === null) return;
     const states = app.store.state.kb?.vocabulary.states ?? [];
-    app.setQuery({ dish: options.dishType ?? "", ingredients: widgetIngredients(options.ingredients, states), overrides: {} });
+    const mode = options.mode === undefined ? {} : { mode: options.mode };
+    app.setQuery({ dish: options.dishType ?? "", ingredients: widgetIngredients(options.ingredients, states), overrides: {}, ...mode });
   };
 
   function build(): void {
@@ -112,7 +113,7 @@ export function mount(element: HTMLElement, initial: WidgetOptions = {}, callbac
       const previous = options;
       options = { ...options, ...next };
       if (options.view !== previous.view || options.kbUrl !== previous.kbUrl) build();
-      else if (options.dishType !== previous.dishType || options.ingredients !== previous.ingredients) applyQuery();
+      else if (options.dishType !== previous.dishType || options.ingredients !== previous.ingredients || options.mode !== previous.mode) applyQuery();
       if (options.theme !== previous.theme) theme();
     },
     destroy(): void {

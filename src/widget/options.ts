@@ -1,6 +1,6 @@
 // The widget's options and how its attributes read into them (pure, unit-tested).
 
-import type { QueryIngredient } from "../planner/types";
+import type { QueryIngredient, RetrievalMode } from "../planner/types";
 import type { ViewName } from "../app/app";
 import type { ThemeChoice } from "../app/prefs";
 import { normalizeName, parseIngredientList } from "../app/query";
@@ -16,6 +16,8 @@ export interface WidgetOptions {
   theme?: ThemeChoice;
   /** Knowledge base URL (relative to the page); default: the bundled one. */
   kbUrl?: string;
+  /** Retrieval mode (docs/robot.md); default the paper's heuristic. */
+  mode?: RetrievalMode;
 }
 
 export const WIDGET_VIEWS: Record<WidgetView, ViewName[]> = {

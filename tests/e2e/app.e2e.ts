@@ -193,6 +193,23 @@ describe("planner page", () => {
     await context.close();
   });
 
+  it("retrieves in the mode chosen under Retrieval, shows each step's robot figures, and keeps the mode in the URL", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(`${inject("baseUrl")}?dish=salad&i=chili+pepper~chopped&i=tomato~whole`);
+    await waitForPlan(page);
+    expect(await page.locator(".steps .robot-figures").count()).toBe(0); // the paper's heuristic: no robot view
+    await page.getByLabel("Retrieval").selectOption("most_reliable");
+    await page.locator(".robot-summary:not([hidden])").waitFor();
+    await waitForPlan(page);
+    const steps = await page.locator(".steps li").count();
+    expect(await page.locator(".steps li .robot-figures[data-by='robot']").count()).toBe(steps);
+    expect(await page.locator(".robot-summary").textContent()).toMatch(/^Robot: total motion cost [\d.]+, success [\d.]+%\.$/);
+    expect(new URL(page.url()).searchParams.get("mode")).toBe("most_reliable");
+    await screenshot(page, "app-retrieval-mode");
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
   it("loads FOON files from the file input, shows errors with file and line, and switches back", async () => {
     const { context, page, errors } = await fresh();
     await page.goto(`${inject("baseUrl")}?dish=bread&i=bread~sliced`);

@@ -50,6 +50,12 @@ describe("plan requests", () => {
     expect(isPlannable(q)).toBe(true);
     expect(isPlannable({ dish: "salad", ingredients: [{ object: "", state: "" }], overrides: {} })).toBe(false);
   });
+  it("asks for a retrieval mode only when it is not the paper's heuristic", () => {
+    const q: AppQuery = { dish: "salad", ingredients: [{ object: "tomato", state: "" }], overrides: {} };
+    expect(toPlanRequest({ ...q, mode: "most_reliable" }).robot).toEqual({ mode: "most_reliable" });
+    expect(toPlanRequest({ ...q, mode: "heuristic" })).toEqual(toPlanRequest(q));
+    expect("robot" in toPlanRequest(q)).toBe(false);
+  });
 });
 
 describe("the query in the URL", () => {
@@ -62,6 +68,12 @@ describe("the query in the URL", () => {
     const search = queryToSearch(q);
     expect(search).toBe("?dish=salad&i=chili+pepper~chopped&i=cool+whip&sub=chili+pepper~jalapeno");
     expect(queryFromSearch(search)).toEqual(q);
+  });
+  it("round-trips the retrieval mode and ignores an unknown one", () => {
+    const q: AppQuery = { dish: "soup", ingredients: [{ object: "onion", state: "" }], overrides: {}, mode: "lowest_cost" };
+    expect(queryToSearch(q)).toBe("?dish=soup&i=onion&mode=lowest_cost");
+    expect(queryFromSearch(queryToSearch(q))).toEqual(q);
+    expect(queryFromSearch("?dish=soup&i=onion&mode=fastest")).toEqual({ ...q, mode: undefined });
   });
   it("encodes characters that would break the URL", () => {
     const q: AppQuery = { dish: "", ingredients: [{ object: "mac & cheese", state: "50% done" }], overrides: {} };

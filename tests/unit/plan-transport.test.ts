@@ -3,6 +3,7 @@
 // the documented plan format, exactly as serde writes it for the `json` export, on the real dev queries.
 import { beforeAll, describe, expect, it } from "vitest";
 import { FoonPlanner, type Plan, type PlanRequest } from "../../src/planner/index";
+import { RETRIEVAL_MODES } from "../../src/planner/types";
 import { initPlannerFromDisk, loadPlannerFromDisk } from "../../src/planner/node";
 import { readQueries } from "../../src/cli/queries";
 import { sharedPath } from "./helpers";
@@ -37,5 +38,18 @@ describe("plan transport", () => {
     const modified = requests.filter((r) => r.modify !== false).map((r) => planner.plan(r));
     // what one unit makes, a later one takes: in every modified plan of more than one unit
     for (const plan of modified.filter((p) => p.units.length > 1)) expect(sharedNodes(plan)).toBeGreaterThan(0);
+  });
+
+  it("gives the robot view of every retrieval mode, equal to the json export", () => {
+    for (const mode of RETRIEVAL_MODES) {
+      for (const { query } of requests.filter((r) => r.modify !== false).slice(0, 10)) {
+        const request: PlanRequest = { query, robot: { mode, human_steps: 1 } };
+        const plan = planner.plan(request);
+        expect(JSON.parse(JSON.stringify(plan))).toEqual(JSON.parse(planner.exportPlan(request, "json")));
+        expect(plan.robot?.mode).toBe(mode);
+        expect(plan.robot?.units.length).toBe(plan.units.length);
+        expect(plan.robot?.human_units.length).toBe(Math.min(1, plan.units.length));
+      }
+    }
   });
 });

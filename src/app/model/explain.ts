@@ -38,6 +38,9 @@ const WHY: Record<ChoiceReason, string> = {
   heuristic: "it has the highest heuristic value g(u)",
   fewer_inputs: "it needs fewer inputs to be made",
   id: "the tie goes to the first unit in the knowledge base",
+  fewest_units: "the tree through it has the fewest functional units",
+  lowest_cost: "the tree through it costs a robot least",
+  most_reliable: "a robot most likely carries out the tree through it",
 };
 
 const TIE_BREAK: Record<Exclude<GoalTieBreak, "kin_class">, string> = {
@@ -146,7 +149,7 @@ function expansionCaption(e: Expansion): string {
     case "expanded":
       return chosen === undefined
         ? `“${short(e.node)}” is expanded.`
-        : `To make “${short(e.node)}”, ${e.candidates.length} functional unit(s) compete; “${chosen.motion}” is chosen because ${WHY[e.why ?? "only"]} (g(u) = ${num(chosen.heuristic)}).`;
+        : `To make “${short(e.node)}”, ${e.candidates.length} functional unit(s) compete; “${chosen.motion}” is chosen because ${WHY[e.why ?? "only"]} (${chosen.value === undefined ? `g(u) = ${num(chosen.heuristic)}` : `value ${num(chosen.value)}`}).`;
   }
 }
 

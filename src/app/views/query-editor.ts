@@ -1,24 +1,32 @@
 // Asking: the dish type picker, the ingredient rows (object + state, autocomplete from the knowledge
 // base, free text allowed), add/remove/reorder, pasting a list, and example queries.
 
-import type { QueryIngredient } from "../../planner/types";
+import { RETRIEVAL_MODES, type QueryIngredient, type RetrievalMode } from "../../planner/types";
 import { el, uid } from "../dom";
-import { EXAMPLES, ingredientPhrase, parseIngredientList, type AppQuery } from "../query";
+import { EXAMPLES, ingredientPhrase, parseIngredientList, parseMode, type AppQuery } from "../query";
 import type { AppState, Store } from "../store";
 
 export interface QueryEditorActions {
   setQuery(query: AppQuery): void;
 }
 
+const MODE_NAMES: Record<RetrievalMode, string> = {
+  heuristic: "Paper's heuristic (ingredient overlap)",
+  fewest_units: "Fewest functional units",
+  lowest_cost: "Lowest motion cost for a robot",
+  most_reliable: "Most reliable for a robot",
+};
+
 function sameQuery(a: AppQuery, b: AppQuery): boolean {
   return JSON.stringify(a) === JSON.stringify(b);
 }
 
 export function mountQueryEditor(host: HTMLElement, store: Store, actions: QueryEditorActions): () => void {
-  const ids = { labels: uid("labels"), states: uid("states"), dish: uid("dish"), paste: uid("paste"), recipes: uid("recipes") };
+  const ids = { labels: uid("labels"), states: uid("states"), dish: uid("dish"), paste: uid("paste"), recipes: uid("recipes"), mode: uid("mode") };
   const labelList = el("datalist", { id: ids.labels });
   const stateList = el("datalist", { id: ids.states });
   const dishSelect = el("select", { id: ids.dish, name: "dish" });
+  const modeSelect = el("select", { id: ids.mode, name: "mode" }, ...RETRIEVAL_MODES.map((m) => el("option", { value: m, text: MODE_NAMES[m] })));
   const recipes = el("p", { class: "recipes muted", id: ids.recipes, "aria-live": "polite" });
   const rows = el("ol", { class: "ingredient-rows", "aria-label": "Ingredients" });
   const addButton = el("button", { type: "button", class: "add-row", text: "Add ingredient" });
@@ -126,6 +134,11 @@ export function mountQueryEditor(host: HTMLElement, store: Store, actions: Query
   }
 
   dishSelect.addEventListener("change", () => emit({ ...current(), dish: dishSelect.value }));
+  modeSelect.addEventListener("change", () => {
+    const { mode: _previous, ...rest } = current();
+    const mode = parseMode(modeSelect.value);
+    emit(mode === undefined || mode === "heuristic" ? rest : { ...rest, mode });
+  });
   addButton.addEventListener("click", () => {
     const list = [...readRows(), { object: "", state: "" }];
     emitAndRender({ ...store.state.query, ingredients: list }, { row: list.length - 1, button: "object" });
@@ -153,6 +166,7 @@ export function mountQueryEditor(host: HTMLElement, store: Store, actions: Query
     rows,
     addButton,
     el("div", { class: "field paste" }, el("label", { for: ids.paste, text: "Paste a list (comma- or line-separated)" }), pasteArea, pasteButton),
+    el("div", { class: "field" }, el("label", { for: ids.mode, text: "Retrieval" }), modeSelect),
     el("h3", { text: "Examples" }),
     examples,
     labelList,
@@ -162,8 +176,10 @@ export function mountQueryEditor(host: HTMLElement, store: Store, actions: Query
   renderVocabulary(store.state);
   renderDishes(store.state);
   renderRows(store.state.query);
+  modeSelect.value = store.state.query.mode ?? "heuristic";
 
   return store.subscribe((state, previous) => {
+    modeSelect.value = state.query.mode ?? "heuristic";
     if (state.kb !== previous.kb) {
       renderVocabulary(state);
       renderDishes(state);

@@ -17,11 +17,22 @@ const ORIGIN_WORDS: Record<string, string> = {
   attached: "takes a new ingredient",
 };
 
+const percent = (rate: number): string => `${Math.round(rate * 1000) / 10}%`;
+
+/** A step's motion for a robot: who does it, its cost and success rate (only in a plan with a robot view). */
+function robotFigures(plan: Plan, i: number): HTMLElement | null {
+  const unit = plan.robot?.units[i];
+  if (unit === undefined) return null;
+  const who = unit.by === "human" ? "person" : "robot";
+  return el("span", { class: `robot-figures ${unit.by}`, "data-by": unit.by, text: ` [${who}: cost ${unit.cost}, ${percent(unit.success_rate)}]` });
+}
+
 export function mountStepsView(host: HTMLElement, store: Store, actions: StepsViewActions): () => void {
   const titleId = uid("steps-title");
   const list = el("ol", { class: "steps", role: "listbox", "aria-labelledby": titleId });
   const cautions = el("div", { class: "cautions", role: "note", hidden: true });
-  host.replaceChildren(el("h2", { id: titleId, text: "Steps" }), cautions, list);
+  const robot = el("p", { class: "robot-summary muted", hidden: true });
+  host.replaceChildren(el("h2", { id: titleId, text: "Steps" }), cautions, list, robot);
   let plan: Plan | null = null;
 
   function items(): HTMLLIElement[] {
@@ -38,9 +49,19 @@ export function mountStepsView(host: HTMLElement, store: Store, actions: StepsVi
     );
   }
 
+  // the robot view (docs/robot.md): who does the plan and how likely the robot's part succeeds
+  function renderRobot(next: Plan | null): void {
+    const view = next?.robot;
+    robot.hidden = view === undefined;
+    if (view === undefined) return;
+    const person = view.human_units.length === 0 ? "" : `; steps ${view.human_units.map((i) => i + 1).join(", ")} by a person`;
+    robot.textContent = `Robot: total motion cost ${view.cost}, success ${percent(view.success_rate)}${person}.`;
+  }
+
   function render(next: Plan | null): void {
     plan = next;
     renderCautions(next);
+    renderRobot(next);
     if (next === null || next.units.length === 0) {
       list.replaceChildren(el("li", { class: "muted", role: "option", "aria-disabled": "true", text: next === null ? "No plan yet." : "The plan has no steps." }));
       return;
@@ -54,6 +75,7 @@ export function mountStepsView(host: HTMLElement, store: Store, actions: StepsVi
           { role: "option", tabindex: i === 0 ? 0 : -1, "aria-selected": "false", "data-unit": i, id: uid("step") },
           el("span", { class: "step-text", text: sentence }),
           origin === undefined ? null : el("span", { class: `origin ${u.origin}`, text: ` (${origin})` }),
+          robotFigures(next, i),
         );
         li.addEventListener("click", () => actions.select(selectUnit(next, i)));
         return li;

@@ -28,7 +28,8 @@ fn decode<T: DeserializeOwned>(json: &str, what: &str) -> Result<T> {
     })
 }
 
-/// A plan request: `{"query": {"type": …, "ingredients": [{"object": …, "state": …}]}, "modify"?, "overrides"?}`.
+/// A plan request: `{"query": {"type": …, "ingredients": [{"object": …, "state": …}]}, "modify"?, "overrides"?,
+/// "explain"?, "robot"?}` (`docs/plan-format.md`).
 pub fn plan_request(json: &str) -> Result<PlanRequest> {
     decode(json, "plan request")
 }

@@ -18,6 +18,7 @@ pub mod parse;
 pub mod plan;
 pub mod plan_json;
 pub mod planner;
+pub mod robot;
 pub mod similarity;
 pub mod stats;
 pub mod substitute;

@@ -33,7 +33,7 @@ fn default_true() -> bool {
 }
 
 /// What the app and the CLI send.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PlanRequest {
     pub query: Query,
     /// `false` returns the reference task tree as retrieved (the ablation "without modification").
@@ -45,6 +45,71 @@ pub struct PlanRequest {
     /// `true` adds the explain trace (`Plan::trace`); the plan is otherwise the same.
     #[serde(default)]
     pub explain: bool,
+    /// How to retrieve the reference task tree and what a robot does (`docs/robot.md`); the plan then
+    /// has its robot view (`Plan::robot`). Absent: the paper's heuristic, and no robot view.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub robot: Option<RobotOptions>,
+}
+
+/// How Algorithm 2 chooses among the units that make a node.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RetrievalMode {
+    /// The paper's: ingredient overlap g(u), keeping to the reference recipe.
+    #[default]
+    Heuristic,
+    /// The tree with the fewest functional units.
+    FewestUnits,
+    /// The tree whose motions cost a robot least.
+    LowestCost,
+    /// The tree a robot most likely carries out (the largest product of success rates).
+    MostReliable,
+}
+
+/// A request's retrieval mode and robot figures.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RobotOptions {
+    #[serde(default)]
+    pub mode: RetrievalMode,
+    /// Motion -> cost, over the project's table (`data/robot_motions.tsv`).
+    #[serde(default)]
+    pub motion_costs: BTreeMap<String, f32>,
+    /// Motion -> success rate in (0, 1], over the project's table.
+    #[serde(default)]
+    pub success_rates: BTreeMap<String, f32>,
+    /// How many of the least reliable units a person does instead of the robot.
+    #[serde(default)]
+    pub human_steps: usize,
+}
+
+/// Who carries out a unit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Performer {
+    Robot,
+    Human,
+}
+
+/// A unit's motion as a robot sees it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RobotUnit {
+    pub cost: f64,
+    pub success_rate: f64,
+    pub by: Performer,
+}
+
+/// The plan for a robot: per unit (same order as `Plan::units`) and summed over the robot's units.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RobotView {
+    pub mode: RetrievalMode,
+    pub units: Vec<RobotUnit>,
+    /// Indices of the units a person does, in plan order.
+    pub human_units: Vec<usize>,
+    /// Σ cost over the robot's units.
+    pub cost: f64,
+    /// Π success rate over the robot's units: the chance the robot does its whole part.
+    pub success_rate: f64,
 }
 
 impl PlanRequest {
@@ -54,6 +119,7 @@ impl PlanRequest {
             modify: true,
             overrides: BTreeMap::new(),
             explain: false,
+            robot: None,
         }
     }
 }
@@ -236,4 +302,7 @@ pub struct Plan {
     /// How the plan was found, step by step (only when the request asked to `explain`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub trace: Option<Trace>,
+    /// Each unit's motion cost, success rate and performer (only when the request gave `robot`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub robot: Option<RobotView>,
 }

@@ -292,6 +292,7 @@ impl Json for Plan {
             steps,
             cautions,
             trace,
+            robot,
         } = self;
         let mut o = Object::begin(out);
         o.field(key!("format_version"), format_version)
@@ -309,6 +310,9 @@ impl Json for Plan {
         if let Some(trace) = trace {
             // written once per explained plan, through serde: its speed does not matter
             let _ = serde_json::to_writer(o.key(key!("trace")), trace);
+        }
+        if let Some(robot) = robot {
+            let _ = serde_json::to_writer(o.key(key!("robot")), robot);
         }
         o.end();
     }

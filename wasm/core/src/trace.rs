@@ -73,7 +73,8 @@ pub struct Expansion {
     /// Index in `candidates` of the unit chosen.
     pub chosen: Option<usize>,
     /// The preference that chose it over the closest runner-up: `only` (no rival), `reused`,
-    /// `same_recipe`, `no_detour`, `heuristic` (g(u)), `fewer_inputs` or `id`.
+    /// `same_recipe`, `no_detour`, `heuristic` (g(u)), `fewer_inputs` or `id`; in another retrieval
+    /// mode, the mode (`fewest_units`, `lowest_cost`, `most_reliable`).
     pub why: Option<String>,
 }
 
@@ -89,6 +90,10 @@ pub struct CandidateUnit {
     pub same_recipe: bool,
     /// Would close a cycle: never chosen.
     pub cycle: bool,
+    /// In a retrieval mode other than the heuristic: the value of the best tree making the node with this
+    /// unit (units, motion cost, or −ln of the success rate; the least wins).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub value: Option<f64>,
 }
 
 /// A name and how similar it is to the query's ingredient.

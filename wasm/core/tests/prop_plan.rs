@@ -158,6 +158,7 @@ fn request(labels: &'static [&'static str]) -> impl Strategy<Value = PlanRequest
                 modify,
                 overrides,
                 explain,
+                robot: None,
             },
         )
 }

@@ -1,11 +1,15 @@
 //! Exports of a plan: FOON text (plain dialect, mergeable into a knowledge base), the published
-//! progress-line JSON, and PDDL. The plan's own JSON is serde of `Plan`.
+//! progress-line JSON, and PDDL (`pddl.rs`). The plan's own JSON is serde of `Plan`.
+
+mod objects;
+mod pddl;
+
+pub use pddl::{action_name, pddl, Pddl};
 
 use crate::plan::{Plan, PlanNode};
 use crate::taxonomy::is_utensil;
 use serde::Serialize;
 use smol_str::SmolStr;
-use std::collections::BTreeSet;
 use std::fmt::Write;
 
 fn foon_object(out: &mut String, n: &PlanNode, moves: bool, goal_class: Option<Option<u32>>) {
@@ -108,117 +112,4 @@ pub fn progress_json(plan: &Plan) -> serde_json::Value {
         })
         .collect();
     serde_json::to_value(lines).unwrap_or(serde_json::Value::Null)
-}
-
-/// A PDDL domain (one action per functional unit) and problem (init: the kitchen; goal: the goal node).
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
-pub struct Pddl {
-    pub domain: String,
-    pub problem: String,
-}
-
-/// A PDDL name: lower-case letters, digits and dashes, starting with a letter.
-fn ident(text: &str) -> String {
-    let mut out = String::new();
-    let mut dash = false;
-    for c in text.chars() {
-        if c.is_ascii_alphanumeric() {
-            out.push(c.to_ascii_lowercase());
-            dash = false;
-        } else if !dash && !out.is_empty() {
-            out.push('-');
-            dash = true;
-        }
-    }
-    while out.ends_with('-') {
-        out.pop();
-    }
-    if !out.starts_with(|c: char| c.is_ascii_alphabetic()) {
-        out.insert_str(0, "x-");
-    }
-    out
-}
-
-/// One ground proposition per object node: `(at-state <label> <states>)` would need typed arguments the
-/// nodes do not have, so each node becomes a 0-ary predicate named after its label and states.
-fn predicate(n: &PlanNode) -> String {
-    let mut name = ident(&n.label);
-    for s in &n.states {
-        name.push_str("--");
-        name.push_str(&ident(s));
-    }
-    name
-}
-
-pub fn pddl(plan: &Plan) -> Pddl {
-    let mut preds: BTreeSet<String> = BTreeSet::new();
-    let mut produced: BTreeSet<String> = BTreeSet::new();
-    let mut consumed: BTreeSet<String> = BTreeSet::new();
-    for u in &plan.units {
-        for n in &u.inputs {
-            preds.insert(predicate(n));
-            consumed.insert(predicate(n));
-        }
-        for n in &u.outputs {
-            preds.insert(predicate(n));
-            produced.insert(predicate(n));
-        }
-    }
-    let name = ident(plan.query.id.as_deref().unwrap_or(&plan.goal.label));
-    let mut domain = String::new();
-    let _ = writeln!(
-        domain,
-        ";; foon-planner: one action per functional unit, in execution order"
-    );
-    let _ = writeln!(domain, "(define (domain foon-{name})");
-    let _ = writeln!(domain, "  (:requirements :strips)");
-    let _ = writeln!(domain, "  (:predicates");
-    for p in &preds {
-        let _ = writeln!(domain, "    ({p})");
-    }
-    let _ = writeln!(domain, "  )");
-    for (i, u) in plan.units.iter().enumerate() {
-        let ins: BTreeSet<String> = u.inputs.iter().map(|n| predicate(n)).collect();
-        let outs: BTreeSet<String> = u.outputs.iter().map(|n| predicate(n)).collect();
-        let _ = writeln!(domain, "  (:action {}-{}", ident(&u.motion), i + 1);
-        let _ = writeln!(domain, "    :parameters ()");
-        let pre: Vec<String> = ins.iter().map(|p| format!("({p})")).collect();
-        let _ = writeln!(domain, "    :precondition (and {})", pre.join(" "));
-        let mut eff: Vec<String> = outs.iter().map(|p| format!("({p})")).collect();
-        // an input that changes into something else is no longer there
-        eff.extend(
-            ins.iter()
-                .filter(|p| !outs.contains(*p))
-                .filter(|p| {
-                    u.inputs.iter().any(|n| {
-                        predicate(n) == **p
-                            && (!is_utensil(&n.label)
-                                || u.outputs.iter().any(|o| o.label == n.label))
-                    })
-                })
-                .map(|p| format!("(not ({p}))")),
-        );
-        let _ = writeln!(domain, "    :effect (and {}))", eff.join(" "));
-    }
-    let _ = writeln!(domain, ")");
-
-    // the kitchen: inputs no unit of the plan makes
-    let kitchen: Vec<&String> = consumed.iter().filter(|p| !produced.contains(*p)).collect();
-    let goal = predicate(&PlanNode {
-        label: plan.goal.label.clone(),
-        states: plan.goal.states.clone(),
-        ingredients: Vec::new(),
-        container: None,
-    });
-    let mut problem = String::new();
-    let _ = writeln!(problem, "(define (problem make-{name})");
-    let _ = writeln!(problem, "  (:domain foon-{name})");
-    let _ = writeln!(problem, "  (:init");
-    for p in kitchen {
-        let _ = writeln!(problem, "    ({p})");
-    }
-    let _ = writeln!(problem, "  )");
-    let _ = writeln!(problem, "  (:goal ({goal}))");
-    let _ = writeln!(problem, ")");
-    Pddl { domain, problem }
 }

@@ -199,6 +199,7 @@ mod tests {
             steps: Vec::new(),
             cautions: Vec::new(),
             trace: None,
+            robot: None,
         }
     }
 

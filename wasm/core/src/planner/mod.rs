@@ -8,6 +8,7 @@ mod explain;
 mod goal;
 mod index;
 mod modify;
+mod optimal;
 mod output;
 mod retrieve;
 mod schedule;
@@ -27,6 +28,7 @@ use crate::kb::KnowledgeBase;
 use crate::label::{normalize_label, normalize_word};
 use crate::limits;
 use crate::plan::{DishClassRef, Plan, PlanRequest, Query, QueryIngredient, FORMAT_VERSION};
+use crate::robot::{robot_view, Motions};
 use crate::similarity::Similarity;
 use crate::taxonomy::{dish_class_name, dish_class_of};
 use std::collections::BTreeMap;
@@ -51,6 +53,7 @@ pub fn plan(
             labels.push(i.object.clone());
         }
     }
+    let motions = request.robot.as_ref().map(Motions::new).transpose()?;
     let scorer = score::Scorer::new(similarity, index, &labels);
     let trace = explain::Recorder::new(request.explain);
     let chosen =
@@ -60,14 +63,25 @@ pub fn plan(
                 "the knowledge base has no goal node with a functional unit that makes it",
             )
         })?;
-    let reference = retrieve::retrieve_explained(
-        kb,
-        index,
-        &scorer,
-        chosen.goal.node,
-        index.subgraph_id(&chosen.goal.subgraph),
-        &trace,
-    );
+    let goal_subgraph = index.subgraph_id(&chosen.goal.subgraph);
+    let in_mode = request
+        .robot
+        .as_ref()
+        .zip(motions.as_ref())
+        .and_then(|(o, m)| {
+            let root = (chosen.goal.node, goal_subgraph);
+            optimal::retrieve_in_mode(kb, index, &scorer, root, o.mode, m, &trace, &mut notes)
+        });
+    let reference = in_mode.unwrap_or_else(|| {
+        retrieve::retrieve_explained(
+            kb,
+            index,
+            &scorer,
+            chosen.goal.node,
+            index.subgraph_id(&chosen.goal.subgraph),
+            &trace,
+        )
+    });
     for &n in &reference.blocked {
         notes.push(format!(
             "every unit making '{}' needs it again (a cycle): taken as available",
@@ -124,6 +138,11 @@ pub fn plan(
     });
     plan.cautions = cautions::cautions(&plan);
     plan.trace = trace.finish();
+    plan.robot = request
+        .robot
+        .as_ref()
+        .zip(motions.as_ref())
+        .map(|(o, m)| robot_view(&plan, o, m));
     Ok(plan)
 }
 

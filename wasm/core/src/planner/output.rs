@@ -114,6 +114,7 @@ pub(crate) fn build(p: Parts) -> Plan {
         steps,
         cautions: Vec::new(),
         trace: None,
+        robot: None,
     }
 }
 

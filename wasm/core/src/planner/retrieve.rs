@@ -457,6 +457,7 @@ fn weigh(
             reused: c.as_ref().is_some_and(|c| c.reused),
             same_recipe: c.as_ref().is_some_and(|c| c.same_recipe),
             cycle: c.is_none(),
+            value: None,
         })
         .collect();
     Expansion {

@@ -1,0 +1,343 @@
+//! The retrieval modes beside the paper's heuristic (`docs/robot.md`): the task tree of a node with the
+//! fewest functional units, the lowest motion cost, or the highest product of success rates.
+//!
+//! Each is exact over the search space of Algorithm 2 (the units making the node, then the units making
+//! their inputs, down to the kitchen or a starting item of the recipe that needs it): every unit has a
+//! weight (1; its motion's cost; −ln of its success rate), a tree's value is the sum over its units, and
+//! Knuth's lightest-derivation algorithm (Dijkstra's, over the AND/OR graph) finds the least. A node the
+//! tree makes is made once; the value counts it once for each unit that takes it, which is the tree's own
+//! sum whenever no made node feeds two units (as in the recipes of FOON-111). Ties go to fewer units,
+//! then to the smaller unit id.
+
+use super::explain::{kb_unit, Recorder};
+use super::index::PlannerIndex;
+use super::retrieve::{retrieve, Retrieved};
+use super::score::Scorer;
+use crate::kb::KnowledgeBase;
+use crate::model::{NodeId, UnitId};
+use crate::plan::RetrievalMode;
+use crate::robot::Motions;
+use crate::trace::{CandidateUnit, Expansion, Outcome};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use std::cmp::{Ordering, Reverse};
+use std::collections::{BinaryHeap, VecDeque};
+
+/// A tree's value: the sum of its units' weights, then its number of units.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Value {
+    weight: f64,
+    units: u32,
+}
+
+impl Value {
+    fn plus(self, other: Value) -> Value {
+        Value {
+            weight: self.weight + other.weight,
+            units: self.units + other.units,
+        }
+    }
+}
+
+impl Eq for Value {}
+impl PartialOrd for Value {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Value {
+    fn cmp(&self, other: &Self) -> Ordering {
+        self.weight
+            .total_cmp(&other.weight)
+            .then(self.units.cmp(&other.units))
+    }
+}
+
+/// The search space below `root`: each unit (not one needing what it makes), with the inputs it needs
+/// made (not kitchen items, not starting items of its recipe).
+fn search_space(
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    root: NodeId,
+) -> HashMap<UnitId, Vec<NodeId>> {
+    let mut space: HashMap<UnitId, Vec<NodeId>> = HashMap::default();
+    let mut seen: HashSet<NodeId> = HashSet::default();
+    let mut queue = VecDeque::from([root]);
+    seen.insert(root);
+    while let Some(node) = queue.pop_front() {
+        for &u in kb.producers.get(node).map_or(&[][..], Vec::as_slice) {
+            let unit = &kb.units[u];
+            if space.contains_key(&u) || unit.input_nodes().any(|n| n == node) {
+                continue;
+            }
+            let mut needed: Vec<NodeId> = unit
+                .input_nodes()
+                .filter(|&n| !kb.kitchen[n] && !index.starts_in_recipe_of(u, n))
+                .collect();
+            needed.sort_unstable();
+            needed.dedup();
+            for &n in &needed {
+                if seen.insert(n) {
+                    queue.push_back(n);
+                }
+            }
+            space.insert(u, needed);
+        }
+    }
+    space
+}
+
+/// The lightest tree making `root` under `weight` (each at least 0), or `None` when every way of making
+/// it runs into a cycle. `why` names the mode in the trace, which records each node of the tree with its
+/// candidates and the value of the best tree through each (`CandidateUnit::value`).
+fn retrieve_lightest(
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    scorer: &Scorer,
+    root: NodeId,
+    weight: &dyn Fn(UnitId) -> f64,
+    why: &str,
+    trace: &Recorder,
+) -> Option<Retrieved> {
+    let space = search_space(kb, index, root);
+    // the nodes to make: the root and the inputs some unit needs made
+    let mut wanted: HashSet<NodeId> = space.values().flatten().copied().collect();
+    wanted.insert(root);
+    // per node, the units of the space taking it
+    let mut takers: HashMap<NodeId, Vec<UnitId>> = HashMap::default();
+    let mut waiting: HashMap<UnitId, (usize, Value)> = HashMap::default();
+    let mut heap = BinaryHeap::new();
+    let mut order = Finished::default();
+    let mut units: Vec<&UnitId> = space.keys().collect();
+    units.sort_unstable();
+    for &u in units {
+        let own = Value {
+            weight: weight(u),
+            units: 1,
+        };
+        for &n in &space[&u] {
+            takers.entry(n).or_default().push(u);
+        }
+        waiting.insert(u, (space[&u].len(), own));
+        if space[&u].is_empty() {
+            offer(kb, &wanted, u, own, &mut heap);
+            order.completed.insert(u, 0);
+        }
+    }
+    // Knuth's algorithm: a node's value is final when it leaves the heap; a unit is offered to its outputs
+    // once all its needed inputs are final
+    let mut best: HashMap<NodeId, (Value, UnitId)> = HashMap::default();
+    while let Some(Reverse((value, u, node))) = heap.pop() {
+        if best.contains_key(&node) {
+            continue;
+        }
+        best.insert(node, (value, u));
+        let tick = best.len();
+        order.nodes.insert(node, tick);
+        for &t in takers.get(&node).map_or(&[][..], Vec::as_slice) {
+            let (left, sum) = waiting.get_mut(&t)?;
+            *left -= 1;
+            *sum = sum.plus(value);
+            if *left == 0 {
+                let sum = *sum;
+                offer(kb, &wanted, t, sum, &mut heap);
+                order.completed.insert(t, tick);
+            }
+        }
+    }
+    best.get(&root)?;
+    let (nodes, chosen) = choose(kb, &space, &best, &order, root);
+    trace.record(|t| {
+        let value = |u: UnitId| unit_value(&space, &best, weight, u);
+        for &n in &nodes {
+            t.retrieval
+                .push(expansion(kb, scorer, &space, n, chosen[&n], &value, why));
+        }
+    });
+    Some(Retrieved {
+        units: execution_order(&space, &chosen, root),
+        chosen,
+        blocked: Vec::new(),
+    })
+}
+
+type Heap = BinaryHeap<Reverse<(Value, UnitId, NodeId)>>;
+
+/// Offers unit `u`, whose tree is worth `value`, to each output it makes that is `wanted`.
+fn offer(kb: &KnowledgeBase, wanted: &HashSet<NodeId>, u: UnitId, value: Value, heap: &mut Heap) {
+    for o in kb.units[u].output_nodes().filter(|o| wanted.contains(o)) {
+        heap.push(Reverse((value, u, o)));
+    }
+}
+
+/// The value of the best tree making a node with `u` (None when one of its inputs cannot be made).
+fn unit_value(
+    space: &HashMap<UnitId, Vec<NodeId>>,
+    best: &HashMap<NodeId, (Value, UnitId)>,
+    weight: &dyn Fn(UnitId) -> f64,
+    u: UnitId,
+) -> Option<f64> {
+    let needed = space.get(&u)?;
+    needed
+        .iter()
+        .try_fold(weight(u), |sum, n| Some(sum + best.get(n)?.0.weight))
+}
+
+/// When Knuth's algorithm finished each node (its value final) and completed each unit (its inputs final).
+#[derive(Default)]
+struct Finished {
+    nodes: HashMap<NodeId, usize>,
+    completed: HashMap<UnitId, usize>,
+}
+
+/// The tree: from the root, breadth first, each node made by a unit already in the tree when one makes it
+/// (a unit with two outputs the tree needs counts once) and was complete before the node was final (so no
+/// cycle), else by its best unit. Returns the nodes in that order and the unit making each.
+fn choose(
+    kb: &KnowledgeBase,
+    space: &HashMap<UnitId, Vec<NodeId>>,
+    best: &HashMap<NodeId, (Value, UnitId)>,
+    finished: &Finished,
+    root: NodeId,
+) -> (Vec<NodeId>, HashMap<NodeId, UnitId>) {
+    let mut nodes = vec![root];
+    let mut chosen: HashMap<NodeId, UnitId> = HashMap::default();
+    let mut in_tree: Vec<UnitId> = Vec::new();
+    let mut at = 0;
+    while at < nodes.len() {
+        let n = nodes[at];
+        at += 1;
+        let reused = in_tree.iter().copied().find(|&u| {
+            kb.units[u].output_nodes().any(|o| o == n)
+                && finished.completed[&u] < finished.nodes[&n]
+        });
+        let u = reused.unwrap_or(best[&n].1);
+        chosen.insert(n, u);
+        if reused.is_some() {
+            continue;
+        }
+        in_tree.push(u);
+        for &i in &space[&u] {
+            if !nodes.contains(&i) {
+                nodes.push(i);
+            }
+        }
+    }
+    (nodes, chosen)
+}
+
+/// The chosen units, each after the units making its inputs (post-order from the root).
+fn execution_order(
+    space: &HashMap<UnitId, Vec<NodeId>>,
+    chosen: &HashMap<NodeId, UnitId>,
+    root: NodeId,
+) -> Vec<UnitId> {
+    let mut order = Vec::new();
+    let mut done: HashSet<NodeId> = HashSet::default();
+    let mut stack = vec![(root, false)];
+    while let Some((node, inputs_placed)) = stack.pop() {
+        let u = chosen[&node];
+        if inputs_placed {
+            if !order.contains(&u) {
+                order.push(u);
+            }
+            continue;
+        }
+        if !done.insert(node) {
+            continue;
+        }
+        stack.push((node, true));
+        // a value is final before the values built on it, so the chosen producers form no cycle
+        for &n in space[&u].iter().rev() {
+            if !done.contains(&n) {
+                stack.push((n, false));
+            }
+        }
+    }
+    order
+}
+
+/// The trace's record of a node of the tree: every unit of the space making it, with the value of the
+/// best tree through it.
+fn expansion(
+    kb: &KnowledgeBase,
+    scorer: &Scorer,
+    space: &HashMap<UnitId, Vec<NodeId>>,
+    node: NodeId,
+    chosen: UnitId,
+    value: &dyn Fn(UnitId) -> Option<f64>,
+    why: &str,
+) -> Expansion {
+    let candidates: Vec<UnitId> = kb.producers[node]
+        .iter()
+        .copied()
+        .filter(|u| space.contains_key(u))
+        .collect();
+    Expansion {
+        node: kb.nodes[node].to_string(),
+        outcome: Outcome::Expanded,
+        chosen: candidates.iter().position(|&u| u == chosen),
+        why: Some(why.to_string()),
+        candidates: candidates
+            .iter()
+            .map(|&u| CandidateUnit {
+                unit: kb_unit(kb, u),
+                heuristic: scorer.unit(u),
+                reused: false,
+                same_recipe: false,
+                cycle: value(u).is_none(),
+                value: value(u),
+            })
+            .collect(),
+    }
+}
+
+/// The reference task tree in `mode`, or `None` for the heuristic's tree: in the heuristic mode, when
+/// every way of making `root` runs into a cycle, and when the heuristic's tree is better by the mode's own
+/// measure (the lightest derivation counts a node that two units of the tree take once for each; `notes`
+/// says so).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn retrieve_in_mode(
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    scorer: &Scorer,
+    (root, prefer): (NodeId, Option<u32>),
+    mode: RetrievalMode,
+    motions: &Motions,
+    trace: &Recorder,
+    notes: &mut Vec<String>,
+) -> Option<Retrieved> {
+    let why = match mode {
+        RetrievalMode::Heuristic => return None,
+        RetrievalMode::FewestUnits => "fewest_units",
+        RetrievalMode::LowestCost => "lowest_cost",
+        RetrievalMode::MostReliable => "most_reliable",
+    };
+    let weight = |u: UnitId| {
+        let figures = motions.figures(&kb.units[u].motion);
+        match mode {
+            RetrievalMode::LowestCost => figures.cost,
+            RetrievalMode::MostReliable => -figures.success_rate.ln(),
+            _ => 1.0,
+        }
+    };
+    let off = &Recorder::OFF;
+    let Some(lightest) = retrieve_lightest(kb, index, scorer, root, &weight, why, off) else {
+        notes.push(format!(
+            "every tree of retrieval mode {why} runs into a cycle: the heuristic's tree instead"
+        ));
+        return None;
+    };
+    let heuristic = retrieve(kb, index, scorer, root, prefer);
+    let measure = |r: &Retrieved| Value {
+        weight: r.units.iter().map(|&u| weight(u)).sum(),
+        units: r.units.len() as u32,
+    };
+    let (h, l) = (measure(&heuristic), measure(&lightest));
+    if h.weight < l.weight - 1e-9 || (h.weight <= l.weight + 1e-9 && h.units < l.units) {
+        notes.push(format!(
+            "retrieval mode {why}: the paper's heuristic finds a better tree by this mode's measure \
+             here (the lightest derivation counts a node two units take twice), and it is kept"));
+        return None;
+    }
+    retrieve_lightest(kb, index, scorer, root, &weight, why, trace)
+}

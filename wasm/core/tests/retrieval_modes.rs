@@ -1,0 +1,158 @@
+//! The retrieval modes (`docs/robot.md`) on a hand-made knowledge base where each picks a different tree,
+//! the robot view's figures, and on FOON-111's dev queries: each mode's tree is at least as good, by its
+//! own measure, as the heuristic's.
+
+mod common;
+use common::hand::{plan_of, try_plan};
+use common::{dev_queries, foon111, load};
+use foon_core::error::ErrorCode;
+use foon_core::plan::{Performer, RetrievalMode, RobotOptions};
+use foon_core::similarity::ExactMatch;
+use foon_core::{plan, Plan, PlanRequest, PlannerIndex};
+
+/// Three ways to a cucumber salad: one slice; two pours; a stir and a mix.
+const SLICED: &str = "//
+O\tcucumber\t1
+S\twhole
+M\tslice\t<Assumed>
+O\tcucumber salad\t1\t15
+S\tmixed
+//
+";
+const POURED: &str = "//
+O\tcucumber\t1
+S\twhole
+M\tpour\t<Assumed>
+O\tcucumber\t1
+S\tin\t[bowl]
+//
+O\tcucumber\t1
+S\tin\t[bowl]
+M\tpour\t<Assumed>
+O\tcucumber salad\t1\t15
+S\tmixed
+//
+";
+const STIRRED: &str = "//
+O\tcucumber\t1
+S\twhole
+M\tstir\t<Assumed>
+O\tcucumber\t1
+S\tstirred
+//
+O\tcucumber\t1
+S\tstirred
+M\tmix\t<Assumed>
+O\tcucumber salad\t1\t15
+S\tmixed
+//
+";
+const FILES: &[(&str, &str)] = &[("a.txt", SLICED), ("b.txt", POURED), ("c.txt", STIRRED)];
+
+/// The figures of the request: slicing dear and unreliable, pouring cheapest, stirring and mixing surest.
+const FIGURES: &str = r#""motion_costs": {"slice": 5, "pour": 1, "stir": 1, "mix": 3},
+    "success_rates": {"slice": 0.6, "pour": 0.9, "stir": 0.99, "mix": 0.99}"#;
+
+fn request(mode: &str, extra: &str) -> String {
+    format!(
+        r#"{{"query": {{"type": "salad", "ingredients": [{{"object": "cucumber", "state": "whole"}}]}},
+        "modify": false, "robot": {{"mode": "{mode}", {FIGURES}{extra}}}}}"#
+    )
+}
+
+fn motions(p: &Plan) -> Vec<&str> {
+    p.units.iter().map(|u| u.motion.as_str()).collect()
+}
+
+#[test]
+fn each_mode_picks_its_own_tree() {
+    let fewest = plan_of(FILES, &ExactMatch, &request("fewest_units", ""));
+    assert_eq!(motions(&fewest), ["slice"]);
+    let cheapest = plan_of(FILES, &ExactMatch, &request("lowest_cost", ""));
+    assert_eq!(motions(&cheapest), ["pour", "pour"]);
+    let surest = plan_of(FILES, &ExactMatch, &request("most_reliable", ""));
+    assert_eq!(motions(&surest), ["stir", "mix"]);
+    // each is the best by its own measure
+    let robot = |p: &Plan| p.robot.clone().expect("a robot view");
+    assert_eq!(robot(&fewest).cost, 5.0);
+    assert_eq!(robot(&cheapest).cost, 2.0);
+    assert_eq!(robot(&surest).cost, 4.0);
+    assert!((robot(&surest).success_rate - 0.9801).abs() < 1e-9);
+    assert!((robot(&cheapest).success_rate - 0.81).abs() < 1e-9);
+    assert_eq!(robot(&surest).mode, RetrievalMode::MostReliable);
+}
+
+#[test]
+fn the_least_reliable_units_go_to_a_person() {
+    let p = plan_of(
+        FILES,
+        &ExactMatch,
+        &request("lowest_cost", r#", "human_steps": 1"#),
+    );
+    let view = p.robot.expect("a robot view");
+    // equally reliable pours: the first goes to the person
+    assert_eq!(view.human_units, [0]);
+    assert_eq!(view.units[0].by, Performer::Human);
+    assert_eq!(view.units[1].by, Performer::Robot);
+    assert_eq!((view.cost, view.success_rate), (1.0, 0.9));
+}
+
+#[test]
+fn without_robot_options_the_plan_has_no_robot_view_and_bad_figures_are_refused() {
+    let plain = r#"{"query": {"type": "salad", "ingredients": [{"object": "cucumber", "state": "whole"}]}}"#;
+    assert_eq!(plan_of(FILES, &ExactMatch, plain).robot, None);
+    let bad = request("lowest_cost", "").replace("0.6", "1.6");
+    let e = try_plan(FILES, &ExactMatch, &bad).expect_err("a rate above 1");
+    assert_eq!(e.code, ErrorCode::BadQuery);
+    assert!(e.message.contains("'slice'"), "{e}");
+    // an unknown mode or option is a bad request with its place in the JSON
+    for wrong in [r#""mode": "fastest""#, r#""human_step": 1"#] {
+        let text = format!(r#"{{"query": {{"type": "salad"}}, "robot": {{{wrong}}}}}"#);
+        let e = foon_core::decode::plan_request(&text).expect_err(wrong);
+        assert_eq!((e.code, e.line), (ErrorCode::BadQuery, Some(1)), "{e}");
+    }
+}
+
+#[test]
+fn modified_plans_in_every_mode_are_sound() {
+    for mode in ["heuristic", "fewest_units", "lowest_cost", "most_reliable"] {
+        let r = request(mode, "").replace(r#""modify": false"#, r#""modify": true"#);
+        let p = plan_of(FILES, &ExactMatch, &r);
+        assert!(!p.units.is_empty(), "{mode}");
+    }
+}
+
+/// On FOON-111, each mode's reference task tree is no worse by its measure than the heuristic's.
+#[test]
+fn on_dev_queries_each_mode_is_at_least_as_good_as_the_heuristic() {
+    let kb = load(&foon111("plain"));
+    let index = PlannerIndex::new(&kb);
+    let run = |q: &foon_core::Query, mode: RetrievalMode| {
+        let mut r = PlanRequest::new(q.clone());
+        r.modify = false;
+        r.robot = Some(RobotOptions {
+            mode,
+            ..RobotOptions::default()
+        });
+        plan(&kb, &index, &ExactMatch, &r).unwrap_or_else(|e| panic!("{e}"))
+    };
+    let mut better = [0; 3];
+    for (path, q) in dev_queries().iter().step_by(4) {
+        let base = run(q, RetrievalMode::Heuristic);
+        let view = |p: &Plan| p.robot.clone().unwrap();
+        let fewest = run(q, RetrievalMode::FewestUnits);
+        let cheapest = run(q, RetrievalMode::LowestCost);
+        let surest = run(q, RetrievalMode::MostReliable);
+        assert!(fewest.units.len() <= base.units.len(), "{path}");
+        assert!(view(&cheapest).cost <= view(&base).cost + 1e-9, "{path}");
+        assert!(
+            view(&surest).success_rate >= view(&base).success_rate - 1e-9,
+            "{path}"
+        );
+        better[0] += usize::from(fewest.units.len() < base.units.len());
+        better[1] += usize::from(view(&cheapest).cost < view(&base).cost);
+        better[2] += usize::from(view(&surest).success_rate > view(&base).success_rate);
+    }
+    eprintln!("trees better than the heuristic's (fewest, cheapest, surest): {better:?}");
+    assert!(better.iter().all(|&b| b > 0), "{better:?}");
+}
