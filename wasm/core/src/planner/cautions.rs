@@ -70,14 +70,7 @@ fn line_caution(plan: &Plan, line: &ProgressLine, meant: &str) -> Option<Caution
         let detail = format!("{food} is never used on the way to {}", plan.goal.label);
         return caution(CautionKind::ShortOfDish, detail);
     }
-    // in the dish, or on it (butter spread on the pancake)
-    let inside = format!("in {}", plan.goal.label);
-    let on_top = format!("on {}", plan.goal.label);
-    let entered = line
-        .state
-        .iter()
-        .any(|s| s.physical_state.split(", ").any(|w| w == inside) || s.location == on_top);
-    if line.end_product != plan.goal.label || !entered {
+    if !super::output::reaches_dish(line, &plan.goal.label) {
         let last = line.state.last().map_or("", |s| s.physical_state.as_str());
         let detail = format!(
             "{food} ends in {} ({last}), not in {}",

@@ -257,7 +257,7 @@ fn progress_line<'t>(
 }
 
 /// Whether a progress line goes into the dish `goal` (or onto it: butter spread on the pancake).
-fn reaches_dish(line: &ProgressLine, goal: &str) -> bool {
+pub(crate) fn reaches_dish(line: &ProgressLine, goal: &str) -> bool {
     let on = spaced("on", goal);
     line.end_product == goal
         && line.state.iter().any(|s| {
