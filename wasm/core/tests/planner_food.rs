@@ -1442,3 +1442,19 @@ S\tsliced
     assert_eq!(line_motions(&p, "apricot"), ["mix"], "{:#?}", p.units);
     assert_eq!(line_states(&p, "apricot")[0], "dried");
 }
+
+#[test]
+fn a_name_asked_twice_keeps_the_state_it_was_first_planned_in() {
+    // lettuce asked chopped (as the tree has it) and again sliced: its one line stays right for the first
+    let ask = r#"{"query": {"type": "salad", "ingredients": [
+        {"object": "lettuce", "state": "chopped"}, {"object": "lettuce", "state": "sliced"}]}}"#;
+    let p = plan_of(&[("salad.txt", LETTUCE_SALAD)], &ExactMatch, ask);
+    assert_eq!(line_motions(&p, "lettuce"), ["mix"], "{:#?}", p.units);
+    let second = p
+        .ingredients
+        .iter()
+        .find(|i| i.state == "sliced")
+        .and_then(|i| i.reason.as_deref())
+        .unwrap();
+    assert!(second.contains("kept in the state 'chopped'"), "{second}");
+}

@@ -203,7 +203,8 @@ pub(crate) fn modify<'kb>(
         .map(|i| i.object.as_str())
         .collect();
     let mut claimed: HashSet<String> = HashSet::default();
-    let mut restated: HashMap<String, String> = HashMap::default();
+    // the state each object was first settled in: a name asked twice keeps the first (its one line)
+    let mut settled: HashMap<String, String> = HashMap::default();
     let mut works: Vec<Work> = Vec::with_capacity(query.ingredients.len());
     // ingredients to bring from elsewhere in FOON: (work index, equivalent, state)
     let mut pending: Vec<(usize, String, String)> = Vec::new();
@@ -285,7 +286,7 @@ pub(crate) fn modify<'kb>(
         } else {
             tree.slots_with_label(o)
         };
-        settle_state(ctx, tree, &eq, o, s, &slots, &mut restated, &mut w);
+        settle_state(ctx, tree, &eq, o, s, &slots, &mut settled, &mut w);
         w.planned = true;
         works.push(w);
     }
@@ -331,7 +332,7 @@ pub(crate) fn modify<'kb>(
                 if let Some(m) = w.matched.as_mut() {
                     m.state = tree_state(tree, &slots, &s, ctx.index.sold_as(&eq));
                 }
-                settle_state(ctx, tree, &eq, o, &s, &slots, &mut restated, w);
+                settle_state(ctx, tree, &eq, o, &s, &slots, &mut settled, w);
                 continue;
             }
             // a case-2 substitute was renamed in the tree already: its branch comes from `eq` again
@@ -413,7 +414,8 @@ pub(crate) fn modify<'kb>(
 
 /// Cases 1–4 for an ingredient whose object is in the tree as `o` (`eq` in FOON; `slots`: the live
 /// slots of `o`): its state is there (exactly or by category), or the tree is changed to reach it
-/// (`restate`), once per object.
+/// (`restate`), once per object: the same name asked again keeps the state it was first settled in
+/// (`settled`), so that its one progress line is right for one of them rather than a mix of both.
 #[allow(clippy::too_many_arguments)]
 fn settle_state<'kb>(
     ctx: &Context<'kb>,
@@ -422,7 +424,7 @@ fn settle_state<'kb>(
     o: &str,
     s: &str,
     slots: &[SlotId],
-    restated: &mut HashMap<String, String>,
+    settled: &mut HashMap<String, String>,
     w: &mut Work,
 ) {
     let sold = ctx.index.sold_as(eq);
@@ -454,20 +456,19 @@ fn settle_state<'kb>(
             });
     }
     if !state_ok {
-        if let Some(first) = restated.get(o) {
+        if let Some(first) = settled.get(o) {
             w.reasons.push(format!(
                 "kept in the state '{first}' chosen for the same ingredient earlier"
             ));
         } else {
             match restate(ctx, tree, eq, o, s, slots) {
-                Ok(reason) => {
-                    restated.insert(o.to_string(), s.to_string());
-                    w.reasons.push(reason);
-                }
-                Err(reason) => w.reasons.push(reason),
+                Ok(reason) | Err(reason) => w.reasons.push(reason),
             }
         }
     }
+    settled
+        .entry(o.to_string())
+        .or_insert_with(|| s.to_string());
     w.planned = true;
 }
 
