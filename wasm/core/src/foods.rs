@@ -25,6 +25,8 @@ pub struct Form {
     pub never_in: Vec<String>,
     /// The state a food of this form is shown in when it has none ("liquid").
     pub state_when_none: Option<String>,
+    /// A food of this form looks cooked once cooked in a vessel (not salt in a pot of rice).
+    pub shows_cooking: bool,
 }
 
 struct Forms {
@@ -55,6 +57,9 @@ fn parse(text: &str) -> Forms {
         ) else {
             continue; // a test names the row
         };
+        let Some(shows) = parts.next().map(str::trim) else {
+            continue; // a test names the row
+        };
         for c in split_list(categories) {
             of_category.entry(c).or_insert(forms.len());
         }
@@ -64,6 +69,7 @@ fn parse(text: &str) -> Forms {
             joins_not_by: split_list(joins).filter(|w| w != "-").collect(),
             never_in: split_list(never).filter(|w| w != "-").collect(),
             state_when_none: Some(none.trim()).filter(|w| *w != "-").map(str::to_string),
+            shows_cooking: shows != "no",
         });
     }
     Forms { forms, of_category }
@@ -184,6 +190,12 @@ pub fn kind(name: &str) -> Option<&'static str> {
     let taxonomy = Taxonomy::builtin();
     let category = taxonomy.category(taxonomy.lookup(name)?);
     (category.group != "dish").then_some(category.name.as_str())
+}
+
+/// Whether `food` looks cooked once the vessel it is in is cooked: a food that must be cooked does, and
+/// so does one of a form that shows cooking (a carrot in a soup; not salt or oil).
+pub fn shows_cooking(food: &str) -> bool {
+    must_cook(food) || form_of(food).is_none_or(|f| f.shows_cooking)
 }
 
 /// Whether `food` must be cooked before it is eaten (raw chicken, dry pasta, flour).
@@ -497,6 +509,8 @@ mod tests {
         assert!(paste.never_in.iter().any(|s| s == "powder"));
         assert_eq!(paste.state_when_none.as_deref(), Some("paste"));
         assert_eq!(form_of("cheddar").unwrap().state_when_none, None);
+        assert!(!shows_cooking("salt") && !shows_cooking("olive oil"));
+        assert!(shows_cooking("carrot") && shows_cooking("flour") && shows_cooking("rice"));
     }
 
     #[test]

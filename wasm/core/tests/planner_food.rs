@@ -1458,3 +1458,26 @@ fn a_name_asked_twice_keeps_the_state_it_was_first_planned_in() {
         .unwrap();
     assert!(second.contains("kept in the state 'chopped'"), "{second}");
 }
+
+#[test]
+fn salt_in_a_pot_that_is_boiled_is_not_called_cooked_but_the_chicken_is() {
+    let pot = CHICKEN_POT
+        .replacen(
+            "O\tchicken breast\t1\nS\tsliced\nM\tpick-and-place",
+            "O\tchicken breast\t1\nS\tsliced\nO\tsalt\t1\nS\tgranulated\nM\tpick-and-place",
+            1,
+        )
+        .replace("{chicken breast}", "{chicken breast,salt}");
+    let ask = query(
+        "soup",
+        &[("chicken breast", "sliced"), ("salt", "granulated")],
+    );
+    let p = plan_of(&[("soup.txt", &pot)], &ExactMatch, &ask);
+    let cooked = |food: &str| {
+        line_states(&p, food)
+            .iter()
+            .any(|s| !s.starts_with("in ") && s.contains("cooked"))
+    };
+    assert!(cooked("chicken breast"), "{:#?}", p.progress_lines);
+    assert!(!cooked("salt"), "{:#?}", p.progress_lines);
+}

@@ -1,7 +1,7 @@
 //! From the modified tree to the plan: units in execution order, progress lines (section IV-A) and one
 //! plain sentence per unit.
 
-use super::states::{category, state_text, Category};
+use super::states::{category, kind, state_text, Category};
 use super::tree::{SlotId, TUnitId, Tree};
 use crate::foods;
 use crate::kb::{Goal, KnowledgeBase};
@@ -315,12 +315,35 @@ fn line_from<'t>(
         }
         motions.extend(walked.motions);
     }
+    if !foods::shows_cooking(label) {
+        unseen_cooking(&mut states);
+    }
     carry_states(&mut states);
     ProgressLine {
         ingredient: label.into(),
         state: states,
         motion: motions,
         end_product: end_product.into(),
+    }
+}
+
+/// The food's own states without the cooking of the vessel it sits in, for a food that does not show it
+/// (salt in a pot of rice is not "partly cooked"; oil in a pan is still "hot"); what it went into ("in
+/// rice, cooked") keeps it.
+fn unseen_cooking(states: &mut [ProgressState]) {
+    let unseen = |w: &str| category(w) == Category::Cooked && kind(w) != Some("heated");
+    for s in states
+        .iter_mut()
+        .filter(|s| !s.physical_state.starts_with("in "))
+    {
+        if s.physical_state.split(", ").any(unseen) {
+            let kept: Vec<&str> = s
+                .physical_state
+                .split(", ")
+                .filter(|w| !unseen(w))
+                .collect();
+            s.physical_state = kept.join(", ").into();
+        }
     }
 }
 
