@@ -6,20 +6,15 @@ import { beforeAll, describe, expect, it } from "vitest";
 import { explainSteps } from "../../src/app/model/explain";
 import { planToGraph } from "../../src/app/model/tree";
 import type { FoonPlanner, Plan, PlanRequest } from "../../src/planner/index";
-import { initPlannerFromDisk, loadPlannerFromDisk } from "../../src/planner/node";
-import { readQueries } from "../../src/cli/queries";
-import { sharedPath } from "./helpers";
+import { everyNthDevQuery, foon111Planner } from "./helpers";
 
 let planner: FoonPlanner;
 let requests: PlanRequest[];
 
 beforeAll(() => {
-  initPlannerFromDisk();
-  planner = loadPlannerFromDisk(sharedPath("foon/subgraphs-plain"));
+  planner = foon111Planner();
   // every tenth dev query: 32 plans of every dish type
-  requests = readQueries(sharedPath("recipes/dev"))
-    .filter((_, i) => i % 10 === 0)
-    .map((q) => ({ query: q.query }));
+  requests = everyNthDevQuery(10).map((query) => ({ query }));
 });
 
 const explained = (r: PlanRequest): Plan => planner.plan({ ...r, explain: true });

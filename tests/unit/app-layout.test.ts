@@ -6,20 +6,15 @@ import { explainSteps } from "../../src/app/model/explain";
 import { layoutTree, ROW_GAP } from "../../src/app/model/layout";
 import { planToGraph, type TreeGraph } from "../../src/app/model/tree";
 import type { FoonPlanner, PlanRequest } from "../../src/planner/index";
-import { initPlannerFromDisk, loadPlannerFromDisk } from "../../src/planner/node";
-import { readQueries } from "../../src/cli/queries";
-import { sharedPath } from "./helpers";
+import { everyNthDevQuery, foon111Planner } from "./helpers";
 
 let planner: FoonPlanner;
 let requests: PlanRequest[];
 
 beforeAll(() => {
-  initPlannerFromDisk();
-  planner = loadPlannerFromDisk(sharedPath("foon/subgraphs-plain"));
+  planner = foon111Planner();
   // every fifth dev query: 64 plans of every dish type
-  requests = readQueries(sharedPath("recipes/dev"))
-    .filter((_, i) => i % 5 === 0)
-    .map((q) => ({ query: q.query, explain: true }));
+  requests = everyNthDevQuery(5).map((query) => ({ query, explain: true }));
 });
 
 /** Whether `to` is reachable from `from` along the graph's edges. */

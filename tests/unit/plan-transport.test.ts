@@ -4,20 +4,15 @@
 import { beforeAll, describe, expect, it } from "vitest";
 import { FoonPlanner, type Plan, type PlanRequest } from "../../src/planner/index";
 import { RETRIEVAL_MODES } from "../../src/planner/types";
-import { initPlannerFromDisk, loadPlannerFromDisk } from "../../src/planner/node";
-import { readQueries } from "../../src/cli/queries";
-import { sharedPath } from "./helpers";
+import { everyNthDevQuery, foon111Planner } from "./helpers";
 
 let planner: FoonPlanner;
 let requests: PlanRequest[];
 
 beforeAll(() => {
-  initPlannerFromDisk();
-  planner = loadPlannerFromDisk(sharedPath("foon/subgraphs-plain"));
+  planner = foon111Planner();
   // every fourth dev query, both variants: 160 plans of every dish type
-  requests = readQueries(sharedPath("recipes/dev"))
-    .filter((_, i) => i % 4 === 0)
-    .flatMap((q) => [{ query: q.query }, { query: q.query, modify: false }]);
+  requests = everyNthDevQuery(4).flatMap((query) => [{ query }, { query, modify: false }]);
 });
 
 /** Pairs of units (earlier, later) where a node the earlier one makes is what the later one takes. */
