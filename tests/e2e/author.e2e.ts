@@ -36,15 +36,22 @@ async function waitForCheck(page: Page): Promise<void> {
   await page.locator("#author[data-checked='yes']").waitFor();
 }
 
+const authorUrl = (): string => `${inject("baseUrl")}author.html`;
+
+/** Pastes the recipe, drafts it and waits for the draft to be checked. */
+async function draftRecipe(page: Page): Promise<void> {
+  await page.getByRole("textbox", { name: "Recipe text" }).fill(RECIPE);
+  await page.getByRole("button", { name: "Draft FOON from this recipe" }).click();
+  await waitForCheck(page);
+}
+
 describe("the FOON editor", () => {
   it("drafts a recipe, shows and clears an error, plans with it, and keeps everything across a reload", async () => {
     const context = await browser.newContext({ viewport: { width: 1400, height: 1000 }, acceptDownloads: true });
     const page = await context.newPage();
     const errors = watchErrors(page);
-    await page.goto(`${inject("baseUrl")}author.html`);
-    await page.getByRole("textbox", { name: "Recipe text" }).fill(RECIPE);
-    await page.getByRole("button", { name: "Draft FOON from this recipe" }).click();
-    await waitForCheck(page);
+    await page.goto(authorUrl());
+    await draftRecipe(page);
     const drafted = await text(page).inputValue();
     expect(drafted).toContain("# title: Peanut Butter Banana Toast");
     expect(drafted).toMatch(/^O\tpeanut butter banana toast\t1\t0$/m); // the goal node, dish class 0 (bread)
@@ -90,7 +97,7 @@ describe("the FOON editor", () => {
     expect(await page.locator(".kb-status").getAttribute("data-source")).toBe("custom");
     expect(await page.locator(".panel-reference .goal-label").textContent()).toBe("Peanut Butter Banana Toast");
 
-    await page.goto(`${inject("baseUrl")}author.html`);
+    await page.goto(authorUrl());
     await waitForCheck(page);
     expect(await text(page).inputValue()).toBe(drafted);
     expect(await page.getByRole("textbox", { name: "Recipe text" }).inputValue()).toBe(RECIPE);
@@ -109,7 +116,7 @@ describe("the FOON editor", () => {
     const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
     const page = await context.newPage();
     const errors = watchErrors(page);
-    await page.goto(`${inject("baseUrl")}author.html`);
+    await page.goto(authorUrl());
     await page.locator("#author[data-words='ready']").waitFor(); // the knowledge base's words are loaded
     await text(page).focus();
     await page.keyboard.type("# title: Quick dip");
@@ -125,7 +132,7 @@ describe("the FOON editor", () => {
     await page.close(); // at once: no wait for anything after the last keystroke
 
     const again = await context.newPage();
-    await again.goto(`${inject("baseUrl")}author.html`);
+    await again.goto(authorUrl());
     await waitForCheck(again);
     expect(await text(again).inputValue()).toBe(typed);
     // the reader's own complaint about a motion without inputs, with its place
@@ -138,10 +145,8 @@ describe("the FOON editor", () => {
     const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
     const page = await context.newPage();
     const errors = watchErrors(page);
-    await page.goto(`${inject("baseUrl")}author.html`);
-    await page.getByRole("textbox", { name: "Recipe text" }).fill(RECIPE);
-    await page.getByRole("button", { name: "Draft FOON from this recipe" }).click();
-    await waitForCheck(page);
+    await page.goto(authorUrl());
+    await draftRecipe(page);
     expect(await page.evaluate(unlabelledControls)).toEqual([]);
     const text = "h1, h2, p, label, a, button, li, input";
     for (const theme of ["light", "dark"]) {
@@ -157,7 +162,7 @@ describe("the FOON editor", () => {
     const [a, b] = [await context.newPage(), await context.newPage()];
     const errors = [...watchErrors(a), ...watchErrors(b)];
     for (const page of [a, b]) {
-      await page.goto(`${inject("baseUrl")}author.html`);
+      await page.goto(authorUrl());
       await waitForCheck(page);
     }
     for (const [page, title] of [[a, "Tab A"], [b, "Tab B"]] as const) {
@@ -169,7 +174,7 @@ describe("the FOON editor", () => {
     await b.close();
 
     const page = await context.newPage();
-    await page.goto(`${inject("baseUrl")}author.html`);
+    await page.goto(authorUrl());
     await waitForCheck(page);
     expect(await text(page).inputValue()).toBe("# title: Tab A again");
     await page.getByText("Other texts saved in this browser (1)").click();
@@ -186,7 +191,7 @@ describe("the FOON editor", () => {
     const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
     const page = await context.newPage();
     const errors = watchErrors(page);
-    await page.goto(`${inject("baseUrl")}author.html`);
+    await page.goto(authorUrl());
     const hostile = "<img src=x onerror=\"window.xss=1\">";
     await page.getByRole("textbox", { name: "Recipe text" }).fill(`${hostile} salad\n- 1 ${hostile}\n1. Dice the ${hostile}.\n2. Frobnicate ${hostile}.`);
     await page.getByRole("button", { name: "Draft FOON from this recipe" }).click();
