@@ -1499,7 +1499,7 @@ fn finish_branch<'kb>(
     // whole (of the starting states only 'whole' speaks of the cut: dried fruit may well be diced)
     let node = &tree.slots[last].node;
     let from = food_category(ctx, node);
-    let bought_preserved = kind(s) == Some("dried") || s == "frozen";
+    let bought_preserved = matches!(kind(s), Some("dried" | "frozen"));
     if bought_preserved && from == Category::Whole {
         // asked dried or frozen (dried apricots), bought so: no stone or skin to take off then
         let whole: Vec<String> = food_states(node)
