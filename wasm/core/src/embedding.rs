@@ -30,8 +30,7 @@ pub struct EmbeddingTable {
     /// Row-major, `words.len() * dims`.
     vectors: Vec<f32>,
     stemmer: Stemmer,
-    /// `resolve` of each word asked so far: labels and taxonomy names repeat their words, and
-    /// stemming (with the plural and compound tries) costs thousands of instructions a word.
+    /// `resolve` of each word asked so far: labels and taxonomy names repeat their words.
     resolved: Mutex<HashMap<String, Arc<WordStems>>>,
 }
 

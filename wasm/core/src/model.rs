@@ -52,7 +52,6 @@ impl State {
                 3 + list.iter().map(SmolStr::len).sum::<usize>() + list.len().saturating_sub(1)
             }
         };
-        // inline, without allocating, when short (most states)
         let mut out = SmolStrBuilder::with_capacity(self.name.len() + arg_len);
         let _ = self.write_to(&mut out);
         out.finish()
@@ -90,8 +89,6 @@ impl std::fmt::Display for State {
 
 /// An object node: identity is the label together with the whole set of states.
 /// States are kept sorted so that the same object annotated in another order is the same node.
-/// Its names are `SmolStr`s: nearly all are short enough to sit inline, so that copying a node, which
-/// modifying a tree does all the time, allocates only its lists.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub struct ObjectNode {
     pub label: SmolStr,
@@ -124,7 +121,7 @@ impl ObjectNode {
         })
     }
 
-    /// Ingredients the object holds (`contains {…}`) as written, without allocating (may repeat).
+    /// Ingredients the object holds (`contains {…}`) as written (may repeat).
     pub fn contents(&self) -> impl Iterator<Item = &str> {
         self.states
             .iter()
@@ -136,7 +133,7 @@ impl ObjectNode {
             .flatten()
     }
 
-    /// Every name in any of the object's lists (`contains {…}`, `greased {…}`, ...), without allocating.
+    /// Every name in any of the object's lists (`contains {…}`, `greased {…}`, ...).
     pub fn listed(&self) -> impl Iterator<Item = &str> {
         self.states
             .iter()

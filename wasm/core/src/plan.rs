@@ -144,8 +144,7 @@ pub struct GoalInfo {
     pub dish_class: Option<u32>,
 }
 
-/// An object node as the plan shows it. Its texts, like the other short texts the planner writes
-/// (motions, progress lines), are `SmolStr`s: up to 23 bytes they need no allocation of their own.
+/// An object node as the plan shows it.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub struct PlanNode {
     pub label: SmolStr,
@@ -288,7 +287,9 @@ pub struct Plan {
     /// `false` for the reference task tree as retrieved.
     pub modified: bool,
     pub goal: GoalInfo,
-    /// In a valid execution order: every produced input is made by an earlier unit.
+    /// In a valid execution order: every produced input is made by an earlier unit. Written with
+    /// shared nodes by number (`plan_json`).
+    #[serde(with = "crate::plan_json")]
     pub units: Vec<PlanUnit>,
     /// One per query ingredient (after duplicates were removed), in query order.
     pub ingredients: Vec<IngredientOutcome>,

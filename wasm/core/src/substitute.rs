@@ -673,7 +673,7 @@ const INFER_NEIGHBOURS: usize = 7;
 /// Names whose profiles are kept; the cache starts again when it is full. Every ranking visits every
 /// label of the knowledge base, so the bound must exceed the label count of the largest knowledge base
 /// worth planning on (about 50,000 for FOON-111 scaled 100 times): below it, each ranking recomputes
-/// every profile. A profile is about 300 bytes.
+/// every profile.
 const PROFILE_CACHE_LIMIT: usize = 100_000;
 /// Longer names (no real ingredient) are not cached.
 const MAX_CACHED_NAME: usize = 200;

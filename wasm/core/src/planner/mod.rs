@@ -183,8 +183,7 @@ fn bad(message: String) -> FoonError {
 
 /// `what` is written only for the error (every ingredient is checked; its name is a `format!`).
 fn check_length(text: &str, what: impl FnOnce() -> String) -> Result<()> {
-    // no more characters than bytes: most names are answered without counting
-    if text.len() > limits::MAX_LABEL_CHARS && text.chars().count() > limits::MAX_LABEL_CHARS {
+    if text.chars().count() > limits::MAX_LABEL_CHARS {
         return Err(bad(format!(
             "{} is longer than {} characters",
             what(),

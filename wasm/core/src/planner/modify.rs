@@ -191,7 +191,6 @@ pub(crate) fn modify<'kb>(
     enabled: bool,
     notes: &mut Vec<String>,
 ) -> (Vec<IngredientOutcome>, Vec<String>) {
-    // names are short: kept inline, not allocated
     let reference_labels: Vec<SmolStr> = tree
         .ingredient_labels()
         .into_iter()
@@ -1022,7 +1021,7 @@ fn add_state_unit<'kb>(
 ) -> SlotId {
     let made = tree.add_slot(Cow::Owned(made));
     // room for the utensil: the list does not grow for it
-    let mut inputs = Vec::with_capacity(2);
+    let mut inputs = Vec::new();
     inputs.push((from, true));
     if let Some(t) = ctx.index.utensil_for(motion) {
         inputs.push((utensil_slot(ctx.kb, tree, t), false));
@@ -1128,7 +1127,6 @@ fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
 /// The flag says whether the node is in the wanted state (else it is the ingredient as bought).
 /// Remembered by the index: the ranking follows from the knowledge base alone, the same in every plan.
 fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Picks {
-    // short names are kept inline: no allocation for the look-up
     let key = (ctx.class, SmolStr::new(eq), SmolStr::new(s));
     ctx.index
         .picks
@@ -1400,7 +1398,7 @@ fn add_branch<'kb>(
     let before = tree.slots.len();
     // the reason, written into one string as the branch is made (sized for nearly every reason: it
     // does not grow step by step)
-    let mut how = String::with_capacity(128);
+    let mut how = String::new();
     how.push_str("not in the reference tree: ");
     if eq != o {
         let _ = write!(how, "'{eq}' substituted with '{o}': ");
@@ -1436,7 +1434,7 @@ fn add_branch<'kb>(
     let (added, made) = if ctx.kb.kitchen[n] || r.units.is_empty() {
         (0, None)
     } else {
-        let mut slot_of = starting_utensils(tree, r.units.len());
+        let mut slot_of = starting_utensils(tree);
         tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
         (r.units.len(), slot_of.get(&n).copied())
     };
@@ -1460,10 +1458,10 @@ fn prepared_state(ctx: &Context, o: &str, eq: &str, s: &str) -> Option<&'static 
     foods::prepared_state(food)
 }
 
-/// The utensils the tree starts with, by knowledge-base node: a branch of `units` units shares them
-/// rather than duplicating them (sized for the branch's nodes too, a few per unit).
-fn starting_utensils(tree: &Tree, units: usize) -> HashMap<NodeId, SlotId> {
-    let mut slot_of = HashMap::with_capacity_and_hasher(4 * units + 16, Default::default());
+/// The utensils the tree starts with, by knowledge-base node: a branch shares them rather than
+/// duplicating them.
+fn starting_utensils(tree: &Tree) -> HashMap<NodeId, SlotId> {
+    let mut slot_of = HashMap::default();
     for x in tree.live_slots() {
         if let Some(k) = tree.slots[x].kb {
             if tree.slots[x].utensil && !tree.produced(x) {
@@ -2057,7 +2055,6 @@ fn prune(tree: &mut Tree, keep: &BTreeSet<String>, requested: &HashSet<&str>) ->
     if pruned.is_empty() && !namesake {
         return Vec::new();
     }
-    // asked of every live slot and of every name in every list: a hash set rather than the ordered one
     let going: HashSet<&str> = pruned.iter().map(String::as_str).collect();
     // per slot, whether it is pruned
     let mut gone = vec![false; tree.slots.len()];

@@ -421,13 +421,12 @@ fn walk<'t>(
     relations: &mut Relations<'t>,
 ) -> Walked {
     let tree = relations.tree;
-    // a line has a few states: one allocation each for them and the motions
-    let mut states = Vec::with_capacity(4);
+    let mut states = Vec::new();
     states.push(ProgressState {
         physical_state: state_text(&tree.slots[start].node),
         location: location(&tree.slots[start].node),
     });
-    let mut motions = Vec::with_capacity(4);
+    let mut motions = Vec::new();
     let mut at = start;
     seen.clear();
     seen.push(start);
@@ -810,14 +809,10 @@ const HANDLES: &[&str] = &[
 
 /// Whether a motion moves things into a place ("pour into the bowl", "tear and place onto the tray").
 fn moves_into(motion: &str) -> bool {
-    // a motion is a few bytes: each place compared, without the setup of `str::contains`
-    let has = |word: &[u8]| {
-        motion
-            .as_bytes()
-            .windows(word.len())
-            .any(|w| w[0] == word[0] && w == word)
-    };
-    has(b"pour") || has(b"place") || PUT_MOTIONS.contains(&motion) || motion == "add"
+    motion.contains("pour")
+        || motion.contains("place")
+        || PUT_MOTIONS.contains(&motion)
+        || motion == "add"
 }
 
 /// Where a node is (`in [bowl]` as ("in", "bowl"), `attached to [mixer]` as ("to", "mixer")), unless
@@ -1102,8 +1097,7 @@ fn sentence<'t>(
         }
     }
     let (objects, tools) = objects.split_at(moved);
-    // sized for most sentences: one allocation
-    let mut text = String::with_capacity(64);
+    let mut text = String::new();
     let after = push_verb(&mut text, &unit.motion);
     text.push(' ');
     push_list(&mut text, objects);

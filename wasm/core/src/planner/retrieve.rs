@@ -28,14 +28,13 @@ pub(crate) struct Retrieved {
     pub blocked: Vec<NodeId>,
 }
 
-/// The search's tables, kept by the thread for every plan and cleared for each retrieval instead of
-/// allocated: case 4 retrieves for many candidates, and most are rejected at their first unit.
+/// The search's tables, kept by the thread and cleared for each retrieval: case 4 retrieves for many
+/// candidates.
 pub(crate) struct Search {
     /// The unit chosen to make each node, handed to the result when the search completes.
     chosen: HashMap<NodeId, UnitId>,
     /// The nodes `chosen` makes: most inputs asked about are kitchen items nothing chosen makes.
     made: FixedBitSet,
-    // bit sets over the knowledge base: a few hundred bytes even at 100x FOON-111, cheaper than hashing
     in_tree: FixedBitSet,
     visited: FixedBitSet,
     /// Each node to expand with the unit that needs it (None for the root).
@@ -55,17 +54,17 @@ impl Default for Search {
     /// Sized for a typical recipe's tree, so that the tables do not grow step by step.
     fn default() -> Self {
         Search {
-            chosen: HashMap::with_capacity_and_hasher(64, Default::default()),
+            chosen: HashMap::default(),
             made: FixedBitSet::new(),
             in_tree: FixedBitSet::new(),
             visited: FixedBitSet::new(),
-            queue: VecDeque::with_capacity(64),
-            inputs: Vec::with_capacity(8),
-            stack: Vec::with_capacity(64),
-            seen: HashSet::with_capacity_and_hasher(64, Default::default()),
+            queue: VecDeque::new(),
+            inputs: Vec::new(),
+            stack: Vec::new(),
+            seen: HashSet::default(),
             done: FixedBitSet::new(),
             reached: FixedBitSet::new(),
-            order_stack: Vec::with_capacity(512),
+            order_stack: Vec::new(),
         }
     }
 }
@@ -291,7 +290,6 @@ fn search(
         };
         s.chosen.clear();
         // the last complete retrieval took the table
-        s.chosen.reserve(64);
         for (set, len) in [
             (&mut s.made, kb.nodes.len()),
             (&mut s.in_tree, kb.units.len()),

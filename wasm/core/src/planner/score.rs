@@ -59,7 +59,7 @@ impl<'a> Scorer<'a> {
                 .collect(),
             best_to: RefCell::new(Vec::with_capacity(query.len())),
             // a plan scores a few units (9 on average over the dev queries, at most 37)
-            units: RefCell::new(HashMap::with_capacity_and_hasher(32, Default::default())),
+            units: RefCell::new(HashMap::default()),
         }
     }
 

@@ -205,7 +205,7 @@ pub fn is_food_state(state: &str) -> bool {
 }
 
 /// A node's state as a plan reports it (its match and its progress lines): its food states, else its
-/// physical states, comma-separated (each state looked up once; inline when short, as nearly all are).
+/// physical states, comma-separated.
 pub(crate) fn state_text(node: &ObjectNode) -> SmolStr {
     let current = |s: &&str| !undone(node, s);
     let mut food = node

@@ -344,15 +344,11 @@ impl<'kb> Tree<'kb> {
     /// visited in the order of their contents (so the result never depends on slot numbering).
     /// Units the goal does not need are not listed.
     pub fn order(&self) -> Vec<TUnitId> {
-        // sized once (the tree's units and slots bound them): order runs many times per plan
-        let mut order = Vec::with_capacity(self.units.len());
-        // dense ids: flags by index are cheaper than hashing on this hot path (units done, then slots
-        // seen, in one table)
+        let mut order = Vec::new();
+        // units done, then slots seen, in one table
         let mut marks = vec![false; self.units.len() + self.slots.len()];
         let (done, seen) = marks.split_at_mut(self.units.len());
-        // deep enough for most trees, and small: a request of a kilobyte or more makes the allocator
-        // sweep its free lists
-        let mut stack: Vec<(SlotId, bool)> = Vec::with_capacity(self.units.len() + 8);
+        let mut stack: Vec<(SlotId, bool)> = Vec::new();
         stack.push((self.goal, false));
         while let Some((slot, expanded)) = stack.pop() {
             let Some(u) = self.producer.get(slot).copied().flatten() else {
