@@ -7,7 +7,7 @@ use crate::error::{ErrorCode, FoonError, Result};
 use crate::limits;
 use crate::model::{FunctionalUnit, NodeId, ObjectNode, UnitId, UnitObject};
 use crate::parse::Subgraph;
-use crate::taxonomy::{is_utensil, RAW_STATES};
+use crate::taxonomy::{is_start_state, is_utensil};
 use rustc_hash::{FxHashMap, FxHashSet};
 use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
@@ -314,7 +314,7 @@ fn is_raw(node: &ObjectNode) -> bool {
         && node
             .states
             .iter()
-            .all(|s| s.arg.is_none() && RAW_STATES.contains(&s.name.as_str()))
+            .all(|s| s.arg.is_none() && is_start_state(&s.name))
 }
 
 #[cfg(test)]

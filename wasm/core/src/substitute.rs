@@ -20,6 +20,7 @@ use crate::kb::KnowledgeBase;
 use crate::label::normalize_label;
 use crate::memo::Memo;
 use crate::similarity::{PairMemory, Prepared, Similarity};
+use crate::taxonomy::data_lines;
 use rust_stemmers::{Algorithm, Stemmer};
 use rustc_hash::FxHashMap as HashMap;
 use serde::Serialize;
@@ -192,12 +193,6 @@ pub fn stem_key(phrase: &str) -> Vec<String> {
         .filter(|w| !is_stop_word(w))
         .map(|w| stemmer().stem(&w).into_owned())
         .collect()
-}
-
-fn data_lines(text: &str) -> impl Iterator<Item = &str> {
-    text.lines()
-        .map(|l| l.trim_end_matches('\r'))
-        .filter(|l| !l.trim().is_empty() && !l.starts_with('#'))
 }
 
 /// The project's food taxonomy: categories and their member names keyed by word stems.

@@ -4,21 +4,9 @@
 //! uses, the goal made.
 
 use crate::plan::{Plan, PlanNode, PlanUnit};
+use crate::taxonomy::START_STATES;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
-
-/// States of things a kitchen has before cooking starts (`START_STATES` of the evaluator).
-pub const START_STATES: &[&str] = &[
-    "empty",
-    "clean",
-    "whole",
-    "raw",
-    "off",
-    "off (ready)",
-    "unopened",
-    "closed",
-    "dry",
-];
 
 /// Identity of a node: label, states and contents as sets, container (borrowed from the node).
 pub(crate) type NodeKey<'a> = (&'a str, Vec<&'a str>, Vec<&'a str>, Option<&'a str>);

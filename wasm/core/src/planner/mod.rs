@@ -43,8 +43,8 @@ pub fn plan(
     request: &PlanRequest,
 ) -> Result<Plan> {
     let mut notes = Vec::new();
-    let query = normalize_query(&request.query, &mut notes)?;
-    let overrides = normalize_overrides(&request.overrides)?;
+    let query = prepare_query(&request.query, &mut notes)?;
+    let overrides = prepare_overrides(&request.overrides)?;
     let class = dish_class_of(&query.dish_type);
     // the distinct names (a query has a few; at most `MAX_QUERY_INGREDIENTS`)
     let mut labels: Vec<String> = Vec::with_capacity(query.ingredients.len());
@@ -102,7 +102,7 @@ pub fn plan(
     };
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
-    let (values, order) = tree.normalize();
+    let (values, order) = tree.drop_redundant_units();
     let scheduled = schedule::schedule(kb, index, &mut tree, &values, order);
     if request.modify {
         schedule::confirm_planned(&tree, &scheduled.order, &mut outcomes);
@@ -194,7 +194,7 @@ fn check_length(text: &str, what: impl FnOnce() -> String) -> Result<()> {
 }
 
 /// Normal forms of names and states; identical ingredients removed with a note.
-fn normalize_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
+fn prepare_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
     check_length(&q.dish_type, || "the dish type".into())?;
     if q.ingredients.is_empty() {
         return Err(bad("the query has no ingredients".into()));
@@ -258,7 +258,7 @@ fn normalize_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
     })
 }
 
-fn normalize_overrides(o: &BTreeMap<String, String>) -> Result<BTreeMap<String, String>> {
+fn prepare_overrides(o: &BTreeMap<String, String>) -> Result<BTreeMap<String, String>> {
     let mut out = BTreeMap::new();
     for (k, v) in o {
         check_length(k, || "an override".into())?;

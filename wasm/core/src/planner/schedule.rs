@@ -38,7 +38,7 @@ pub(crate) struct Schedule {
 }
 
 /// Each live slot's plan node, made once per distinct node (plan nodes are costly), and the slots'
-/// values. `value` tells equal nodes apart by id (`Tree::normalize`), so the nodes need no hashing
+/// values. `value` tells equal nodes apart by id (`Tree::drop_redundant_units`), so the nodes need no hashing
 /// here: equal as plan nodes (states and contents as sets) is equal as tree nodes, whose states are
 /// sorted and unique. Values are numbered by first slot, from 1: 0 is every slot no live unit uses
 /// (never looked at).
@@ -135,7 +135,7 @@ fn push_sorted(buf: &mut Vec<Value>, values: impl Iterator<Item = Value>) -> Ran
 
 /// Orders the live units the goal needs so that the evaluator's invariants hold, editing the tree where
 /// the order alone cannot (see the module comment). Returns the order; dropped units are marked dead.
-/// `value` and `order`: the slots' values and the tree's order from `Tree::normalize` (nothing has
+/// `value` and `order`: the slots' values and the tree's order from `Tree::drop_redundant_units` (nothing has
 /// changed since).
 pub(crate) fn schedule(
     kb: &KnowledgeBase,

@@ -107,10 +107,7 @@ struct Entry {
 fn table() -> &'static HashMap<String, Entry> {
     static TABLE: OnceLock<HashMap<String, Entry>> = OnceLock::new();
     TABLE.get_or_init(|| {
-        STATES_TSV
-            .lines()
-            .map(str::trim)
-            .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        crate::taxonomy::data_lines(STATES_TSV)
             .filter_map(|l| {
                 let mut columns = l.split('\t');
                 let state = columns.next()?;

@@ -119,7 +119,7 @@ pub(crate) fn rename_item(list: &mut Vec<SmolStr>, from: &str, to: &str) {
 }
 
 /// Keeps the first use of each slot, in order. In place: a unit has a handful of inputs, and this runs
-/// for every unit of every round of `normalize`.
+/// for every unit of every round of `drop_redundant_units`.
 pub(crate) fn dedup_slots(uses: &mut Vec<(SlotId, bool)>) {
     let mut kept = 0;
     for j in 0..uses.len() {
@@ -625,7 +625,7 @@ impl<'kb> Tree<'kb> {
     /// equal inputs. Repeats until nothing changes; units the goal does not need are dropped. Returns
     /// the slots' values (`values`: the slots live units use afterwards are among those it compared) and
     /// the tree's order as it leaves it.
-    pub fn normalize(&mut self) -> (Vec<usize>, Vec<TUnitId>) {
+    pub fn drop_redundant_units(&mut self) -> (Vec<usize>, Vec<TUnitId>) {
         // slots keep their nodes here: compare values by interned id rather than by node
         let value = self.values();
         let motion = self.motion_ids();
@@ -754,9 +754,9 @@ impl<'kb> Tree<'kb> {
             .collect()
     }
 
-    /// An id per slot, equal for slots with equal nodes, below the number of slots. `normalize` compares
-    /// only slots that live units use (it edits only those units, and only among their slots): every
-    /// other slot gets an id of its own without its node being hashed.
+    /// An id per slot, equal for slots with equal nodes, below the number of slots.
+    /// `drop_redundant_units` compares only slots that live units use (it edits only those units, and
+    /// only among their slots): every other slot gets an id of its own.
     fn values(&self) -> Vec<usize> {
         let live = self.live_marks();
         let mut ids: HashMap<&ObjectNode, usize> =
