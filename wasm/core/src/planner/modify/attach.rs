@@ -1,0 +1,226 @@
+//! Attachment: where a new ingredient branch joins the tree (the unit it is added to).
+
+use super::*;
+
+/// Motions that cannot take more ingredients (a robot cuts one item at a time; what goes into the oven
+/// or under the grill is already assembled).
+pub(super) const SINGLE_ITEM_WORDS: &[&str] = &[
+    "slice",
+    "cut",
+    "chop",
+    "dice",
+    "mince",
+    "peel",
+    "crack",
+    "grate",
+    "julienne",
+    "core",
+    "squeeze",
+    "wash",
+    "rinse",
+    "open",
+    "turn",
+    "preheat",
+    "detach",
+    "attach",
+    "remove",
+    "drain",
+    "shave",
+    "zest",
+    "knead",
+    "roll",
+    "shape",
+    "wrap",
+    "unwrap",
+    "throw",
+    "take out",
+    "tear",
+    "flip",
+    "cover",
+    "bake",
+    "roast",
+    "grill",
+    "toast",
+    "broil",
+    "put inside",
+    "insert",
+    "microwave",
+];
+
+pub(super) fn accepts_more(motion: &str) -> bool {
+    !SINGLE_ITEM_WORDS.iter().any(|w| motion.contains(w))
+}
+
+/// How new ingredients join a dish of each class (first preferred): drinks are poured, salads mixed...
+pub(super) fn dish_pattern(class: Option<u32>) -> &'static [&'static str] {
+    match class.and_then(dish_class_name) {
+        Some("drinks") => &["pour", "blend", "add", "stir", "mix", "shake"],
+        Some("salad") => &["mix", "add", "pick-and-place", "pour", "sprinkle", "stir"],
+        Some("soup") | Some("sauce") => &["pour", "add", "stir", "mix", "sprinkle"],
+        Some("cake") | Some("muffin") | Some("cookie") | Some("bread") | Some("pie")
+        | Some("dessert") => &["mix", "pour", "add", "stir", "beat", "sprinkle", "fold"],
+        Some("omelette") => &["beat", "mix", "pour", "add", "sprinkle", "stir"],
+        Some("rice") | Some("noodle") | Some("pasta") | Some("stir-fry") => {
+            &["add", "stir", "pour", "mix", "sprinkle"]
+        }
+        _ => &["mix", "add", "pour", "stir", "sprinkle"],
+    }
+}
+
+/// Whether a motion takes more ingredients, and its rank in the dish class's pattern (see
+/// `attach_point`). Remembered across plans, per class: every attachment asks it of every unit.
+pub(super) fn motion_fit(class: Option<u32>, motion: &str) -> (bool, usize) {
+    type Fits = HashMap<String, (bool, usize)>;
+    thread_local! {
+        static FIT: RefCell<HashMap<Option<u32>, Fits>> = RefCell::new(HashMap::default());
+    }
+    if let Some(fit) = FIT.with(|m| m.borrow().get(&class)?.get(motion).copied()) {
+        return fit;
+    }
+    let pattern = dish_pattern(class);
+    let pref = pattern
+        .iter()
+        .position(|m| motion.contains(m))
+        .unwrap_or(pattern.len());
+    let fit = (accepts_more(motion), pref);
+    FIT.with(|m| {
+        let mut m = m.borrow_mut();
+        let of_class = m.entry(class).or_default();
+        // a hostile knowledge base may have any number of motions
+        if of_class.len() >= MAX_REMEMBERED_MOTIONS {
+            of_class.clear();
+        }
+        of_class.insert(motion.to_string(), fit);
+    });
+    fit
+}
+
+pub(super) const MAX_REMEMBERED_MOTIONS: usize = 4096;
+
+/// Per slot, whether a unit that cooks `food` (`foods::cooks_food`) takes it or what it becomes on the
+/// way on.
+pub(super) fn cooked_later(tree: &Tree, order: &[TUnitId], food: &str) -> Vec<bool> {
+    let mut cooked = vec![false; tree.slots.len()];
+    // walked backwards, a unit's outputs are settled before its inputs
+    for &v in order.iter().rev() {
+        let unit = &tree.units[v];
+        let cooks = foods::cooks_food(food, &unit.motion);
+        for &(s, _) in &unit.inputs {
+            cooked[s] |= cooks || unit.outputs.iter().any(|&(x, _)| x != s && cooked[x]);
+        }
+    }
+    cooked
+}
+
+/// Whether `food` joining unit `u` is cooked there or later (`cooked`: `cooked_later` for it): what the
+/// unit puts things into (the bowl a ladle fills, not the pot it empties, which may go back on the
+/// stove), else any of its outputs.
+pub(super) fn cooks_what_joins(tree: &Tree, cooked: &[bool], u: TUnitId, food: &str) -> bool {
+    let unit = &tree.units[u];
+    let contents = |x: SlotId| tree.slots[x].node.contents().count();
+    let filled: Vec<SlotId> = unit
+        .outputs
+        .iter()
+        .map(|o| o.0)
+        .filter(|&x| {
+            let label = &tree.slots[x].node.label;
+            let had = unit
+                .inputs
+                .iter()
+                .filter(|i| tree.slots[i.0].node.label == *label)
+                .map(|i| contents(i.0))
+                .max();
+            had.is_some_and(|n| contents(x) > n)
+        })
+        .collect();
+    let cooked_later = |x: &SlotId| cooked[*x];
+    foods::cooks_food(food, &unit.motion)
+        || if filled.is_empty() {
+            unit.outputs.iter().map(|o| o.0).any(|x| cooked_later(&x))
+        } else {
+            filled.iter().any(cooked_later)
+        }
+}
+
+/// The unit a new ingredient joins: one that can take more ingredients, into an output whose contents
+/// reach the goal (`carries`: the tree's `carriers`), by a motion the food can join by (milk poured, not
+/// placed), before a unit that cooks it when it must be cooked (`cooked`: `cooked_later`), where
+/// ingredients of the same kind go in (salt where the pepper is sprinkled), else with the dish's usual
+/// motion, closest to the goal.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn attach_point(
+    ctx: &Context,
+    tree: &Tree,
+    order: &[TUnitId],
+    carries: &[bool],
+    cooked: &[bool],
+    o: &str,
+    c: Category,
+) -> Option<TUnitId> {
+    let goal_label = tree.slots[tree.goal].node.label.as_str();
+    let raw_unsafe = foods::must_cook(o);
+    let food = known_as(ctx, o, o);
+    // closest to the goal first: a unit further from it must do strictly better, so its kin
+    // ingredients are worked out only when they could make it
+    let mut best: Option<(TUnitId, AttachKey)> = None;
+    for &u in order.iter().rev() {
+        let unit = &tree.units[u];
+        let mut holding = unit
+            .outputs
+            .iter()
+            .filter(|x| tree.slots[x.0].node.holds_something())
+            .peekable();
+        if holding.peek().is_none() {
+            continue;
+        }
+        let reaches =
+            holding.any(|x| carries[x.0]) || unit.outputs.iter().any(|x| x.0 == tree.goal);
+        // a unit that adds an ingredient, not one that only moves the dish itself
+        let adds = unit.inputs.iter().any(|i| {
+            let x = &tree.slots[i.0];
+            i.1 && !x.utensil && x.node.label != goal_label
+        });
+        let fits = foods::joins_by(o, &unit.motion);
+        let safe = !raw_unsafe || cooks_what_joins(tree, cooked, u, food);
+        let beats = |kin: bool, pref: usize| {
+            let key = (reaches, fits, safe, adds, kin, usize::MAX - pref);
+            best.as_ref().is_none_or(|(_, b)| key > *b).then_some(key)
+        };
+        // not even with kin ingredients and the dish's first motion: its motion is not looked up
+        if beats(true, 0).is_none() {
+            continue;
+        }
+        let (more, pref) = motion_fit(ctx.class, &unit.motion);
+        if !more || beats(true, pref).is_none() {
+            continue;
+        }
+        let kin = unit.inputs.iter().any(|i| {
+            let x = &tree.slots[i.0];
+            let n = &x.node;
+            !x.utensil
+                && n.label != o
+                && ((!matches!(c, Category::Whole | Category::Other) && food_category(ctx, n) == c)
+                    || {
+                        let sim = ctx.scorer.pair(o, &n.label);
+                        ctx.sim.accepts(sim) && sim < 1.0
+                    })
+        });
+        if let Some(key) = beats(kin, pref) {
+            best = Some((u, key));
+            // a unit adding ingredients of the same kind with the dish's first motion into the dish: none
+            // beats it
+            if key == (true, true, true, true, true, usize::MAX) {
+                break;
+            }
+        }
+    }
+    // nothing that takes more reaches the dish: the unit that makes it takes the food, so its
+    // progress line ends in the dish
+    best.filter(|(_, key)| key.0)
+        .map(|b| b.0)
+        .or_else(|| tree.producer.get(tree.goal).copied().flatten())
+}
+
+/// How `attach_point` ranks a unit: reaches the goal, the food joins by its motion, the food is cooked
+/// after if it must be, the unit adds an ingredient, kin ingredients join there, the dish's motion rank.
+pub(super) type AttachKey = (bool, bool, bool, bool, bool, usize);

@@ -1,0 +1,329 @@
+//! What a cook does with the kept ingredients before they are used: whole produce prepared, trimmings
+//! first, states fitted to the food's form, the dish cooked when nothing cooks it.
+
+use super::*;
+
+/// Produce still whole (asked "peeled", "washed") brought on to the state a cook gives it
+/// (`foods::prepared_state`: a cucumber chopped, an egg cracked) by FOON's motion for that state.
+/// Returns the slot the branch now ends in.
+pub(super) fn prepare_whole<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    eq: &str,
+    o: &str,
+    last: SlotId,
+    how: &mut String,
+) -> SlotId {
+    let food = known_as(ctx, o, eq);
+    let Some(p) = foods::prepared_state(food) else {
+        return last;
+    };
+    let node = &tree.slots[last].node;
+    let whole = node.physical_states().all(|st| {
+        st != p
+            && matches!(
+                category(st),
+                Category::Whole | Category::Trimmed | Category::Other
+            )
+    });
+    let motion = ctx
+        .index
+        .motion_for(p)
+        .filter(|m| cannot_take(ctx, o, eq, m).is_none());
+    let (true, Some(motion)) = (whole, motion) else {
+        return last;
+    };
+    let made = ObjectNode::new(eq, vec![State::plain(p)]);
+    let _ = write!(how, ", then '{motion}' to make it '{p}', as a cook would");
+    add_state_unit(ctx, tree, last, made, &motion)
+}
+
+/// The asked food `o` when the tree takes it to the dish in the piece it is bought as (a block of cheddar
+/// poured into the omelette, asked "creamy"; a chicken baked whole for a salad): brought to the state a
+/// cook gives it (`foods::prepared_state`: grated, chopped) as `restate` brings a food to an asked
+/// state. Foods prepared before anything else (an egg cracked) are the tree's already. Returns the reason.
+pub(super) fn prepare_kept<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    o: &str,
+    eq: &str,
+) -> Option<String> {
+    let food = known_as(ctx, o, eq);
+    let p = foods::prepared_state(food).filter(|_| foods::prepared_first(food).is_none())?;
+    let slots = tree.slots_with_label(o);
+    let in_piece = slots.iter().all(|&x| {
+        tree.slots[x].node.physical_states().all(|st| {
+            matches!(
+                category(st),
+                Category::Whole | Category::Trimmed | Category::Cooked | Category::Other
+            )
+        })
+    });
+    if slots.is_empty() || !in_piece {
+        return None;
+    }
+    let how = restate(ctx, tree, eq, o, p, &slots).ok()?;
+    Some(format!("kept whole by the tree: {how}, as a cook would"))
+}
+
+/// What a cook takes off the asked food before using it (`foods::trims`: an onion's skin before it is
+/// cut, a cherry's stone before it joins anything), where the tree has it still on: a unit doing so
+/// (FOON's motion for the state, else the trim's own verb) comes at that point of the food's own chain
+/// (after it is moved and washed; a peach's stone after it is halved). Returns the states given.
+pub(super) fn trim_first<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    o: &str,
+    eq: &str,
+) -> Vec<&'static str> {
+    let food = known_as(ctx, o, eq);
+    let mut given = Vec::new();
+    for trim in foods::trims(food) {
+        // FOON's motion for the very state ("peel"), else the trim's own verb (not another trim's)
+        let motion = ctx
+            .index
+            .motion_making(trim.state)
+            .unwrap_or(trim.verb)
+            .to_string();
+        if cannot_take(ctx, o, eq, &motion).is_some() {
+            continue;
+        }
+        let starts: Vec<SlotId> = tree
+            .slots_with_label(o)
+            .into_iter()
+            .filter(|&x| !tree.produced(x))
+            .collect();
+        for x in starts {
+            // with the trims given so far, so that a chain shared by two starts is trimmed once
+            let order = tree.order();
+            let Some((at, u)) = trim_point(tree, &order, o, x, trim) else {
+                continue;
+            };
+            let node = &tree.slots[at].node;
+            let mut states: Vec<State> = node
+                .states
+                .iter()
+                .filter(|st| st.arg.is_some() || category(&st.name) != Category::Whole)
+                .cloned()
+                .collect();
+            states.push(State::plain(trim.state));
+            let trimmed = ObjectNode::new(node.label.clone(), states);
+            let made = add_state_unit(ctx, tree, at, trimmed, &motion);
+            for input in tree.units[u].inputs.iter_mut().filter(|i| i.0 == at) {
+                input.0 = made;
+            }
+            // what it becomes no longer has what was taken off ("halved, unpeeled")
+            let order = tree.order();
+            for (y, _) in own_chain(tree, &order, o, made).into_iter().skip(1) {
+                if tree.slots[y]
+                    .node
+                    .states
+                    .iter()
+                    .any(|st| st.name == trim.undone)
+                {
+                    let n = &tree.slots[y].node;
+                    let kept = n.states.iter().filter(|st| st.name != trim.undone).cloned();
+                    tree.slots[y].node =
+                        Cow::Owned(ObjectNode::new(n.label.clone(), kept.collect()));
+                }
+            }
+            if !given.contains(&trim.state) {
+                given.push(trim.state);
+            }
+        }
+    }
+    given
+}
+
+/// The slots of food `o` from `x` on while it stays itself (moved, washed, cut), each with the unit
+/// taking it next.
+pub(super) fn own_chain(
+    tree: &Tree,
+    order: &[TUnitId],
+    o: &str,
+    x: SlotId,
+) -> Vec<(SlotId, TUnitId)> {
+    let mut chain = Vec::new();
+    let mut at = Some(x);
+    while let Some(x) = at.filter(|x| chain.iter().all(|&(y, _)| y != *x)) {
+        let Some(u) = tree.consumers(x, order).next() else {
+            break;
+        };
+        chain.push((x, u));
+        at = tree.units[u]
+            .outputs
+            .iter()
+            .map(|o| o.0)
+            .find(|&y| tree.slots[y].node.label == o);
+    }
+    chain
+}
+
+/// Where on `o`'s own chain from `x` the trim comes: before its first cut (a peel, a hull), once it is
+/// halved (a stone), else before the unit it leaves the chain at (it joins a batter, a blender); None when
+/// the chain has it done already, or a peel finds it cut or joined first, or it was bought preserved.
+pub(super) fn trim_point(
+    tree: &Tree,
+    order: &[TUnitId],
+    o: &str,
+    x: SlotId,
+    trim: &foods::Trim,
+) -> Option<(SlotId, TUnitId)> {
+    let chain = own_chain(tree, order, o, x);
+    let done = |&(y, _): &(SlotId, TUnitId)| {
+        tree.slots[y]
+            .node
+            .physical_states()
+            .any(|st| st == trim.state)
+    };
+    // frozen or dried fruit was bought with its stone and hull taken out, cut fruit too (an avocado
+    // bought chopped has no stone left)
+    let bought_ready = tree.slots[x].node.physical_states().any(|st| {
+        matches!(
+            category(st),
+            Category::Preserved
+                | Category::Cut
+                | Category::FinelyCut
+                | Category::Ground
+                | Category::Liquid
+                | Category::Mixed
+        )
+    });
+    if bought_ready || chain.iter().any(done) {
+        return None;
+    }
+    let whole = |y: SlotId| {
+        tree.slots[y]
+            .node
+            .physical_states()
+            .all(|st| matches!(category(st), Category::Whole | Category::Other))
+    };
+    let first_cut = || {
+        chain
+            .iter()
+            .copied()
+            .find(|&(_, u)| foods::cuts(&tree.units[u].motion))
+    };
+    if trim.before_cut {
+        return first_cut().filter(|&(y, _)| whole(y));
+    }
+    // a stone comes out once the fruit is halved, else before it is cut at all (a cherry pitted
+    // whole, not in slices); a hull before the first cut
+    let halved = chain.iter().copied().find(|&(y, _)| {
+        tree.slots[y]
+            .node
+            .physical_states()
+            .any(|st| st == "halved")
+    });
+    if let Some(point) = halved.or_else(first_cut) {
+        return Some(point);
+    }
+    let &(y, u) = chain.last()?;
+    let joins = !tree.units[u]
+        .outputs
+        .iter()
+        .any(|o2| tree.slots[o2.0].node.label == o);
+    joins.then_some((y, u))
+}
+
+/// The states of the asked food `o` made to fit its form (`foods::Form`): a state it is never in, taken
+/// over from a substitute (tahini "ground, powder" like the sesame it replaced), goes; a food left with no
+/// state as it starts is shown in its form's ("liquid" oil).
+pub(super) fn fit_states_to_form(ctx: &Context, tree: &mut Tree, o: &str) {
+    let Some(form) = foods::form_of(known_as(ctx, o, o)) else {
+        return;
+    };
+    let misfit = |st: &State| st.arg.is_none() && form.never_in.iter().any(|w| *w == st.name);
+    for x in tree.slots_with_label(o) {
+        let starts = !tree.produced(x);
+        let node = &tree.slots[x].node;
+        let mut states: Vec<State> = node
+            .states
+            .iter()
+            .filter(|st| !misfit(st))
+            .cloned()
+            .collect();
+        let bare = !states.iter().any(|st| st.arg.is_none());
+        let shown = form.state_when_none.as_deref().filter(|_| starts && bare);
+        if states.len() == node.states.len() && shown.is_none() {
+            continue;
+        }
+        states.extend(shown.map(State::plain));
+        tree.slots[x].node = Cow::Owned(ObjectNode::new(node.label.clone(), states));
+    }
+}
+
+/// The dish itself cooked last when what is in it must be cooked (the egg of fresh egg noodles, the flour
+/// of a batter) and nothing FOON's recipes do on the way cooks it: the reference recipe ends at the raw dish, and the query asks for one to eat.
+/// The motion is the one FOON's recipes use to cook foods of its kind.
+pub(super) fn cook_dish<'kb>(ctx: &Context<'kb>, tree: &mut Tree<'kb>, notes: &mut Vec<String>) {
+    let node = &tree.slots[tree.goal].node;
+    let label = node.label.clone();
+    let raw = !node
+        .physical_states()
+        .any(|st| category(st) == Category::Cooked);
+    // what is in it must be cooked: flour, or an egg that was not cooked before it joined (each judged
+    // as the food its asked state says it is: fish asked as sauce is fish sauce)
+    let must_cook = node
+        .contents()
+        .any(|c| match foods::cooking(known_as(ctx, c, c)) {
+            foods::Cooking::InDish => true,
+            foods::Cooking::Alone => !cooked_somewhere(tree, c),
+            foods::Cooking::No => false,
+        });
+    if !raw || !must_cook || body_cooked(tree) {
+        return;
+    }
+    let motion = state_motion(ctx, &label, &label, "cooked").unwrap_or_else(|_| "cook".into());
+    let made = ObjectNode::new(label.clone(), vec![State::plain("cooked")]);
+    tree.goal = add_state_unit(ctx, tree, tree.goal, made, &motion);
+    notes.push(format!(
+        "'{label}' is cooked last ('{motion}'): the reference task tree makes it raw"
+    ));
+}
+
+/// Whether some node of `food` in the tree is cooked (the chicken baked before it joined the salad).
+pub(super) fn cooked_somewhere(tree: &Tree, food: &str) -> bool {
+    tree.slots_with_label(food).into_iter().any(|x| {
+        tree.slots[x]
+            .node
+            .physical_states()
+            .any(|st| category(st) == Category::Cooked)
+    })
+}
+
+/// Whether a unit the tree kept from FOON cooks anything: the dish is then cooked on the way (ramen's
+/// broth simmered, pancakes fried), whereas the units modification added cook an ingredient alone (noodles
+/// boiled before they join a raw dough).
+pub(super) fn body_cooked(tree: &Tree) -> bool {
+    tree.alive_units()
+        .any(|(_, u)| u.origin != Origin::Grafted && foods::cooks(&u.motion))
+}
+
+/// A food that must be cooked on its own (`foods::Cooking::Alone`) and is still raw at `last`, cooked
+/// before it joins a dish that does not cook it. Returns the slot the branch now ends in.
+pub(super) fn cook_alone<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    o: &str,
+    last: SlotId,
+    how: &mut String,
+) -> SlotId {
+    let raw = !tree.slots[last]
+        .node
+        .physical_states()
+        .any(|st| category(st) == Category::Cooked);
+    if !raw || foods::cooking(known_as(ctx, o, o)) != foods::Cooking::Alone {
+        return last;
+    }
+    let motion = ctx
+        .index
+        .motion_for("cooked")
+        .unwrap_or_else(|| "cook".into());
+    let made = ObjectNode::new(o, vec![State::plain("cooked")]);
+    let _ = write!(
+        how,
+        ", '{motion}' to make it cooked (the dish does not cook it)"
+    );
+    add_state_unit(ctx, tree, last, made, &motion)
+}

@@ -1,0 +1,318 @@
+//! Section III-C: modification of the reference task tree for the query's ingredients. The driver is
+//! here; each step has its file: `equivalent`, `cases` (Table I), `restate` (cases 3 and 4 in the tree),
+//! `branch` (case 2 copies, case 4 from FOON), `attach`, `finish` and `prune`.
+
+use super::index::{Picks, PlannerIndex};
+use super::retrieve::{retrieve, retrieve_within, Retrieved};
+use super::states::{
+    akin, category, food_state_category, has_food_state, is_food_state, kind, state_text, Category,
+};
+use super::transitions::Verdict;
+use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
+use crate::foods;
+use crate::kb::KnowledgeBase;
+use crate::model::{NodeId, ObjectNode, State, UnitId};
+use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
+use crate::similarity::Similarity;
+use crate::taxonomy::{dish_class_name, is_transfer_motion, is_utensil};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use smol_str::SmolStr;
+use std::borrow::Cow;
+use std::cell::RefCell;
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt::Write;
+
+mod attach;
+mod branch;
+mod cases;
+mod equivalent;
+mod finish;
+mod prune;
+mod restate;
+
+use attach::*;
+use branch::*;
+use cases::*;
+use equivalent::*;
+use finish::*;
+use prune::*;
+use restate::*;
+
+pub(crate) struct Context<'a> {
+    pub kb: &'a KnowledgeBase,
+    pub index: &'a PlannerIndex,
+    pub sim: &'a dyn Similarity,
+    pub class: Option<u32>,
+    pub overrides: &'a BTreeMap<String, String>,
+    /// The reference recipe's subgraph id.
+    pub goal_subgraph: Option<u32>,
+    pub scorer: &'a super::score::Scorer<'a>,
+    pub trace: &'a super::explain::Recorder,
+    /// Asked names the food knowledge reads as another food by their state (basil asked dried is dried
+    /// basil), from `foods::query_readings`.
+    pub readings: HashMap<String, &'static str>,
+}
+
+/// The name the food knowledge judges the asked food `o` by: the food its state says it is, else `o`
+/// when the knowledge knows it, else its equivalent `eq`.
+fn known_as<'a>(ctx: &'a Context, o: &'a str, eq: &'a str) -> &'a str {
+    match ctx.readings.get(o) {
+        Some(r) => r,
+        None if foods::knows(o) => o,
+        None => eq,
+    }
+}
+
+/// Food states of a node (not its place, contents or an appliance's condition).
+pub(crate) fn food_states(node: &ObjectNode) -> Vec<&str> {
+    node.physical_states()
+        .filter(|s| is_food_state(s))
+        .collect()
+}
+
+/// `node_category`, except that a node saying nothing of its food is in the category its ingredient is
+/// sold in (`PlannerIndex::sold_as`: milk in a cup is liquid, flour in a bag ground).
+fn food_category(ctx: &Context, node: &ObjectNode) -> Category {
+    food_state_category(node)
+        .unwrap_or_else(|| ctx.index.sold_as(&node.label).unwrap_or(Category::Whole))
+}
+
+/// What happened to one ingredient while it was being planned.
+struct Work {
+    case: Option<Case>,
+    matched: Option<Match>,
+    alternatives: Vec<Alternative>,
+    low_confidence: bool,
+    overridden: bool,
+    planned: bool,
+    reasons: Vec<String>,
+    /// The label the ingredient has in the final tree.
+    label: String,
+}
+
+pub(crate) fn modify<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    query: &Query,
+    enabled: bool,
+    notes: &mut Vec<String>,
+) -> (Vec<IngredientOutcome>, Vec<String>) {
+    let reference_labels: Vec<SmolStr> = tree
+        .ingredient_labels()
+        .into_iter()
+        .map(SmolStr::new)
+        .collect();
+    let requested: HashSet<&str> = query
+        .ingredients
+        .iter()
+        .map(|i| i.object.as_str())
+        .collect();
+    let mut claimed: HashSet<String> = HashSet::default();
+    // the state each object was first settled in: a name asked twice keeps the first (its one line)
+    let mut settled: HashMap<String, String> = HashMap::default();
+    let mut works: Vec<Work> = Vec::with_capacity(query.ingredients.len());
+    // ingredients to bring from elsewhere in FOON: (work index, equivalent, state)
+    let mut pending: Vec<(usize, String, String)> = Vec::new();
+    for ing in &query.ingredients {
+        let (o, s) = (ing.object.as_str(), ing.state.as_str());
+        let mut w = Work {
+            case: None,
+            matched: None,
+            alternatives: Vec::new(),
+            low_confidence: false,
+            overridden: false,
+            planned: false,
+            reasons: Vec::new(),
+            label: o.to_string(),
+        };
+        let read = read_as(ctx, o, s);
+        if let Some(r) = read {
+            w.reasons.push(format!("'{o}' {s} read as '{r}'"));
+        }
+        let name = read.unwrap_or(o);
+        let Some((eq, sim)) = equivalent(ctx, o, name, &reference_labels, &mut w) else {
+            works.push(w);
+            continue;
+        };
+        let s = planned_state(ctx, o, &eq, s);
+        w.low_confidence = eq != o && ctx.sim.low_confidence(name, &eq, sim);
+        let slots = tree.slots_with_label(&eq);
+        if !enabled {
+            let in_state = best_state_slot(tree, &slots, s, ctx.index.sold_as(&eq));
+            judge_unmodified(tree, o, &eq, sim, &slots, in_state, &mut w);
+            works.push(w);
+            continue;
+        }
+        if slots.is_empty() {
+            // case 4 from elsewhere in FOON (or an exact FOON label the reference tree lacks): attached
+            // after pruning, so that it joins a unit that stays
+            pending.push((works.len(), eq.clone(), s.to_string()));
+            claimed.insert(eq.clone());
+            w.matched = Some(Match {
+                label: eq.as_str().into(),
+                state: SmolStr::default(),
+                similarity: sim,
+            });
+            works.push(w);
+            continue;
+        }
+        // the equivalent is in the tree: substitute (cases 2, 4) or keep (cases 1, 3)
+        w.matched = Some(Match {
+            label: eq.as_str().into(),
+            state: tree_state(tree, &slots, s, ctx.index.sold_as(&eq)),
+            similarity: sim,
+        });
+        if eq != o {
+            if requested.contains(eq.as_str()) || claimed.contains(&eq) {
+                match copy_branch(tree, &eq, o) {
+                    Some(_) => w.reasons.push(format!(
+                        "'{eq}' is also needed: its branch was copied for '{o}'"
+                    )),
+                    None => {
+                        // no branch of its own to copy: one from elsewhere in FOON, after pruning
+                        w.reasons.push(format!(
+                            "'{eq}' is also needed and has no branch of its own to copy"
+                        ));
+                        pending.push((works.len(), eq.clone(), s.to_string()));
+                        works.push(w);
+                        continue;
+                    }
+                }
+            } else {
+                tree.rename_everywhere(&eq, o);
+                w.reasons.push(format!("'{eq}' substituted with '{o}'"));
+            }
+            claimed.insert(eq.clone());
+        }
+        claimed.insert(o.to_string());
+        // renaming or copying gave `o` its slots; else they are the ones found for `eq`
+        let slots = if eq == o {
+            slots
+        } else {
+            tree.slots_with_label(o)
+        };
+        settle_state(ctx, tree, &eq, o, s, &slots, &mut settled, &mut w);
+        w.planned = true;
+        works.push(w);
+    }
+
+    let mut removed = Vec::new();
+    let any_planned = works.iter().any(|w| w.planned) || !pending.is_empty();
+    if enabled && !any_planned {
+        notes.push(
+            "no ingredient of the query could be planned: the reference task tree is kept unpruned"
+                .to_string(),
+        );
+    } else if enabled {
+        let keep: BTreeSet<String> = works
+            .iter()
+            .filter(|w| w.planned)
+            .map(|w| w.label.clone())
+            .collect();
+        ctx.trace.record(|t| t.before_pruning(tree));
+        removed = prune(tree, &keep, &requested);
+        tree.drop_unneeded();
+        ctx.trace.record(|t| t.pruned_from(tree, &removed));
+        let present = tree.ingredient_labels();
+        // an asked-for ingredient whose units served only pruned ones (butter spread on the bread that
+        // was not asked for) comes back as a branch of its own, like a case-4 ingredient
+        for (i, w) in works.iter().enumerate() {
+            if w.planned && present.binary_search(&w.label.as_str()).is_err() {
+                let eq = w
+                    .matched
+                    .as_ref()
+                    .map_or(w.label.clone(), |m| m.label.to_string());
+                let s = planned_state(ctx, &w.label, &eq, &query.ingredients[i].state);
+                pending.push((i, eq, s.to_string()));
+            }
+        }
+        pending.sort_by_key(|p| p.0);
+        for (i, eq, s) in pending {
+            let w = &mut works[i];
+            let o = query.ingredients[i].object.as_str();
+            let lost = w.planned;
+            let slots = tree.slots_with_label(o);
+            if !lost && !slots.is_empty() {
+                // an earlier ingredient of the same name brought it: one branch serves both
+                if let Some(m) = w.matched.as_mut() {
+                    m.state = tree_state(tree, &slots, &s, ctx.index.sold_as(&eq));
+                }
+                settle_state(ctx, tree, &eq, o, &s, &slots, &mut settled, w);
+                continue;
+            }
+            // a case-2 substitute was renamed in the tree already: its branch comes from `eq` again
+            match add_branch(ctx, tree, &eq, o, &s) {
+                Ok((state, reason)) => {
+                    if lost {
+                        w.reasons.push(format!(
+                            "its units went with the pruned ingredients: {reason}"
+                        ));
+                    } else {
+                        w.case = Some(Case::EquivalentInOtherState);
+                        if let Some(m) = w.matched.as_mut() {
+                            m.state = state;
+                        }
+                        w.planned = true;
+                        w.reasons.push(reason);
+                    }
+                }
+                Err(reason) => {
+                    if lost {
+                        w.planned = false;
+                        w.reasons.push(format!(
+                            "its units went with the pruned ingredients and it could not be added again: {reason}"
+                        ));
+                    } else {
+                        w.matched = None;
+                        w.reasons.push(reason);
+                    }
+                }
+            }
+        }
+        for w in works.iter_mut().filter(|w| w.planned) {
+            let eq = w
+                .matched
+                .as_ref()
+                .map_or(w.label.as_str(), |m| m.label.as_str());
+            if let Some(reason) = prepare_kept(ctx, tree, &w.label, eq) {
+                w.reasons.push(reason);
+            }
+            let given = trim_first(ctx, tree, &w.label, eq);
+            if !given.is_empty() {
+                w.reasons.push(format!(
+                    "{} before it is used, as a cook would",
+                    given.join(", then ")
+                ));
+            }
+            fit_states_to_form(ctx, tree, &w.label);
+        }
+        cook_dish(ctx, tree, notes);
+    } else {
+        notes.push("modification off: the reference task tree as retrieved".to_string());
+    }
+    let outcomes = query
+        .ingredients
+        .iter()
+        .zip(works)
+        .map(|(ing, w)| IngredientOutcome {
+            object: ing.object.as_str().into(),
+            state: ing.state.as_str().into(),
+            case: w.case.map(Case::number),
+            matched: w.matched,
+            alternatives: w.alternatives,
+            low_confidence: w.low_confidence,
+            overridden: w.overridden,
+            status: if w.planned {
+                Status::Planned
+            } else {
+                Status::Unplannable
+            },
+            reason: if w.reasons.is_empty() {
+                None
+            } else {
+                Some(w.reasons.join("; "))
+            },
+        })
+        .collect();
+    (outcomes, removed)
+}

@@ -1,0 +1,297 @@
+//! Pruning (section III-C): what was not asked for leaves the tree, its names leave the lists of
+//! contents.
+
+use super::*;
+
+/// Removes from every slot's lists of contents the items `drops` (slot, item) says go; units touching a
+/// changed node are marked renamed.
+pub(super) fn drop_contents(tree: &mut Tree, drops: &dyn Fn(SlotId, &str) -> bool) {
+    let mut touched = vec![false; tree.slots.len()];
+    for (x, (slot, touched)) in tree.slots.iter_mut().zip(touched.iter_mut()).enumerate() {
+        if !slot.node.listed().any(|item| drops(x, item)) {
+            continue;
+        }
+        retain_contents(&mut slot.node, &|item| !drops(x, item));
+        *touched = true;
+    }
+    for u in tree.units.iter_mut() {
+        if u.alive
+            && u.origin == Origin::Reference
+            && u.inputs
+                .iter()
+                .chain(u.outputs.iter())
+                .any(|x| touched[x.0])
+        {
+            u.origin = Origin::Renamed;
+        }
+    }
+}
+
+/// Whether a unit with these inputs handles any ingredient: a non-utensil input or a listed content
+/// (`gone` marks the slots pruned).
+pub(super) fn handles_any(tree: &Tree, inputs: &[(SlotId, bool)], gone: &[bool]) -> bool {
+    inputs.iter().any(|&(x, _)| handles(tree, x, gone))
+}
+
+/// Whether a slot is an ingredient or holds one (`gone` marks the slots pruned).
+pub(super) fn handles(tree: &Tree, x: SlotId, gone: &[bool]) -> bool {
+    let slot = &tree.slots[x];
+    !gone[x] && (!slot.utensil || slot.node.holds_something())
+}
+
+/// The names a unit's outputs list in their contents that none of its inputs lists or is.
+pub(super) fn made_in(
+    tree: &Tree,
+    inputs: &[(SlotId, bool)],
+    outputs: &[(SlotId, bool)],
+) -> Vec<String> {
+    let known = |item: &str| {
+        inputs.iter().any(|&(x, _)| {
+            let node = &tree.slots[x].node;
+            node.label == item || node.listed().any(|l| l == item)
+        })
+    };
+    let mut made: Vec<String> = outputs
+        .iter()
+        .flat_map(|&(x, _)| tree.slots[x].node.listed())
+        .filter(|item| !known(item))
+        .map(str::to_string)
+        .collect();
+    made.sort_unstable();
+    made.dedup();
+    made
+}
+
+/// The slots of the ingredient the dish is named after (black beans cooked from black beans): those of
+/// the goal's label no unit makes, taken only by units before the dish's side. The dish's side (marked in
+/// the second vector) is the outputs of the first unit that makes the dish with something in it (the
+/// beans cooked with onion), or else makes the goal, and of every unit after it.
+pub(super) fn namesake(
+    tree: &Tree,
+    order: &[TUnitId],
+    live: &[SlotId],
+) -> (Vec<SlotId>, Vec<bool>) {
+    let goal = tree.goal;
+    let dish = tree.slots[goal].node.label.as_str();
+    let makes_dish = |u: TUnitId| {
+        tree.producer[goal] == Some(u)
+            || tree.units[u].outputs.iter().any(|&(x, _)| {
+                let node = &tree.slots[x].node;
+                node.label == dish && node.holds_something()
+            })
+    };
+    let from = order
+        .iter()
+        .position(|&u| makes_dish(u))
+        .unwrap_or(order.len());
+    let mut dish_side = vec![false; tree.slots.len()];
+    // 1: taken before the dish's side; 2: taken by it
+    let mut taken = vec![0u8; tree.slots.len()];
+    for (k, &u) in order.iter().enumerate() {
+        for &(x, _) in &tree.units[u].inputs {
+            taken[x] |= if k < from { 1 } else { 2 };
+        }
+        if k >= from {
+            for &(x, _) in &tree.units[u].outputs {
+                dish_side[x] = true;
+            }
+        }
+    }
+    // a dish node whose link to the unit making it FOON lost (a brownie cut, not the one baked) is the
+    // dish, not an ingredient
+    let slots = live
+        .iter()
+        .copied()
+        .filter(|&x| tree.slots[x].node.label == dish && !tree.produced(x) && taken[x] == 1)
+        .collect();
+    (slots, dish_side)
+}
+
+/// Removes every starting ingredient not asked for (`keep`: planned so far; `requested`: the query's
+/// names, some still to be brought in), with the units that only served it; containers that held it
+/// pass on unchanged, and it leaves every `contains {…}` list. Returns the removed labels.
+/// A dish named after one of its ingredients (black beans cooked from black beans) keeps its name: from
+/// the unit that makes it on, the name means the dish, and nodes and lists there stay.
+pub(super) fn prune(
+    tree: &mut Tree,
+    keep: &BTreeSet<String>,
+    requested: &HashSet<&str>,
+) -> Vec<String> {
+    let order = tree.order();
+    // sized once (the slots bound the live ones, and these names and the names listed with them
+    // nearly always): a filtered list would grow step by step
+    let mut live: Vec<SlotId> = Vec::with_capacity(tree.slots.len());
+    live.extend(tree.live_slots());
+    // what a unit gives out is made, whether or not it is the unit chosen to make it (the broth FOON's
+    // ladle leaves in the bowl beside the ramen is not a starting ingredient)
+    let mut made = vec![false; tree.slots.len()];
+    for (_, u) in tree.alive_units() {
+        for &(x, _) in &u.outputs {
+            made[x] = true;
+        }
+    }
+    // only the labels that go are copied
+    let mut starting: Vec<&str> = Vec::with_capacity(tree.slots.len());
+    starting.extend(
+        live.iter()
+            .filter(|&&x| !made[x] && !tree.slots[x].utensil)
+            .map(|&x| tree.slots[x].node.label.as_str()),
+    );
+    // names that only the lists of starting nodes give are ingredients too (FOON's "contain {butter}"
+    // makes no node of the butter a skillet holds, and the french toast made in it lists butter): not
+    // asked for, they go. A name a unit's output lists first is made there (the egg white a crack
+    // leaves in the bowl).
+    // (asked-for names are set aside first: they are nearly all a starting node lists)
+    let named = |item: &str| live.iter().any(|&x| tree.slots[x].node.label == item);
+    for &x in live.iter().filter(|&&x| !made[x]) {
+        let unnamed =
+            |item: &&str| !requested.contains(item) && !keep.contains(*item) && !named(item);
+        starting.extend(tree.slots[x].node.listed().filter(unnamed));
+    }
+    starting.sort_unstable();
+    starting.dedup();
+    let mut pruned: BTreeSet<String> = starting
+        .into_iter()
+        .filter(|&l| !keep.contains(l))
+        .map(str::to_string)
+        .collect();
+    let goal = tree.goal;
+    let dish = tree.slots[goal].node.label.clone();
+    let (namesake_slots, dish_side) = if pruned.remove(dish.as_str()) {
+        namesake(tree, &order, &live)
+    } else {
+        Default::default()
+    };
+    let namesake = !namesake_slots.is_empty();
+    if pruned.is_empty() && !namesake {
+        return Vec::new();
+    }
+    let going: HashSet<&str> = pruned.iter().map(String::as_str).collect();
+    // per slot, whether it is pruned
+    let mut gone = vec![false; tree.slots.len()];
+    // per unit, whether it handled an ingredient before pruning
+    let mut had = vec![false; tree.units.len()];
+    // per unit, whether something it moved did
+    let mut moved_food = vec![false; tree.units.len()];
+    for &u in &order {
+        let inputs = &tree.units[u].inputs;
+        had[u] = handles_any(tree, inputs, &gone);
+        moved_food[u] = inputs.iter().any(|&(x, m)| m && handles(tree, x, &gone));
+    }
+    // the dish's own name stays in the lists of its side, where it means the dish
+    drop_contents(tree, &|x, item| {
+        going.contains(item) || (namesake && item == dish && !dish_side[x])
+    });
+    for &x in &live {
+        gone[x] = going.contains(tree.slots[x].node.label.as_str());
+    }
+    for &x in &namesake_slots {
+        gone[x] = true;
+    }
+    // labels that go with the units removed below, beyond those already dropped from the contents
+    let mut with_units: BTreeSet<String> = BTreeSet::new();
+    let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
+    let resolve = |alias: &HashMap<SlotId, SlotId>, mut s: SlotId| {
+        for _ in 0..10_000 {
+            match alias.get(&s) {
+                Some(&t) => s = t,
+                None => break,
+            }
+        }
+        s
+    };
+    // a unit's uses as they are now, in buffers: a kept unit's lists shrink into their own room
+    let mut inputs: Vec<(SlotId, bool)> = Vec::new();
+    let mut outputs: Vec<(SlotId, bool)> = Vec::new();
+    for &u in &order {
+        inputs.clear();
+        inputs.extend(
+            tree.units[u]
+                .inputs
+                .iter()
+                .map(|&(x, m)| (resolve(&alias, x), m))
+                .filter(|i| !gone[i.0]),
+        );
+        outputs.clear();
+        outputs.extend(tree.units[u].outputs.iter().filter(|o| !gone[o.0]));
+        let makes_goal = outputs.iter().any(|o| o.0 == goal);
+        let lost_all = had[u] && !handles_any(tree, &inputs, &gone);
+        // nothing new comes out: every output is one of the inputs as they are now
+        let no_op = outputs.iter().all(|o| {
+            inputs
+                .iter()
+                .any(|i| i.0 == o.0 || tree.slots[i.0].node == tree.slots[o.0].node)
+        });
+        // a unit whose moved things all lost their food (an empty bowl poured into the pot, the egg
+        // cracked into the broth) acts on nothing, and gives back only things of the names it took
+        let label = |x: SlotId| tree.slots[x].node.label.as_str();
+        let moves_nothing = moved_food[u]
+            && !inputs.iter().any(|&(x, m)| m && handles(tree, x, &gone))
+            && outputs
+                .iter()
+                .all(|o| inputs.iter().any(|i| label(i.0) == label(o.0)));
+        if (lost_all || no_op || moves_nothing || outputs.is_empty()) && !makes_goal {
+            tree.units[u].alive = false;
+            for &(x, _) in &outputs {
+                let utensil = tree.slots[x].utensil;
+                let node = &tree.slots[x].node;
+                let same = inputs
+                    .iter()
+                    .find(|i| tree.slots[i.0].node == *node)
+                    .or_else(|| {
+                        inputs
+                            .iter()
+                            .find(|i| tree.slots[i.0].node.label == node.label)
+                    });
+                match same {
+                    Some(&(i, _)) if i != x => {
+                        alias.insert(x, i);
+                    }
+                    Some(_) => {}
+                    None => {
+                        let label = node.label.clone();
+                        gone[x] = true;
+                        if !utensil
+                            && !keep.contains(label.as_str())
+                            && !going.contains(label.as_str())
+                        {
+                            with_units.insert(label.to_string());
+                        }
+                    }
+                }
+            }
+            // what only it put into a container (the egg white and yolk a crack leaves in the pot) goes
+            // with it, from the units after it as well
+            let made_here = made_in(tree, &inputs, &outputs);
+            let stays = |l: &String| {
+                keep.contains(l.as_str()) || requested.contains(l.as_str()) || *l == dish
+            };
+            for item in made_here.into_iter().filter(|l| !stays(l)) {
+                for &x in &live {
+                    gone[x] |= tree.slots[x].node.label == item;
+                }
+                with_units.insert(item);
+            }
+            continue;
+        }
+        let unit = &mut tree.units[u];
+        unit.inputs.clone_from(&inputs);
+        dedup_slots(&mut unit.inputs);
+        unit.outputs.clone_from(&outputs);
+    }
+    // the goal may have been passed through a removed unit
+    // labels made only by removed units leave the lists of contents as well (the slots still live are
+    // listed only when there are such labels)
+    if !with_units.is_empty() {
+        let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
+        with_units.retain(|l| !still.iter().any(|&x| tree.slots[x].node.label == *l));
+        if !with_units.is_empty() {
+            drop_contents(tree, &|_, item| with_units.contains(item));
+            pruned.extend(with_units);
+        }
+    }
+    if namesake {
+        pruned.insert(dish.to_string());
+    }
+    pruned.into_iter().collect()
+}
