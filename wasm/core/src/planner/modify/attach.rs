@@ -68,34 +68,15 @@ pub(super) fn dish_pattern(class: Option<u32>) -> &'static [&'static str] {
 }
 
 /// Whether a motion takes more ingredients, and its rank in the dish class's pattern (see
-/// `attach_point`). Remembered across plans, per class: every attachment asks it of every unit.
+/// `attach_point`).
 pub(super) fn motion_fit(class: Option<u32>, motion: &str) -> (bool, usize) {
-    type Fits = HashMap<String, (bool, usize)>;
-    thread_local! {
-        static FIT: RefCell<HashMap<Option<u32>, Fits>> = RefCell::new(HashMap::default());
-    }
-    if let Some(fit) = FIT.with(|m| m.borrow().get(&class)?.get(motion).copied()) {
-        return fit;
-    }
     let pattern = dish_pattern(class);
-    let pref = pattern
+    let rank = pattern
         .iter()
         .position(|m| motion.contains(m))
         .unwrap_or(pattern.len());
-    let fit = (accepts_more(motion), pref);
-    FIT.with(|m| {
-        let mut m = m.borrow_mut();
-        let of_class = m.entry(class).or_default();
-        // a hostile knowledge base may have any number of motions
-        if of_class.len() >= MAX_REMEMBERED_MOTIONS {
-            of_class.clear();
-        }
-        of_class.insert(motion.to_string(), fit);
-    });
-    fit
+    (accepts_more(motion), rank)
 }
-
-pub(super) const MAX_REMEMBERED_MOTIONS: usize = 4096;
 
 /// Per slot, whether a unit that cooks `food` (`foods::cooks_food`) takes it or what it becomes on the
 /// way on.

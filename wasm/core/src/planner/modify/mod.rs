@@ -18,7 +18,6 @@ use crate::taxonomy::{dish_class_name, is_transfer_motion, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::borrow::Cow;
-use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write;
 
