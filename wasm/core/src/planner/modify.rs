@@ -338,6 +338,7 @@ pub(crate) fn modify<'kb>(
             // a case-2 substitute was renamed in the tree already: its branch comes from `eq` again
             match add_branch(ctx, tree, &eq, o, &s) {
                 Ok((state, reason)) => {
+                    settled.entry(o.to_string()).or_insert_with(|| s.clone());
                     if lost {
                         w.reasons.push(format!(
                             "its units went with the pruned ingredients: {reason}"
@@ -429,7 +430,7 @@ fn settle_state<'kb>(
 ) {
     let sold = ctx.index.sold_as(eq);
     let in_state = best_state_slot(tree, slots, s, sold);
-    let state_ok = in_state.is_some();
+    let state_ok = in_state.is_some() || shown_by_form(tree, known_as(ctx, o, eq), s, slots);
     w.case = Some(match (eq == o, state_ok) {
         (true, true) => 1,
         (false, true) => 2,
@@ -470,6 +471,22 @@ fn settle_state<'kb>(
         .entry(o.to_string())
         .or_insert_with(|| s.to_string());
     w.planned = true;
+}
+
+/// Whether state `s` is the one `food`'s form shows it in, and the tree has it only in states its form is
+/// never in (a cream cheese "block"): fitting the states to the form (`fit_states_to_form`) gives it.
+fn shown_by_form(tree: &Tree, food: &str, s: &str, slots: &[SlotId]) -> bool {
+    let Some(form) = foods::form_of(food) else {
+        return false;
+    };
+    form.state_when_none.as_deref() == Some(s)
+        && slots.iter().all(|&x| {
+            tree.slots[x]
+                .node
+                .physical_states()
+                .filter(|st| is_food_state(st))
+                .all(|st| form.never_in.iter().any(|w| w == st))
+        })
 }
 
 /// The food an ambiguous name is looked up as, by its state (pepper diced: bell pepper), when the
@@ -882,19 +899,24 @@ fn restate<'kb>(
     })
 }
 
-/// Where on `o`'s own chain from `leaf` a change of state can come: past the units that unwrap it or
-/// give it the preparation that comes before anything else (an egg is cracked before it is beaten;
-/// cheese is unwrapped before it is grated), so that nothing is done to it in its shell or packet; never
-/// past the unit it leaves its chain at.
+/// Where on `o`'s own chain from `leaf` a change of state can come: past the units that unwrap it, wash
+/// it or give it the preparation that comes before anything else (an egg is cracked before it is beaten;
+/// cheese is unwrapped before it is grated; berries are washed, then sliced), so that nothing is done to
+/// it in its shell or packet; never past the unit it leaves its chain at.
 fn past_handling(ctx: &Context, tree: &Tree, order: &[TUnitId], o: &str, leaf: SlotId) -> SlotId {
     let first = foods::prepared_first(known_as(ctx, o, o));
-    let handling =
-        |motion: &str| foods::unwraps(motion) || first.is_some_and(|p| p.starts_with(motion));
+    let handling = |motion: &str| {
+        foods::unwraps(motion)
+            || foods::washes(motion)
+            || first.is_some_and(|p| p.starts_with(motion))
+    };
     let chain = own_chain(tree, order, o, leaf);
-    let mut at = leaf;
-    // the last unit of the chain takes it on: a change of state comes before it at the latest
+    let mut past = leaf;
+    // the last unit of the chain takes it on: a change of state comes before it at the latest; moves
+    // between handlings (into the bowl it is washed in) are passed over
     for &(_, u) in chain.iter().take(chain.len().saturating_sub(1)) {
-        if !handling(&tree.units[u].motion) {
+        let motion = &tree.units[u].motion;
+        if !handling(motion) && !is_transfer_motion(motion) {
             break;
         }
         let Some(&(next, _)) = tree.units[u]
@@ -904,9 +926,11 @@ fn past_handling(ctx: &Context, tree: &Tree, order: &[TUnitId], o: &str, leaf: S
         else {
             break;
         };
-        at = next;
+        if handling(motion) {
+            past = next;
+        }
     }
-    at
+    past
 }
 
 /// The motion bringing `o` (`eq` in FOON) into state `s`: the one FOON uses most for the state, if
@@ -1513,7 +1537,8 @@ fn finish_branch<'kb>(
     }
     let node = &tree.slots[last].node;
     let as_sold = ctx.index.sold_as(eq) == Some(c) && !has_food_state(node);
-    if !(in_state || as_sold || c == Category::Other) {
+    let shown = shown_by_form(tree, known_as(ctx, o, eq), s, &[last]);
+    if !(in_state || as_sold || shown || c == Category::Other) {
         if !from.reaches(c) && (c == Category::Whole || !c.is_starting()) {
             let _ = write!(
                 how,
