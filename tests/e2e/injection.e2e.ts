@@ -11,6 +11,7 @@ import type { Browser, Page } from "playwright-core";
 import { ROOT } from "../../src/planner/node";
 import { launch, screenshot, watchErrors } from "./browser";
 import { downloadOf, waitForPlan } from "./app-helpers";
+import { setTrap, type PayloadTrap } from "./payload-trap";
 
 // Payloads are in the normal form of the reader (lower case, no underscores), so they reach the page as
 // written. Each would set `window.xss` (or open a dialog) if it ever became markup.
@@ -53,86 +54,17 @@ afterAll(async () => {
   await browser?.close();
 });
 
-interface Trap {
-  xss: unknown;
-  violations: string[];
-  dialogs: string[];
-}
-
-interface TrappedPage {
+interface TrappedPage extends PayloadTrap {
   page: Page;
-  /** What payloads did: the `xss` global, CSP violations reported, dialogs opened. */
-  trap(): Promise<Trap>;
-  /** Resolves once the page has handled anything a payload could have set off (see `settle`). */
-  settled(): Promise<void>;
   errors: string[];
 }
 
-/** The console's report of a blocked inline event handler. */
-const BLOCKED_HANDLER = /^console: Executing inline event handler violates the following Content Security Policy directive/;
-
-/**
- * A probe image with the payloads' own `src=x` (one image resource, so its error event comes after theirs) and
- * an inline error handler, which the policy blocks and reports at the probe (so its report comes after theirs).
- * Resolves when both have come. Were the policy ever to let the handler run, `xss` would be "probe".
- */
-async function settle(page: Page): Promise<void> {
-  await page.evaluate(
-    () =>
-      new Promise<void>((resolve) => {
-        const probe = document.createElement("img");
-        let pending = 2;
-        const done = (): void => {
-          pending -= 1;
-          if (pending > 0) return;
-          probe.remove();
-          resolve();
-        };
-        probe.setAttribute("onerror", "window.xss = 'probe'");
-        probe.addEventListener("securitypolicyviolation", (e) => {
-          e.stopPropagation(); // the probe's own report stays out of the trap
-          done();
-        });
-        probe.addEventListener("error", () => {
-          if ((window as unknown as { xss?: unknown }).xss === "probe") pending = 1; // it ran: no report will come
-          done();
-        });
-        probe.src = "x";
-        document.body.append(probe);
-      }),
-  );
-}
-
-/** A page that records dialogs, CSP violations and the `xss` global from before any script of the app runs. */
+/** A page in a context of its own, trapped from before any script of the app runs. */
 async function trappedPage(): Promise<TrappedPage> {
   const context = await browser.newContext({ viewport: { width: 1400, height: 1000 }, acceptDownloads: true });
   const page = await context.newPage();
-  const dialogs: string[] = [];
-  page.on("dialog", (d) => {
-    dialogs.push(d.message());
-    void d.dismiss();
-  });
-  await page.addInitScript(() => {
-    const w = window as unknown as { cspViolations: string[] };
-    w.cspViolations = [];
-    document.addEventListener("securitypolicyviolation", (e) => w.cspViolations.push(`${e.violatedDirective}: ${e.sample}`));
-  });
-  const trap = async (): Promise<Trap> => {
-    const seen = await page.evaluate(() => {
-      const w = window as unknown as { xss?: unknown; cspViolations: string[] };
-      return { xss: w.xss ?? null, violations: w.cspViolations };
-    });
-    return { ...seen, dialogs };
-  };
   const errors = watchErrors(page);
-  const settled = async (): Promise<void> => {
-    await settle(page);
-    // the console's report of the probe's blocked handler (the last such report: the probe's came last)
-    const probe = errors.map((e) => BLOCKED_HANDLER.test(e)).lastIndexOf(true);
-    if (probe < 0) throw new Error(`the probe's blocked handler was not reported on the console: ${errors.join("; ")}`);
-    errors.splice(probe, 1);
-  };
-  return { page, trap, settled, errors };
+  return { page, errors, ...(await setTrap(page, errors)) };
 }
 
 /** Elements or event-handler attributes that can only have come from a payload. */
