@@ -16,3 +16,11 @@ export async function downloadOf(page: Page, click: () => Promise<void>): Promis
   const path = await download.path();
   return { name: download.suggestedFilename(), bytes: readFileSync(path) };
 }
+
+/**
+ * Resolves once the page has drawn two more frames: Cytoscape draws on animation frames, so a screenshot taken
+ * after shows the graph (screenshots are artefacts for people; no assertion rests on this).
+ */
+export async function painted(page: Page): Promise<void> {
+  await page.evaluate(() => new Promise<void>((resolve) => requestAnimationFrame(() => requestAnimationFrame(() => resolve()))));
+}

@@ -4,9 +4,10 @@
 import { mkdirSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
+import type { Core } from "cytoscape";
 import type { Browser, BrowserContext, Page } from "playwright-core";
 import { ARTEFACTS, launch, screenshot, watchErrors } from "./browser";
-import { downloadOf, waitForPlan } from "./app-helpers";
+import { downloadOf, painted, waitForPlan } from "./app-helpers";
 import { lowContrast, unlabelledControls } from "./app-a11y";
 
 let browser: Browser;
@@ -28,14 +29,29 @@ async function fresh(): Promise<{ context: BrowserContext; page: Page; errors: s
 
 const stepsText = (page: Page): Promise<string[]> => page.locator(".steps li .step-text").allTextContents();
 
-describe("planner page", () => {
-  it("plans a query typed in, and shows the tree canvas, progress lines and steps", async () => {
-    const { context, page, errors } = await fresh();
-    const base = inject("baseUrl");
-    await page.goto(base);
-    await waitForPlan(page); // the first example
+/** The query the selection tests start from. */
+const SOUP = "?dish=soup&i=carrot~chopped&i=onion~diced";
 
-    // a new query, typed
+/**
+ * The motion nodes drawn on the graph canvas, in page coordinates: where Cytoscape placed them (it keeps its
+ * instance on its container), not a search of the canvas's pixels.
+ */
+async function motionNodesOnScreen(page: Page): Promise<{ id: string; x: number; y: number }[]> {
+  return page.locator(".cy").evaluate((container) => {
+    const { cy } = (container as HTMLElement & { _cyreg: { cy: Core } })._cyreg;
+    const box = container.getBoundingClientRect();
+    return cy
+      .nodes(".motion")
+      .map((n) => ({ id: n.id(), x: box.left + n.renderedPosition().x, y: box.top + n.renderedPosition().y }))
+      .filter((p) => p.x > box.left && p.x < box.right && p.y > box.top && p.y < box.bottom);
+  });
+}
+
+describe("planner page", () => {
+  it("plans a query typed in, and shows it in the URL, the task tree, the progress lines, the steps and the substitutions", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(inject("baseUrl"));
+    await waitForPlan(page); // the first example
     await page.getByLabel("Dish type").selectOption("soup");
     while ((await page.locator(".ingredient-row").count()) > 0) await page.getByRole("button", { name: "Remove ingredient 1" }).click();
     await page.getByRole("button", { name: "Add ingredient" }).click();
@@ -44,89 +60,68 @@ describe("planner page", () => {
     await page.getByRole("button", { name: "Add ingredient" }).click();
     await page.getByLabel("Ingredient 2: object").pressSequentially("onion");
     await page.getByLabel("Ingredient 2: state").pressSequentially("diced");
-    await page.waitForFunction(() => document.querySelector(".plan-status")?.textContent?.startsWith("Task tree for soup") === true);
-    await waitForPlan(page);
+    await waitForPlan(page); // each keystroke re-plans at once, so "ready" is the plan of the last one
 
+    expect(await page.locator(".plan-status").textContent()).toMatch(/^Task tree for soup/);
     expect(new URL(page.url()).search).toBe("?dish=soup&i=carrot~chopped&i=onion~diced");
-    const canvas = page.locator(".cy");
     await page.locator(".cy canvas").first().waitFor(); // the graph view loads on its own
-    expect(Number(await canvas.getAttribute("data-nodes"))).toBeGreaterThan(3);
-    expect(await page.locator(".cy canvas").count()).toBeGreaterThan(0);
-    expect(await page.locator(".progress-svg g.line").count()).toBeGreaterThan(0);
+    expect(Number(await page.locator(".cy").getAttribute("data-nodes"))).toBeGreaterThan(3);
     expect(await page.locator('.progress-svg g.line[data-ingredient="carrot"]').count()).toBe(1);
+    expect(await page.locator('.progress-svg g.line[data-ingredient="onion"]').count()).toBe(1);
     const steps = await stepsText(page);
     expect(steps.length).toBeGreaterThan(2);
     expect(steps.join(" ")).toContain("carrot");
     expect(await page.locator(".panel-substitutions tbody tr").count()).toBe(2);
     expect(await page.locator(".panel-reference .goal-label").textContent()).not.toBe("");
+    await screenshot(page, "app-typed-query");
+    expect(errors).toEqual([]);
+    await context.close();
+  });
 
-    // selecting a step highlights its unit in the progress lines; arrow keys move the selection
+  it("highlights a selected step's unit on the graph and its progress line, and moves the selection with the arrow keys", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(`${inject("baseUrl")}${SOUP}`);
+    await waitForPlan(page);
+    expect(await page.locator(".progress-svg g.line.on-line").count()).toBe(0);
     const carrotStep = page.locator(".steps li", { hasText: "carrot" }).first();
     await carrotStep.click();
     expect(await carrotStep.getAttribute("aria-selected")).toBe("true");
     await page.locator('.progress-svg g.line.on-line[data-ingredient="carrot"]').waitFor();
-    const carrotUnit = await carrotStep.getAttribute("data-unit");
-    expect(await page.locator(".cy").getAttribute("data-selected")).toBe(`m:${carrotUnit}`); // the graph follows
-    const before = Number(await page.locator('.steps li[aria-selected="true"]').getAttribute("data-unit"));
+    expect(await page.locator(".progress-svg g.line.on-line").count()).toBe(1);
+    const unit = Number(await carrotStep.getAttribute("data-unit"));
+    expect(await page.locator(".cy").getAttribute("data-selected")).toBe(`m:${unit}`);
     await page.keyboard.press("ArrowDown");
-    expect(Number(await page.locator('.steps li[aria-selected="true"]').getAttribute("data-unit"))).toBe(before + 1);
-    expect(await page.evaluate(() => document.activeElement?.getAttribute("aria-selected"))).toBe("true");
+    expect(await page.locator('.steps li[aria-selected="true"]').getAttribute("data-unit")).toBe(String(unit + 1));
+    expect(await page.locator(".cy").getAttribute("data-selected")).toBe(`m:${unit + 1}`);
+    expect(await page.evaluate(() => document.activeElement?.getAttribute("data-unit"))).toBe(String(unit + 1));
+    expect(errors).toEqual([]);
+    await context.close();
+  });
 
-    // clicking a motion node (a red square) on the graph canvas selects its step and progress line
-    await page.locator(".steps li").last().click(); // a known selection first (drawn with an overlay, so not pure red)
-    const lastUnit = await page.locator(".steps li").last().getAttribute("data-unit");
+  it("selects a step when its motion node is clicked on the graph", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(`${inject("baseUrl")}${SOUP}`);
+    await waitForPlan(page);
+    await page.locator(".cy canvas").first().waitFor();
     await page.locator(".cy").scrollIntoViewIfNeeded();
-    // Cytoscape redraws on animation frames: read the pixels once the selection's overlay is drawn
-    await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(resolve, 200)))));
-    // every red square's top-left corner (30 px apart at least), in screen coordinates
-    const squares = await page.evaluate(() => {
-      const motion = getComputedStyle(document.documentElement).getPropertyValue("--fp-motion").trim(); // "#rrggbb"
-      const [r, g, b] = [1, 3, 5].map((i) => parseInt(motion.slice(i, i + 2), 16)) as [number, number, number];
-      const found: { x: number; y: number }[] = [];
-      for (const canvas of document.querySelectorAll<HTMLCanvasElement>(".cy canvas")) {
-        const ctx = canvas.getContext("2d");
-        if (ctx === null || canvas.width === 0) continue;
-        const { data, width, height } = ctx.getImageData(0, 0, canvas.width, canvas.height);
-        const box = canvas.getBoundingClientRect();
-        for (let y = 0; y < height; y += 2) {
-          for (let x = 0; x < width; x += 2) {
-            const k = (y * width + x) * 4;
-            if (Math.abs(data[k]! - r) < 8 && Math.abs(data[k + 1]! - g) < 8 && Math.abs(data[k + 2]! - b) < 8 && data[k + 3]! > 250) {
-              // a few pixels inside the square's edge
-              const point = { x: box.left + ((x + 3) * box.width) / width, y: box.top + ((y + 3) * box.height) / height };
-              if (found.every((p) => Math.hypot(p.x - point.x, p.y - point.y) > 30)) found.push(point);
-            }
-          }
-        }
-      }
-      return found;
-    });
-    expect(squares.length).toBeGreaterThan(1);
-    // the first square that is not the selected unit's (the selected one is drawn with an overlay anyway)
-    let moved = false;
-    for (const square of squares.slice(0, 6)) {
-      await page.mouse.click(square.x, square.y);
-      moved = await page
-        .waitForFunction(
-          (last) => {
-            const picked = document.querySelector<HTMLElement>(".cy")?.dataset.selected ?? "";
-            return /^m:\d+$/.test(picked) && picked !== `m:${last}`;
-          },
-          lastUnit,
-          { timeout: 3000 },
-        )
-        .then(() => true, () => false);
-      if (moved) break;
-    }
-    expect(moved, "a tap on a motion node selects its unit").toBe(true);
-    const tapped = (await page.locator(".cy").getAttribute("data-selected"))!.slice(2);
-    expect(await page.locator('.steps li[aria-selected="true"]').getAttribute("data-unit")).toBe(tapped);
+    const motions = await motionNodesOnScreen(page);
+    expect(motions.length).toBe(await page.locator(".steps li").count());
+    const target = motions[1]!; // not the first, so a wrong pick (the first node, or none) shows
+    await page.mouse.click(target.x, target.y);
+    await page.locator(`.cy[data-selected="${target.id}"]`).waitFor();
+    expect(await page.locator('.steps li[aria-selected="true"]').getAttribute("data-unit")).toBe(target.id.slice("m:".length));
+    expect(errors).toEqual([]);
+    await context.close();
+  });
 
-    // clicking a motion of a progress line selects its step
+  it("selects a step when a motion on a progress line is clicked", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(`${inject("baseUrl")}${SOUP}`);
+    await waitForPlan(page);
+    expect(await page.locator('.steps li[aria-selected="true"]').count()).toBe(0);
     await page.locator('.progress-svg g.line[data-ingredient="onion"] g.cell.motion').first().click();
-    const selected = await page.locator('.steps li[aria-selected="true"] .step-text').textContent();
-    expect(selected).toContain("onion");
-    await screenshot(page, "app-typed-query");
+    await page.locator('.steps li[aria-selected="true"]').waitFor();
+    expect(await page.locator('.steps li[aria-selected="true"] .step-text').textContent()).toContain("onion");
     expect(errors).toEqual([]);
     await context.close();
   });
@@ -139,11 +134,13 @@ describe("planner page", () => {
     await page.getByRole("button", { name: "Add these" }).click();
     await page.waitForURL(/i=cool\+whip/);
     expect(new URL(page.url()).searchParams.getAll("i")).toEqual(["tomato~whole", "chili pepper~chopped", "cucumber~sliced", "cool whip"]);
+    // focus follows the row, for keyboard users: the moved row's button, then the row in the removed one's place
+    const focused = (): Promise<string> => page.evaluate(() => document.activeElement?.getAttribute("aria-label") ?? "");
     await page.getByRole("button", { name: "Move ingredient 3 up" }).click();
+    expect(await focused()).toBe("Move ingredient 2 up");
     await page.getByRole("button", { name: "Remove ingredient 4" }).click();
+    expect(await focused()).toBe("Ingredient 3: object");
     await page.waitForURL((url) => url.searchParams.getAll("i").join("|") === "tomato~whole|cucumber~sliced|chili pepper~chopped");
-    // focus stays on the moved row's button, for keyboard users
-    expect(await page.evaluate(() => document.activeElement?.getAttribute("aria-label") ?? "")).toMatch(/^Remove ingredient|^Ingredient \d: object/);
     await waitForPlan(page);
 
     // two FOON files dropped together are merged
@@ -327,7 +324,7 @@ describe("planner page", () => {
     await page.reload();
     await waitForPlan(page);
     expect(await page.locator("html").getAttribute("data-theme")).toBe("dark");
-    await page.waitForTimeout(300);
+    await painted(page);
     await screenshot(page, "app-dark");
     expect(errors).toEqual([]);
     await context.close();

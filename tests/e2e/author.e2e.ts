@@ -5,6 +5,7 @@ import type { Browser, Page } from "playwright-core";
 import { launch, screenshot, watchErrors } from "./browser";
 import { downloadOf, waitForPlan } from "./app-helpers";
 import { lowContrast, unlabelledControls } from "./app-a11y";
+import { setTrap } from "./payload-trap";
 
 let browser: Browser;
 beforeAll(async () => {
@@ -191,6 +192,7 @@ describe("the FOON editor", () => {
     const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
     const page = await context.newPage();
     const errors = watchErrors(page);
+    const { trap, settled } = await setTrap(page, errors);
     await page.goto(authorUrl());
     const hostile = "<img src=x onerror=\"window.xss=1\">";
     await page.getByRole("textbox", { name: "Recipe text" }).fill(`${hostile} salad\n- 1 ${hostile}\n1. Dice the ${hostile}.\n2. Frobnicate ${hostile}.`);
@@ -198,8 +200,9 @@ describe("the FOON editor", () => {
     await waitForCheck(page);
     expect(await text(page).inputValue()).toContain(`# title: ${hostile} salad`);
     expect(await page.locator(".diagnostics li[data-severity='confirm']").allTextContents()).toContainEqual(expect.stringContaining(hostile));
+    await settled();
     expect(await page.locator("#author img").count()).toBe(0);
-    expect(await page.evaluate(() => (window as unknown as { xss?: number }).xss)).toBeUndefined();
+    expect(await trap()).toEqual({ xss: null, violations: [], dialogs: [] });
     expect(errors).toEqual([]);
     await context.close();
   });

@@ -252,18 +252,6 @@ describe("evaluation workbench", () => {
     await page.setInputFiles("#import-ratings", [{ name: "copy.json", mimeType: "application/json", buffer: Buffer.from(copy.text) }]);
     await page.waitForSelector('#save-status:text-is("3 ratings saved")');
 
-    // hostile labels in a query are shown as text, never run
-    const evil = '<img src=x onerror="window.__xss=1">';
-    await open(page);
-    const query = { id: "evil<b>", type: "salad", ingredients: [{ object: evil, state: "<i>sliced</i>" }] };
-    await page.setInputFiles("#query-files", [{ name: "evil.json", mimeType: "application/json", buffer: Buffer.from(JSON.stringify(query)) }]);
-    await page.click("#run-batch");
-    await page.waitForSelector("#batch-status[data-state=done], #batch-status[data-state=failed]");
-    await open(page, "#rate");
-    await page.waitForSelector("#rate-body[data-recipe]");
-    expect(await page.locator(".item .ingredient").first().textContent()).toBe(`<i>sliced</i> ${evil}`);
-    expect(await page.locator("#rate-body img, #rate-body i, #rate-body b").count()).toBe(0);
-    expect(await page.evaluate(() => (window as unknown as { __xss?: number }).__xss)).toBeUndefined();
     expect(errors).toEqual([]);
     await context.close();
   });

@@ -10,6 +10,7 @@ import {
   toPlanRequest,
   type AppQuery,
 } from "../../src/app/query";
+import { loadPlannerFromDisk } from "../../src/planner/node";
 
 const STATES = ["chopped", "whole", "diced", "cut in pieces", "sliced"];
 
@@ -83,7 +84,14 @@ describe("the query in the URL", () => {
     expect(queryFromSearch("")).toBeNull();
     expect(queryFromSearch("?theme=dark")).toBeNull();
   });
-  it("has example queries that plan", () => {
-    for (const e of EXAMPLES) expect(isPlannable(e.query)).toBe(true);
+  it("has example queries that each plan a task tree of their dish type, with every ingredient, on the bundled knowledge base", () => {
+    const planner = loadPlannerFromDisk();
+    for (const e of EXAMPLES) {
+      const plan = planner.plan(toPlanRequest(e.query));
+      expect(plan.dish_class?.name, e.title).toBe(e.query.dish);
+      expect(plan.units.length, e.title).toBeGreaterThan(0);
+      expect(plan.ingredients.map((i) => `${i.object}: ${i.status}`), e.title).toEqual(e.query.ingredients.map((i) => `${i.object}: planned`));
+    }
+    planner.free();
   });
 });

@@ -119,7 +119,9 @@ describe("a crashed planner worker", () => {
     });
     await expect(client.loadUrl("kb/default.foon")).rejects.toMatchObject({ message: expect.stringContaining("Access-Control-Allow-Origin") });
     const started = workers.length;
-    await new Promise((resolve) => setTimeout(resolve, 20));
+    // the client and the fake worker run on microtasks only (no timers): once these have all run, as they
+    // have when the next macrotask starts, nothing more can start a worker
+    await new Promise((resolve) => setImmediate(resolve));
     expect(workers.length).toBe(started);
     expect(started).toBeLessThanOrEqual(5);
     expect(workers.every((w) => w.terminated)).toBe(true);

@@ -1,10 +1,12 @@
-// Asking: the dish type picker, the ingredient rows (object + state, autocomplete from the knowledge
-// base, free text allowed), add/remove/reorder, pasting a list, and example queries.
+// Asking: the dish type picker, the ingredient rows (`ingredient-rows.ts`), pasting a list, the retrieval
+// mode and example queries. The editor sends each edit as a whole query; the store's query is drawn back
+// only when it differs from what the editor sent (so typing keeps focus).
 
 import { RETRIEVAL_MODES, type QueryIngredient, type RetrievalMode } from "../../planner/types";
 import { el, uid } from "../dom";
 import { EXAMPLES, ingredientPhrase, parseIngredientList, parseMode, type AppQuery } from "../query";
 import type { AppState, Store } from "../store";
+import { ingredientRows, type RowFocus } from "./ingredient-rows";
 
 export interface QueryEditorActions {
   setQuery(query: AppQuery): void;
@@ -21,6 +23,53 @@ function sameQuery(a: AppQuery, b: AppQuery): boolean {
   return JSON.stringify(a) === JSON.stringify(b);
 }
 
+/** The dish types of the knowledge base (and the asked one, if it has no recipes), and the recipes searched. */
+function renderDishes(select: HTMLSelectElement, recipes: HTMLElement, state: AppState): void {
+  const dishes = state.kb?.vocabulary.dishes ?? [];
+  const dish = state.query.dish;
+  const options = [el("option", { value: "", text: "Any dish type" })];
+  for (const d of dishes) options.push(el("option", { value: d.name, text: `${d.name} (${d.recipes.length})` }));
+  if (dish !== "" && !dishes.some((d) => d.name === dish)) options.push(el("option", { value: dish, text: `${dish} (no recipes)` }));
+  select.replaceChildren(...options);
+  select.value = dish;
+  const chosen = dishes.find((d) => d.name === dish);
+  recipes.textContent =
+    chosen === undefined
+      ? `Reference goal nodes are searched among all ${dishes.reduce((n, d) => n + d.recipes.length, 0)} recipes.`
+      : `Recipes for ${chosen.name}: ${chosen.recipes.join(", ")}.`;
+}
+
+function renderVocabulary(labels: HTMLDataListElement, states: HTMLDataListElement, state: AppState): void {
+  const vocab = state.kb?.vocabulary;
+  labels.replaceChildren(...(vocab?.labels ?? []).map((l) => el("option", { value: l })));
+  states.replaceChildren(...(vocab?.states ?? []).map((s) => el("option", { value: s })));
+}
+
+/** One button per example query; `pick` receives the example's query. */
+function exampleButtons(pick: (query: AppQuery) => void): HTMLElement {
+  const examples = el("div", { class: "examples", role: "group", "aria-label": "Example queries" });
+  for (const example of EXAMPLES) {
+    const button = el("button", { type: "button", class: "example", text: example.title });
+    button.title = example.query.ingredients.map(ingredientPhrase).join(", ");
+    button.addEventListener("click", () => pick(example.query));
+    examples.append(button);
+  }
+  return examples;
+}
+
+/** The "Paste a list" field: `add` receives the pasted ingredients (never none), and the field is cleared. */
+function pasteField(id: string, knownStates: () => readonly string[], add: (ingredients: QueryIngredient[]) => void): HTMLElement {
+  const area = el("textarea", { id, rows: 2, placeholder: "chopped chili pepper, whole tomato, cool whip" });
+  const button = el("button", { type: "button", text: "Add these" });
+  button.addEventListener("click", () => {
+    const added = parseIngredientList(area.value, knownStates());
+    if (added.length === 0) return;
+    area.value = "";
+    add(added);
+  });
+  return el("div", { class: "field paste" }, el("label", { for: id, text: "Paste a list (comma- or line-separated)" }), area, button);
+}
+
 export function mountQueryEditor(host: HTMLElement, store: Store, actions: QueryEditorActions): () => void {
   const ids = { labels: uid("labels"), states: uid("states"), dish: uid("dish"), paste: uid("paste"), recipes: uid("recipes"), mode: uid("mode") };
   const labelList = el("datalist", { id: ids.labels });
@@ -28,110 +77,28 @@ export function mountQueryEditor(host: HTMLElement, store: Store, actions: Query
   const dishSelect = el("select", { id: ids.dish, name: "dish" });
   const modeSelect = el("select", { id: ids.mode, name: "mode" }, ...RETRIEVAL_MODES.map((m) => el("option", { value: m, text: MODE_NAMES[m] })));
   const recipes = el("p", { class: "recipes muted", id: ids.recipes, "aria-live": "polite" });
-  const rows = el("ol", { class: "ingredient-rows", "aria-label": "Ingredients" });
   const addButton = el("button", { type: "button", class: "add-row", text: "Add ingredient" });
-  const pasteArea = el("textarea", { id: ids.paste, rows: 2, placeholder: "chopped chili pepper, whole tomato, cool whip" });
-  const pasteButton = el("button", { type: "button", text: "Add these" });
-  const examples = el("div", { class: "examples", role: "group", "aria-label": "Example queries" });
+  const knownStates = (): readonly string[] => store.state.kb?.vocabulary.states ?? [];
 
   // What the editor last sent: a store query equal to it needs no re-render (keeps focus while typing).
   let shown: AppQuery = store.state.query;
-
   const emit = (query: AppQuery): void => {
     shown = query;
     actions.setQuery(query);
   };
-  const current = (): AppQuery => ({ ...store.state.query, ingredients: readRows() });
-
-  function readRows(): QueryIngredient[] {
-    return [...rows.querySelectorAll<HTMLLIElement>("li")].map((li) => ({
-      object: li.querySelector<HTMLInputElement>("input.object")?.value ?? "",
-      state: li.querySelector<HTMLInputElement>("input.state")?.value ?? "",
-    }));
-  }
-
-  function rowElement(ingredient: QueryIngredient, index: number, count: number): HTMLLIElement {
-    const n = index + 1;
-    const object = el("input", {
-      class: "object", type: "text", value: ingredient.object, list: ids.labels, autocomplete: "off",
-      "aria-label": `Ingredient ${n}: object`, placeholder: "object, e.g. tomato",
-    });
-    const state = el("input", {
-      class: "state", type: "text", value: ingredient.state, list: ids.states, autocomplete: "off",
-      "aria-label": `Ingredient ${n}: state`, placeholder: "state, e.g. diced",
-    });
-    const up = el("button", { type: "button", class: "icon", "aria-label": `Move ingredient ${n} up`, title: "Move up", disabled: index === 0, text: "↑" });
-    const down = el("button", { type: "button", class: "icon", "aria-label": `Move ingredient ${n} down`, title: "Move down", disabled: index === count - 1, text: "↓" });
-    const remove = el("button", { type: "button", class: "icon", "aria-label": `Remove ingredient ${n}`, title: "Remove", text: "✕" });
-    const onInput = (): void => emit(current());
-    object.addEventListener("input", onInput);
-    state.addEventListener("input", onInput);
-    // pasting a whole list into one field adds a row per item
-    object.addEventListener("paste", (event: ClipboardEvent) => {
-      const text = event.clipboardData?.getData("text") ?? "";
-      if (!/[,;\n]/.test(text)) return;
-      event.preventDefault();
-      const list = readRows();
-      list.splice(index, 1, ...parseIngredientList(text, store.state.kb?.vocabulary.states ?? []));
-      emitAndRender({ ...store.state.query, ingredients: list });
-    });
-    const move = (delta: number): void => {
-      const list = readRows();
-      const [item] = list.splice(index, 1);
-      if (item === undefined) return;
-      list.splice(index + delta, 0, item);
-      emitAndRender({ ...store.state.query, ingredients: list }, { row: index + delta, button: delta < 0 ? "up" : "down" });
-    };
-    up.addEventListener("click", () => move(-1));
-    down.addEventListener("click", () => move(1));
-    remove.addEventListener("click", () => {
-      const list = readRows();
-      list.splice(index, 1);
-      emitAndRender({ ...store.state.query, ingredients: list }, { row: Math.min(index, list.length - 1), button: "object" });
-    });
-    return el("li", { class: "ingredient-row" }, object, state, el("span", { class: "row-buttons" }, up, down, remove));
-  }
-
-  type Focus = { row: number; button: "up" | "down" | "object" };
-
-  function renderRows(query: AppQuery, focus?: Focus): void {
-    rows.replaceChildren(...query.ingredients.map((i, k) => rowElement(i, k, query.ingredients.length)));
-    if (focus !== undefined && focus.row >= 0) {
-      const li = rows.children[focus.row];
-      const target =
-        focus.button === "object"
-          ? li?.querySelector<HTMLElement>("input.object")
-          : li?.querySelector<HTMLElement>(`button[aria-label^="Move ingredient ${focus.row + 1} ${focus.button}"]`);
-      // a disabled button cannot take focus: fall back to the row's object field
-      (target !== null && target !== undefined && !(target as HTMLButtonElement).disabled ? target : li?.querySelector<HTMLElement>("input.object"))?.focus();
-    }
-  }
-
-  function emitAndRender(query: AppQuery, focus?: Focus): void {
-    renderRows(query, focus);
+  const emitAndRender = (query: AppQuery, focus?: RowFocus): void => {
+    rows.render(query.ingredients, focus);
     emit(query);
-  }
-
-  function renderDishes(state: AppState): void {
-    const dishes = state.kb?.vocabulary.dishes ?? [];
-    const options = [el("option", { value: "", text: "Any dish type" })];
-    for (const d of dishes) options.push(el("option", { value: d.name, text: `${d.name} (${d.recipes.length})` }));
-    const dish = state.query.dish;
-    if (dish !== "" && !dishes.some((d) => d.name === dish)) options.push(el("option", { value: dish, text: `${dish} (no recipes)` }));
-    dishSelect.replaceChildren(...options);
-    dishSelect.value = dish;
-    const chosen = dishes.find((d) => d.name === dish);
-    recipes.textContent =
-      chosen === undefined
-        ? `Reference goal nodes are searched among all ${dishes.reduce((n, d) => n + d.recipes.length, 0)} recipes.`
-        : `Recipes for ${chosen.name}: ${chosen.recipes.join(", ")}.`;
-  }
-
-  function renderVocabulary(state: AppState): void {
-    const vocab = state.kb?.vocabulary;
-    labelList.replaceChildren(...(vocab?.labels ?? []).map((l) => el("option", { value: l })));
-    stateList.replaceChildren(...(vocab?.states ?? []).map((s) => el("option", { value: s })));
-  }
+  };
+  const withIngredients = (ingredients: QueryIngredient[]): AppQuery => ({ ...store.state.query, ingredients });
+  const current = (): AppQuery => withIngredients(rows.read());
+  const rows = ingredientRows({
+    labelsId: ids.labels,
+    statesId: ids.states,
+    typed: () => emit(current()),
+    changed: (ingredients, focus) => emitAndRender(withIngredients(ingredients), focus),
+    states: knownStates,
+  });
 
   dishSelect.addEventListener("change", () => emit({ ...current(), dish: dishSelect.value }));
   modeSelect.addEventListener("change", () => {
@@ -140,22 +107,9 @@ export function mountQueryEditor(host: HTMLElement, store: Store, actions: Query
     emit(mode === undefined || mode === "heuristic" ? rest : { ...rest, mode });
   });
   addButton.addEventListener("click", () => {
-    const list = [...readRows(), { object: "", state: "" }];
-    emitAndRender({ ...store.state.query, ingredients: list }, { row: list.length - 1, button: "object" });
+    const list = [...rows.read(), { object: "", state: "" }];
+    emitAndRender(withIngredients(list), { row: list.length - 1, control: "object" });
   });
-  pasteButton.addEventListener("click", () => {
-    const added = parseIngredientList(pasteArea.value, store.state.kb?.vocabulary.states ?? []);
-    if (added.length === 0) return;
-    pasteArea.value = "";
-    const list = [...readRows().filter((i) => i.object.trim() !== ""), ...added];
-    emitAndRender({ ...store.state.query, ingredients: list });
-  });
-  for (const example of EXAMPLES) {
-    const button = el("button", { type: "button", class: "example", text: example.title });
-    button.title = example.query.ingredients.map(ingredientPhrase).join(", ");
-    button.addEventListener("click", () => emitAndRender(example.query));
-    examples.append(button);
-  }
 
   host.replaceChildren(
     el("h2", { text: "Ask" }),
@@ -163,32 +117,28 @@ export function mountQueryEditor(host: HTMLElement, store: Store, actions: Query
     recipes,
     el("h3", { text: "Ingredients you have" }),
     el("p", { class: "muted small", text: "Each row is an object and the state it should be in. Unseen ingredients are fine: the planner substitutes them." }),
-    rows,
+    rows.element,
     addButton,
-    el("div", { class: "field paste" }, el("label", { for: ids.paste, text: "Paste a list (comma- or line-separated)" }), pasteArea, pasteButton),
+    pasteField(ids.paste, knownStates, (added) => emitAndRender(withIngredients([...rows.read().filter((i) => i.object.trim() !== ""), ...added]))),
     el("div", { class: "field" }, el("label", { for: ids.mode, text: "Retrieval" }), modeSelect),
     el("h3", { text: "Examples" }),
-    examples,
+    exampleButtons((query) => emitAndRender(query)),
     labelList,
     stateList,
   );
 
-  renderVocabulary(store.state);
-  renderDishes(store.state);
-  renderRows(store.state.query);
+  renderVocabulary(labelList, stateList, store.state);
+  renderDishes(dishSelect, recipes, store.state);
+  rows.render(store.state.query.ingredients);
   modeSelect.value = store.state.query.mode ?? "heuristic";
 
   return store.subscribe((state, previous) => {
     modeSelect.value = state.query.mode ?? "heuristic";
-    if (state.kb !== previous.kb) {
-      renderVocabulary(state);
-      renderDishes(state);
-    } else if (state.query.dish !== previous.query.dish) {
-      renderDishes(state);
-    }
+    if (state.kb !== previous.kb) renderVocabulary(labelList, stateList, state);
+    if (state.kb !== previous.kb || state.query.dish !== previous.query.dish) renderDishes(dishSelect, recipes, state);
     if (state.query !== previous.query && !sameQuery(state.query, shown)) {
       shown = state.query;
-      renderRows(state.query);
+      rows.render(state.query.ingredients);
     }
   });
 }

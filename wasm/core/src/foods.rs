@@ -1,8 +1,9 @@
 //! Food knowledge the planner reasons with: the physical form of a food (by its category in the food
 //! taxonomy), the motions a food of that form cannot take or join a dish by (`data/food_forms.tsv`),
 //! which foods must be cooked and how a cook prepares one named only by its category
-//! (`data/food_care.tsv`), the motions that cook (`data/heat_motions.txt`), and which food an ambiguous
-//! name means in a given state (`data/food_readings.tsv`).
+//! (`data/food_care.tsv`), the motions that cook (`data/heat_motions.txt`) and those that leave a food in
+//! a state of their own (`data/motion_states.tsv`), and which food an ambiguous name means in a given
+//! state (`data/food_readings.tsv`).
 
 use crate::label::{normalize_label, normalize_word};
 use crate::plan::Query;
@@ -14,6 +15,7 @@ const FORMS_TSV: &str = include_str!("../data/food_forms.tsv");
 const CARE_TSV: &str = include_str!("../data/food_care.tsv");
 const HEAT_TXT: &str = include_str!("../data/heat_motions.txt");
 const READINGS_TSV: &str = include_str!("../data/food_readings.tsv");
+const MOTION_STATES_TSV: &str = include_str!("../data/motion_states.tsv");
 
 /// A physical form and the motion words it cannot take.
 #[derive(Debug)]
@@ -280,6 +282,11 @@ pub fn unwraps(motion: &str) -> bool {
     UNWRAPS.contains(&m)
 }
 
+/// Whether `motion` washes what it acts on ("wash", "rinse"), which a cook does before cutting it.
+pub fn washes(motion: &str) -> bool {
+    motion_words(motion).any(|w| matches!(w, "wash" | "rinse"))
+}
+
 /// Whether `motion` cuts what it acts on into pieces ("chop", "cut in half").
 pub fn cuts(motion: &str) -> bool {
     motion_words(motion).any(|w| CUTS.contains(&w))
@@ -311,6 +318,19 @@ pub fn cooks_food(food: &str, motion: &str) -> bool {
     }
     motion.trim_end_matches('*').trim() == "cook"
         || motion_words(motion).any(|w| heat_words().iter().any(|&(h, wet)| wet && h == w))
+}
+
+/// The state `motion` leaves a food in whatever piece it was (`data/motion_states.tsv`: "spread" for
+/// butter spread), if it is one that does.
+pub fn leaves_in(motion: &str) -> Option<&'static str> {
+    static LEAVES: OnceLock<HashMap<&'static str, &'static str>> = OnceLock::new();
+    let table = LEAVES.get_or_init(|| {
+        crate::taxonomy::data_lines(MOTION_STATES_TSV)
+            .filter_map(|l| l.split_once('\t'))
+            .map(|(m, s)| (m.trim(), s.trim()))
+            .collect()
+    });
+    table.get(motion.trim_end_matches('*').trim()).copied()
 }
 
 /// (name, asked state) -> the food meant, in normal form.
@@ -569,6 +589,24 @@ mod tests {
                     "food_readings.tsv names '{food}', which food_taxonomy.tsv lacks"
                 );
             }
+        }
+    }
+
+    #[test]
+    fn a_motion_that_reshapes_a_food_names_a_state_of_the_taxonomy() {
+        use crate::planner::states::{category, Category};
+        assert_eq!(leaves_in("spread"), Some("spread"));
+        assert_eq!(leaves_in("grind*"), Some("ground"));
+        assert_eq!(leaves_in("pour"), None);
+        for line in crate::taxonomy::data_lines(MOTION_STATES_TSV) {
+            let (_, state) = line
+                .split_once('\t')
+                .expect("motion_states.tsv: two columns");
+            assert_ne!(
+                category(state.trim()),
+                Category::Other,
+                "motion_states.tsv: '{state}' is not in states.tsv"
+            );
         }
     }
 

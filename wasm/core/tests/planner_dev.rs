@@ -7,6 +7,7 @@ mod common;
 use common::{dev_queries, embeddings, foon111, load};
 use foon_core::foods;
 use foon_core::plan::Status;
+use foon_core::planner::states::{category, Category};
 use foon_core::planner::{cautions, violations, CautionKind};
 use foon_core::similarity::{ExactMatch, Similarity};
 use foon_core::{plan, PlanRequest, PlannerIndex, Query};
@@ -98,6 +99,7 @@ fn check_variant(
                         problems.push(format!("{path}: step {} repeats \"{step}\"", i + 1));
                     }
                 }
+                problems.extend(pieces_after_reshaping(&p).map(|d| format!("{path}: {d}")));
                 units_total += p.units.len();
                 for c in cautions(&p) {
                     cautioned
@@ -180,6 +182,23 @@ fn check_variant(
         };
         assert_eq!(&again, before, "{name} {path}: plan depends on file order");
     }
+}
+
+/// Progress-line steps that show a food spread, ground or melted as the piece it was bought as (FOON keeps
+/// a "stick" of butter spread on a pancake).
+fn pieces_after_reshaping(p: &foon_core::Plan) -> impl Iterator<Item = String> + '_ {
+    p.progress_lines.iter().flat_map(|l| {
+        l.motion
+            .iter()
+            .zip(l.state.iter().skip(1))
+            .filter(|(m, after)| {
+                let words = || after.physical_state.split(", ").filter(|w| !w.is_empty());
+                foods::leaves_in(m).is_some()
+                    && words().next().is_some()
+                    && words().all(|w| category(w) == Category::Whole)
+            })
+            .map(|(m, after)| format!("{} is '{}' after '{m}'", l.ingredient, after.physical_state))
+    })
 }
 
 fn index_has(kb: &foon_core::KnowledgeBase, label: &str) -> bool {

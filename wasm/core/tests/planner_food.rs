@@ -1460,6 +1460,114 @@ fn a_name_asked_twice_keeps_the_state_it_was_first_planned_in() {
 }
 
 #[test]
+fn a_name_brought_from_elsewhere_and_asked_again_keeps_its_first_state() {
+    // onion is not in the salad: the first ask brings it chopped from FOON; asked again sliced, its
+    // line is not cut again into a mix of both
+    let ask = r#"{"query": {"type": "salad", "ingredients": [{"object": "lettuce", "state": "chopped"},
+        {"object": "onion", "state": "chopped"}, {"object": "onion", "state": "sliced"}]}}"#;
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("other.txt", PREPARED)],
+        &ExactMatch,
+        ask,
+    );
+    assert_eq!(
+        line_motions(&p, "onion"),
+        ["peel", "chop", "mix"],
+        "{:#?}",
+        p.units
+    );
+    let second = p
+        .ingredients
+        .iter()
+        .find(|i| i.state == "sliced")
+        .and_then(|i| i.reason.as_deref())
+        .unwrap();
+    assert!(second.contains("kept in the state 'chopped'"), "{second}");
+}
+
+#[test]
+fn cheese_asked_creamy_is_cream_cheese_shown_creamy_not_the_block_foon_sells() {
+    let elsewhere = "//
+O\tcream cheese\t1
+S\tblock
+S\tin\t[packet]
+O\tmixing bowl\t0
+M\tpick-and-place\t<Assumed>
+O\tcream cheese\t1
+S\tblock
+S\tin\t[mixing bowl]
+//
+O\tbutter\t1
+S\tsoftened
+M\tmix\t<Assumed>
+O\tbutter\t1
+S\tcreamy
+//
+";
+    let ask = query("salad", &[("lettuce", "chopped"), ("cheese", "creamy")]);
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("other.txt", elsewhere)],
+        &ExactMatch,
+        &ask,
+    );
+    let states = line_states(&p, "cheese");
+    assert_eq!(states[0], "creamy", "{:#?}", p.progress_lines);
+    assert!(
+        !states.iter().any(|&s| s == "block" || s == "grated"),
+        "{states:?}"
+    );
+    // no unit of its own just to call it creamy
+    assert_eq!(line_motions(&p, "cheese"), ["mix"], "{:#?}", p.units);
+}
+
+#[test]
+fn berries_are_washed_before_they_are_hulled_and_sliced() {
+    let smoothie = "//
+O\tstrawberry\t1
+S\twhole
+S\tin\t[container]
+O\tbowl\t0
+M\tpick-and-place\t<Assumed>
+O\tstrawberry\t1
+S\twhole
+S\tin\t[bowl]
+//
+O\tstrawberry\t1
+S\twhole
+S\tin\t[bowl]
+M\twash\t<Assumed>
+O\tstrawberry\t1
+S\twashed
+S\tin\t[bowl]
+//
+O\tstrawberry\t1
+S\twashed
+S\tin\t[bowl]
+O\tmilk\t1
+S\tliquid
+M\tblend\t<Assumed>
+O\tsmoothie\t1\t9
+S\tblended
+S\tcontains\t{strawberry,milk}
+//
+O\tapple\t1
+S\twhole
+M\tslice\t<Assumed>
+O\tapple\t1
+S\tsliced
+//
+";
+    let ask = query("drinks", &[("strawberry", "sliced"), ("milk", "liquid")]);
+    let p = plan_of(&[("smoothie.txt", smoothie)], &ExactMatch, &ask);
+    assert_eq!(
+        line_motions(&p, "strawberry"),
+        ["pick-and-place", "wash", "hull", "slice", "blend"],
+        "{:#?}",
+        p.progress_lines
+    );
+}
+
+#[test]
 fn salt_in_a_pot_that_is_boiled_is_not_called_cooked_but_the_chicken_is() {
     let pot = CHICKEN_POT
         .replacen(

@@ -281,7 +281,8 @@ pub(super) fn finish_branch<'kb>(
     }
     let node = &tree.slots[last].node;
     let as_sold = ctx.index.sold_as(eq) == Some(c) && !has_food_state(node);
-    if !(in_state || as_sold || c == Category::Other) {
+    let shown = shown_by_form(tree, known_as(ctx, o, eq), s, &[last]);
+    if !(in_state || as_sold || shown || c == Category::Other) {
         if !from.reaches(c) && (c == Category::Whole || !c.is_starting()) {
             let _ = write!(
                 how,

@@ -65,7 +65,7 @@ pub(super) fn settle_state<'kb>(
 ) {
     let sold = ctx.index.sold_as(eq);
     let in_state = best_state_slot(tree, slots, s, sold);
-    let state_ok = in_state.is_some();
+    let state_ok = in_state.is_some() || shown_by_form(tree, known_as(ctx, o, eq), s, slots);
     w.case = Some(Case::of(o, eq, state_ok));
     if category(s) == Category::Other && !s.is_empty() {
         w.reasons.push(format!(
@@ -101,6 +101,22 @@ pub(super) fn settle_state<'kb>(
         .entry(o.to_string())
         .or_insert_with(|| s.to_string());
     w.planned = true;
+}
+
+/// Whether state `s` is the one `food`'s form shows it in, and the tree has it only in states its form is
+/// never in (a cream cheese "block"): fitting the states to the form (`fit_states_to_form`) gives it.
+pub(super) fn shown_by_form(tree: &Tree, food: &str, s: &str, slots: &[SlotId]) -> bool {
+    let Some(form) = foods::form_of(food) else {
+        return false;
+    };
+    form.state_when_none.as_deref() == Some(s)
+        && slots.iter().all(|&x| {
+            tree.slots[x]
+                .node
+                .physical_states()
+                .filter(|st| is_food_state(st))
+                .all(|st| form.never_in.iter().any(|w| w == st))
+        })
 }
 
 /// The case and status of an ingredient when modification is off (`in_state`: its slot in the state

@@ -242,6 +242,7 @@ pub(crate) fn modify<'kb>(
             // a case-2 substitute was renamed in the tree already: its branch comes from `eq` again
             match add_branch(ctx, tree, &eq, o, &s) {
                 Ok((state, reason)) => {
+                    settled.entry(o.to_string()).or_insert_with(|| s.clone());
                     if lost {
                         w.reasons.push(format!(
                             "its units went with the pruned ingredients: {reason}"

@@ -211,10 +211,10 @@ pub(super) fn restate<'kb>(
     })
 }
 
-/// Where on `o`'s own chain from `leaf` a change of state can come: past the units that unwrap it or
-/// give it the preparation that comes before anything else (an egg is cracked before it is beaten;
-/// cheese is unwrapped before it is grated), so that nothing is done to it in its shell or packet; never
-/// past the unit it leaves its chain at.
+/// Where on `o`'s own chain from `leaf` a change of state can come: past the units that unwrap it, wash
+/// it or give it the preparation that comes before anything else (an egg is cracked before it is beaten;
+/// cheese is unwrapped before it is grated; berries are washed, then sliced), so that nothing is done to
+/// it in its shell or packet; never past the unit it leaves its chain at.
 pub(super) fn past_handling(
     ctx: &Context,
     tree: &Tree,
@@ -223,13 +223,18 @@ pub(super) fn past_handling(
     leaf: SlotId,
 ) -> SlotId {
     let first = foods::prepared_first(known_as(ctx, o, o));
-    let handling =
-        |motion: &str| foods::unwraps(motion) || first.is_some_and(|p| p.starts_with(motion));
+    let handling = |motion: &str| {
+        foods::unwraps(motion)
+            || foods::washes(motion)
+            || first.is_some_and(|p| p.starts_with(motion))
+    };
     let chain = own_chain(tree, order, o, leaf);
-    let mut at = leaf;
-    // the last unit of the chain takes it on: a change of state comes before it at the latest
+    let mut past = leaf;
+    // the last unit of the chain takes it on: a change of state comes before it at the latest; moves
+    // between handlings (into the bowl it is washed in) are passed over
     for &(_, u) in chain.iter().take(chain.len().saturating_sub(1)) {
-        if !handling(&tree.units[u].motion) {
+        let motion = &tree.units[u].motion;
+        if !handling(motion) && !is_transfer_motion(motion) {
             break;
         }
         let Some(&(next, _)) = tree.units[u]
@@ -239,9 +244,11 @@ pub(super) fn past_handling(
         else {
             break;
         };
-        at = next;
+        if handling(motion) {
+            past = next;
+        }
     }
-    at
+    past
 }
 
 /// The motion bringing `o` (`eq` in FOON) into state `s`: the one FOON uses most for the state, if

@@ -340,7 +340,12 @@ pub(super) fn walk<'t>(
             Some(o) => {
                 seen.push(o);
                 states.push(ProgressState {
-                    physical_state: state_after(label, &tree.units[u].motion, &tree.slots[o].node),
+                    physical_state: state_after(
+                        label,
+                        &tree.units[u].motion,
+                        &tree.slots[o].node,
+                        states.last().map_or("", |s| s.physical_state.as_str()),
+                    ),
                     location: location(&tree.slots[o].node),
                 });
                 at = o;
@@ -398,7 +403,11 @@ pub(super) fn walk<'t>(
                             let rel = relations.to(&n.label);
                             let before = &states[states.len() - 1].physical_state;
                             let motion = &tree.units[u].motion;
-                            let before = prepared_by(label, motion, before.clone());
+                            let before = prepared_by(
+                                label,
+                                motion,
+                                reshaped_by(motion, before, before.clone()),
+                            );
                             ProgressState {
                                 physical_state: with_vessel_cooking(&before, n),
                                 location: spaced(rel, &n.label),
@@ -459,8 +468,8 @@ pub(super) fn walk<'t>(
 /// The state of `label` at `node`, made by `motion`: when the motion is the food's first preparation
 /// ("crack" for an egg's "cracked"), that state, in place of the whole one FOON may keep ("whole" in the
 /// bowl it was cracked into).
-pub(super) fn state_after(label: &str, motion: &str, node: &ObjectNode) -> SmolStr {
-    prepared_by(label, motion, state_text(node))
+pub(super) fn state_after(label: &str, motion: &str, node: &ObjectNode, before: &str) -> SmolStr {
+    prepared_by(label, motion, reshaped_by(motion, before, state_text(node)))
 }
 
 /// State text `text` of `label` after `motion`: the food's first preparation when the motion is it
@@ -475,6 +484,35 @@ pub(super) fn prepared_by(label: &str, motion: &str, text: SmolStr) -> SmolStr {
         .collect();
     words.insert(0, first);
     words.join(", ").into()
+}
+
+/// State text `text` after `motion`, when the motion leaves a food in a state of its own
+/// (`foods::leaves_in`) and the food was, and is still shown as, no more than the piece it was bought as
+/// (`before`): a "stick" of butter spread is "spread"; "peppercorn, hot" ground into a pan is "ground,
+/// hot". The bread the butter is spread on was no such piece and is left as it is.
+fn reshaped_by(motion: &str, before: &str, text: SmolStr) -> SmolStr {
+    let Some(left) = foods::leaves_in(motion) else {
+        return text;
+    };
+    fn words(s: &str) -> Vec<&str> {
+        s.split(", ").filter(|w| !w.is_empty()).collect()
+    }
+    let piece_only = |ws: &[&str]| {
+        ws.iter().all(|w| {
+            matches!(
+                category(w),
+                Category::Whole | Category::Cooked | Category::Other
+            )
+        })
+    };
+    let (was, is) = (words(before), words(&text));
+    let was_piece = was.iter().any(|w| category(w) == Category::Whole) && piece_only(&was);
+    if !was_piece || !piece_only(&is) || is.contains(&left) {
+        return text;
+    }
+    let mut out = vec![left];
+    out.extend(is.into_iter().filter(|w| category(w) != Category::Whole));
+    out.join(", ").into()
 }
 
 /// Whether food `product` is named as a part of food `label` ("egg white" of "egg", but also "egg noodle").
