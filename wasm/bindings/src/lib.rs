@@ -2,11 +2,11 @@
 //! knowledge-base files; requests and results cross the boundary as JSON text, errors as JS `Error`s
 //! carrying a stable `code` and, for file errors, `file`, `line` and `column`.
 
-use foon_core::parse::{parse_bytes, Subgraph};
+use foon_core::foon::bundle;
+use foon_core::foon::read::{parse_bytes, Subgraph};
 use foon_core::similarity::{ExactMatch, Similarity};
 use foon_core::{
-    bundle, EmbeddingSimilarity, ErrorCode, FoonError, KnowledgeBase, Plan, PlanRequest,
-    PlannerIndex,
+    EmbeddingSimilarity, ErrorCode, FoonError, KnowledgeBase, Plan, PlanRequest, PlannerIndex,
 };
 use js_sys::JsString;
 use std::cell::RefCell;
@@ -144,7 +144,7 @@ impl Planner {
 
     fn run(&self, request_json: &str) -> Result<Plan, JsValue> {
         let request: PlanRequest =
-            foon_core::decode::plan_request(request_json).map_err(|e| js_error(&e))?;
+            foon_core::contract::decode::plan_request(request_json).map_err(|e| js_error(&e))?;
         foon_core::plan(&self.kb, &self.index, self.similarity.as_ref(), &request)
             .map_err(|e| js_error(&e))
     }
@@ -184,7 +184,7 @@ impl Planner {
     /// The knowledge-base ingredients most similar to each name (`names_json`: a JSON array of
     /// strings), best first, as JSON `[{query, candidates: [{label, similarity}]}]`.
     pub fn similar(&self, names_json: &str, top: usize) -> Result<String, JsValue> {
-        let names = foon_core::decode::names(names_json).map_err(|e| js_error(&e))?;
+        let names = foon_core::contract::decode::names(names_json).map_err(|e| js_error(&e))?;
         to_json(&foon_core::similar(
             &self.kb,
             self.similarity.as_ref(),

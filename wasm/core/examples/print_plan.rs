@@ -1,7 +1,7 @@
 //! Development tool: one plan on FOON-111, unit by unit, with its outcomes, progress lines and cautions.
 //! `cargo run --example print_plan -- QUERY.json [--exact] [--no-modify]` (`FOON_DIR` for another folder).
 
-use foon_core::plan::PlanNode;
+use foon_core::contract::plan::PlanNode;
 use foon_core::planner::violations;
 use foon_core::similarity::{ExactMatch, Similarity};
 use foon_core::{plan, EmbeddingSimilarity, PlanRequest, PlannerIndex, Query};

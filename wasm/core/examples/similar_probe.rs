@@ -2,8 +2,8 @@
 //! and its top-5 FOON equivalents, and the time per lookup.
 //! `cargo run --release --example similar_probe -- "poblano chile" molass`
 
+use foon_core::similarity::ranking::EmbeddingSimilarity;
 use foon_core::similarity::Similarity;
-use foon_core::substitute::EmbeddingSimilarity;
 use std::io::BufRead;
 use std::path::PathBuf;
 

@@ -2,8 +2,8 @@
 //! table `data/robot_motions.tsv` or the request's own figures, and who does each unit — the robot, or a
 //! person for the `human_steps` least reliable units.
 
+use crate::contract::plan::{Performer, Plan, RobotOptions, RobotUnit, RobotView};
 use crate::error::{ErrorCode, FoonError, Result};
-use crate::plan::{Performer, Plan, RobotOptions, RobotUnit, RobotView};
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 

@@ -1,7 +1,7 @@
 //! Figures about a knowledge base, as printed by `cli stats` and shown by the app.
 
-use crate::kb::KnowledgeBase;
-use crate::taxonomy::dish_class_name;
+use crate::foon::kb::KnowledgeBase;
+use crate::vocab::taxonomy::dish_class_name;
 use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet};
 

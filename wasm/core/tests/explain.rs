@@ -4,9 +4,10 @@
 
 mod common;
 use common::{dev_queries, foon111, load};
+use foon_core::contract::decode;
 use foon_core::similarity::{ExactMatch, Similarity};
 use foon_core::trace::{Outcome, Trace};
-use foon_core::{decode, plan, Plan, PlanRequest, PlannerIndex};
+use foon_core::{plan, Plan, PlanRequest, PlannerIndex};
 
 /// Two salads (class 15) and a soup (class 1). The garden salad slices a tomato, chops an onion and
 /// mixes them with lettuce it starts with; the soup's file also slices a tomato (another way) and a

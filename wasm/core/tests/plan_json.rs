@@ -4,7 +4,7 @@
 
 mod common;
 use common::{dev_plans, dev_queries, embeddings, foon111, load};
-use foon_core::plan::{PlanNode, Status};
+use foon_core::contract::plan::{PlanNode, Status};
 use foon_core::{plan, write_plan_json, Plan, PlanRequest, PlannerIndex};
 use proptest::prelude::*;
 use serde_json::Value;

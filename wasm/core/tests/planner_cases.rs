@@ -4,10 +4,11 @@
 
 mod common;
 use common::hand::{goal_contents, outcome, plan_of, query, try_plan, units};
+use foon_core::contract::plan::{Origin, Status};
 use foon_core::error::ErrorCode;
-use foon_core::plan::{Origin, Status};
+use foon_core::foon::read::parse_str;
 use foon_core::similarity::{ExactMatch, Similarity};
-use foon_core::{foon_text, parse::parse_str, pddl, progress_json, Plan};
+use foon_core::{foon_text, pddl, progress_json, Plan};
 
 /// A similarity given as a table of pairs (symmetric); 1 for a name with itself, 0 otherwise.
 struct Pairs(&'static [(&'static str, &'static str, f32)]);
@@ -364,7 +365,7 @@ fn case_4_takes_a_branch_from_elsewhere_in_foon_and_attaches_it_where_ingredient
         .unwrap_or_else(|| panic!("{all:#?}"));
     assert_eq!(p.units[slice].origin, Origin::Grafted);
     // attached to the mixing unit, never to a cutting one (a robot cuts one item at a time)
-    let takes = |u: &foon_core::plan::PlanUnit| {
+    let takes = |u: &foon_core::contract::plan::PlanUnit| {
         u.inputs
             .iter()
             .any(|n| n.label == "zucchini" && n.states.iter().any(|s| s == "sliced"))

@@ -5,11 +5,11 @@
 
 mod common;
 use common::{dev_queries, embeddings, foon111, load};
-use foon_core::foods;
-use foon_core::plan::Status;
-use foon_core::planner::states::{category, Category};
+use foon_core::contract::plan::Status;
 use foon_core::planner::{cautions, violations, CautionKind};
 use foon_core::similarity::{ExactMatch, Similarity};
+use foon_core::vocab::foods;
+use foon_core::vocab::states::{category, Category};
 use foon_core::{plan, PlanRequest, PlannerIndex, Query};
 use std::collections::BTreeMap;
 

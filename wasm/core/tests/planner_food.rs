@@ -1041,9 +1041,9 @@ fn a_paste_in_for_a_ground_seed_is_not_called_a_powder_and_oil_is_shown_liquid()
 
 #[test]
 fn whole_spices_are_not_chopped_and_an_orange_keeps_its_skin_to_be_grated() {
-    assert!(!foon_core::foods::takes("nutmeg", "chop"));
-    assert!(foon_core::foods::takes("nutmeg", "grate"));
-    assert!(!foon_core::foods::cuts("grate") && foon_core::foods::cuts("slice"));
+    assert!(!foon_core::vocab::foods::takes("nutmeg", "chop"));
+    assert!(foon_core::vocab::foods::takes("nutmeg", "grate"));
+    assert!(!foon_core::vocab::foods::cuts("grate") && foon_core::vocab::foods::cuts("slice"));
 }
 
 /// Fried rice (class 19): an egg fried in a pan with oil; elsewhere in FOON rice is boiled.

@@ -3,7 +3,8 @@
 //! bundle and read back, it is the same knowledge base.
 
 mod gen;
-use foon_core::{load, write, KnowledgeBase};
+use foon_core::foon::write;
+use foon_core::{load, KnowledgeBase};
 use proptest::prelude::*;
 
 fn as_files(files: &[(String, String)]) -> Vec<(String, Vec<u8>)> {
@@ -77,7 +78,7 @@ proptest! {
         let reversed: Vec<_> = files.iter().rev().cloned().collect();
         prop_assert_eq!(&load(&as_files(&reversed)).unwrap(), &kb);
         // the same files as one bundle
-        let bundle = foon_core::bundle::join_bundle(files.iter().map(|(n, t)| (n.as_str(), t.as_str())));
+        let bundle = foon_core::foon::bundle::join_bundle(files.iter().map(|(n, t)| (n.as_str(), t.as_str())));
         prop_assert_eq!(&load(&[("kb.foon".to_string(), bundle.into_bytes())]).unwrap(), &kb);
     }
 

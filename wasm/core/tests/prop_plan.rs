@@ -5,8 +5,8 @@
 
 mod common;
 mod gen;
-use foon_core::decode;
-use foon_core::plan::{PlanRequest, Query, QueryIngredient};
+use foon_core::contract::decode;
+use foon_core::contract::plan::{PlanRequest, Query, QueryIngredient};
 use foon_core::similarity::{ExactMatch, Similarity};
 use foon_core::{load, EmbeddingSimilarity, ErrorCode, KnowledgeBase, Plan, PlannerIndex};
 use gen::plans::{foon_round_trip_problems, known_defect, order_problems};

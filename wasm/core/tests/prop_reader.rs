@@ -2,9 +2,10 @@
 //! well formed; written back as FOON text it reads the same; and labels' normal form is stable.
 
 mod gen;
-use foon_core::label::{normalize_label, normalize_word};
-use foon_core::parse::{parse_bytes, parse_str, ParsedObject, Subgraph};
-use foon_core::{limits, write};
+use foon_core::foon::label::{normalize_label, normalize_word};
+use foon_core::foon::read::{parse_bytes, parse_str, ParsedObject, Subgraph};
+use foon_core::foon::write;
+use foon_core::limits;
 use proptest::prelude::*;
 
 type Obj = (String, bool, Option<Option<u32>>);

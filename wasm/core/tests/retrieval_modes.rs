@@ -5,8 +5,8 @@
 mod common;
 use common::hand::{plan_of, try_plan};
 use common::{dev_queries, foon111, load};
+use foon_core::contract::plan::{Performer, RetrievalMode, RobotOptions};
 use foon_core::error::ErrorCode;
-use foon_core::plan::{Performer, RetrievalMode, RobotOptions};
 use foon_core::similarity::ExactMatch;
 use foon_core::{plan, Plan, PlanRequest, PlannerIndex};
 
@@ -108,7 +108,7 @@ fn without_robot_options_the_plan_has_no_robot_view_and_bad_figures_are_refused(
     // an unknown mode or option is a bad request with its place in the JSON
     for wrong in [r#""mode": "fastest""#, r#""human_step": 1"#] {
         let text = format!(r#"{{"query": {{"type": "salad"}}, "robot": {{{wrong}}}}}"#);
-        let e = foon_core::decode::plan_request(&text).expect_err(wrong);
+        let e = foon_core::contract::decode::plan_request(&text).expect_err(wrong);
         assert_eq!((e.code, e.line), (ErrorCode::BadQuery, Some(1)), "{e}");
     }
 }

@@ -4,8 +4,8 @@
 mod common;
 
 use foon_core::error::ErrorCode;
+use foon_core::similarity::ranking::{similar, EmbeddingSimilarity};
 use foon_core::similarity::Similarity;
-use foon_core::substitute::{similar, EmbeddingSimilarity};
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
@@ -82,7 +82,7 @@ fn a_damaged_table_is_bad_embeddings_never_a_panic() {
     // another version (version 1 had a scale per row), even with a consistent checksum
     let mut other = good[..good.len() - 4].to_vec();
     other[8] = 1;
-    let crc = foon_core::embedding::crc32(&other);
+    let crc = foon_core::similarity::table::crc32(&other);
     other.extend_from_slice(&crc.to_le_bytes());
     let e = EmbeddingSimilarity::from_bytes(&other).unwrap_err();
     assert_eq!(e.code, ErrorCode::BadEmbeddings);

@@ -4,8 +4,8 @@
 
 mod common;
 
+use foon_core::similarity::ranking::{EmbeddingSimilarity, Options};
 use foon_core::similarity::Similarity;
-use foon_core::substitute::{EmbeddingSimilarity, Options};
 use std::path::PathBuf;
 
 fn repo() -> PathBuf {
@@ -73,11 +73,11 @@ fn evaluate(sim: &dyn Similarity, labels: &[&str], dev: &[(String, Vec<String>)]
     let mut firsts = Vec::new();
     let mut flags = Vec::new();
     for (q, ok) in dev {
-        let ranked = sim.rank(&foon_core::label::normalize_label(q), labels, 5);
+        let ranked = sim.rank(&foon_core::foon::label::normalize_label(q), labels, 5);
         let hit = |(l, _): &(String, f32)| ok.contains(l);
         if let Some(first) = ranked.first() {
             firsts.push((first.1, hit(first)));
-            let query = foon_core::label::normalize_label(q);
+            let query = foon_core::foon::label::normalize_label(q);
             flags.push((sim.low_confidence(&query, &first.0, first.1), hit(first)));
         }
         if ranked.first().is_some_and(hit) {
@@ -179,11 +179,11 @@ fn substitution_quality_on_the_dev_set() {
     // Generalisation: the same with the dev names taken out of the taxonomy (and of the alias list),
     // so that they are handled as unlisted names are (inferred category, vectors, lexical rules).
     let names: Vec<&str> = dev.iter().map(|(q, _)| q.as_str()).collect();
-    let taxonomy = foon_core::substitute::Taxonomy::builtin().without(&names);
-    let all_aliases = foon_core::substitute::aliases();
+    let taxonomy = foon_core::similarity::ranking::Taxonomy::builtin().without(&names);
+    let all_aliases = foon_core::similarity::ranking::aliases();
     let dev_keys: Vec<String> = names
         .iter()
-        .map(|n| foon_core::label::normalize_label(n))
+        .map(|n| foon_core::foon::label::normalize_label(n))
         .collect();
     let kept_aliases = all_aliases
         .iter()
@@ -248,7 +248,7 @@ fn weight_grid() {
     let labels: Vec<&str> = kb.ingredient_labels().into_iter().collect();
     let dev = dev_set();
     let names: Vec<&str> = dev.iter().map(|(q, _)| q.as_str()).collect();
-    let taxonomy = foon_core::substitute::Taxonomy::builtin().without(&names);
+    let taxonomy = foon_core::similarity::ranking::Taxonomy::builtin().without(&names);
     let mut sim = EmbeddingSimilarity::from_bytes(&bytes).unwrap();
     for head in [1.0f32, 1.5, 2.0] {
         for cat in [0.2f32, 0.3, 0.45] {
@@ -265,7 +265,7 @@ fn weight_grid() {
                     let listed = evaluate(&sim, &labels, &dev);
                     let unlisted_sim = sim.with_taxonomy_and_aliases(
                         taxonomy.clone(),
-                        (**foon_core::substitute::aliases()).clone(),
+                        (**foon_core::similarity::ranking::aliases()).clone(),
                     );
                     let unlisted = evaluate(&unlisted_sim, &labels, &dev);
                     eprintln!(
@@ -276,8 +276,10 @@ fn weight_grid() {
                         100.0 * unlisted.top5
                     );
                     sim = unlisted_sim.with_taxonomy_and_aliases(
-                        foon_core::substitute::Taxonomy::builtin().as_ref().clone(),
-                        (**foon_core::substitute::aliases()).clone(),
+                        foon_core::similarity::ranking::Taxonomy::builtin()
+                            .as_ref()
+                            .clone(),
+                        (**foon_core::similarity::ranking::aliases()).clone(),
                     );
                 }
             }

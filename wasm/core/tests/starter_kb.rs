@@ -5,7 +5,7 @@
 
 mod common;
 use common::{load, read_dir};
-use foon_core::parse::{parse_bytes, Subgraph};
+use foon_core::foon::read::{parse_bytes, Subgraph};
 use foon_core::{KnowledgeBase, NodeId, ObjectNode, StateArg};
 use std::collections::{BTreeMap, BTreeSet, HashSet};
 use std::path::PathBuf;

@@ -4,7 +4,8 @@
 mod common;
 use common::{embeddings, foon111, load};
 use foon_core::planner::{Transitions, Verdict};
-use foon_core::{foods, plan, PlanRequest, PlannerIndex, Query};
+use foon_core::vocab::foods;
+use foon_core::{plan, PlanRequest, PlannerIndex, Query};
 
 #[test]
 fn foon_handles_each_form_of_food_only_in_ways_a_cook_would() {

@@ -7,9 +7,10 @@
 //!   and the knowledge base exported as a bundle re-imports to the same nodes, units and goals.
 #![no_main]
 
-use foon_core::label::{normalize_label, normalize_word};
-use foon_core::parse::{parse_bytes, parse_str, ParsedObject, Subgraph};
-use foon_core::{limits, load, write, KnowledgeBase};
+use foon_core::foon::label::{normalize_label, normalize_word};
+use foon_core::foon::read::{parse_bytes, parse_str, ParsedObject, Subgraph};
+use foon_core::foon::write;
+use foon_core::{limits, load, KnowledgeBase};
 use libfuzzer_sys::fuzz_target;
 
 type Shape = Vec<(

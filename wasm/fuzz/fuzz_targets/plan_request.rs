@@ -4,8 +4,9 @@
 //! unit after the units making its inputs, one step per unit — or fails with a typed error.
 #![no_main]
 
-use foon_core::plan::{Plan, PlanNode};
-use foon_core::{decode, load, EmbeddingSimilarity, ErrorCode, KnowledgeBase, PlannerIndex};
+use foon_core::contract::plan::{Plan, PlanNode};
+use foon_core::contract::decode;
+use foon_core::{load, EmbeddingSimilarity, ErrorCode, KnowledgeBase, PlannerIndex};
 use libfuzzer_sys::fuzz_target;
 use std::collections::HashSet;
 use std::path::PathBuf;

@@ -1,10 +1,10 @@
 //! Culinary plausibility of a finished plan, from its units and progress lines alone (not from what
 //! modification meant to do), by the food knowledge of `foods`: what a cook would stop at.
 
-use super::states::{category, Category};
-use crate::foods;
-use crate::plan::{Caution, CautionKind, Plan, ProgressLine, Status};
-use crate::taxonomy::is_utensil;
+use crate::contract::plan::{Caution, CautionKind, Plan, ProgressLine, Status};
+use crate::vocab::foods;
+use crate::vocab::states::{category, Category};
+use crate::vocab::taxonomy::is_utensil;
 
 /// What a cook would stop at in `plan`; empty when nothing.
 pub fn cautions(plan: &Plan) -> Vec<Caution> {

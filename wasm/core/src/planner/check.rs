@@ -3,8 +3,8 @@
 //! input is something a kitchen has at the start, which the goal never is), no unit whose products nobody
 //! uses, the goal made.
 
-use crate::plan::{Plan, PlanNode, PlanUnit};
-use crate::taxonomy::START_STATES;
+use crate::contract::plan::{Plan, PlanNode, PlanUnit};
+use crate::vocab::taxonomy::START_STATES;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 
@@ -132,7 +132,7 @@ mod tests {
             inputs: inputs.into_iter().map(Arc::new).collect(),
             motion: motion.into(),
             outputs: outputs.into_iter().map(Arc::new).collect(),
-            origin: crate::plan::Origin::Reference,
+            origin: crate::contract::plan::Origin::Reference,
             sources: Arc::default(),
         }
     }
@@ -163,8 +163,8 @@ mod tests {
 
     fn plan_of(units: Vec<PlanUnit>, goal: &PlanNode) -> Plan {
         Plan {
-            format_version: crate::plan::FORMAT_VERSION,
-            query: crate::plan::Query {
+            format_version: crate::contract::plan::FORMAT_VERSION,
+            query: crate::contract::plan::Query {
                 id: None,
                 dish_type: String::new(),
                 ingredients: Vec::new(),
@@ -172,7 +172,7 @@ mod tests {
             dish_class: None,
             notes: Vec::new(),
             modified: true,
-            goal: crate::plan::GoalInfo {
+            goal: crate::contract::plan::GoalInfo {
                 label: goal.label.clone(),
                 states: goal.states.clone(),
                 ingredients: Vec::new(),

@@ -3,9 +3,9 @@
 
 use super::modify::{food_states, Context};
 use super::tree::Tree;
-use crate::kb::KnowledgeBase;
-use crate::model::{NodeId, UnitId};
-use crate::plan::{IngredientOutcome, Status};
+use crate::contract::plan::{IngredientOutcome, Status};
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::model::{NodeId, UnitId};
 use crate::trace::{
     Attachment, IngredientTrace, NameMatch, StateChoice, Trace, TraceUnit, TRACE_VERSION,
 };
@@ -131,7 +131,7 @@ impl Trace {
         let frequency = ctx.index.state_frequency(ctx.class, eq, &food);
         self.ingredient(object, Some(asked)).state_choice = Some(StateChoice {
             node: node.map(|(n, _)| kb.nodes[n].to_string()),
-            category: super::states::category(state).name().to_string(),
+            category: crate::vocab::states::category(state).name().to_string(),
             in_state: node.is_some_and(|(_, s)| s),
             frequency_in_class: frequency.0,
             frequency_overall: frequency.1,

@@ -2,14 +2,14 @@
 //! class, the motion most used to reach each state, the utensil most used with each motion.
 
 use super::output::plan_node;
-use super::states::{category, has_food_state, is_food_state, node_category, Category};
 use super::transitions::Transitions;
-use crate::kb::KnowledgeBase;
+use crate::contract::plan::PlanNode;
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::model::NodeId;
 use crate::memo::Memo;
-use crate::model::NodeId;
-use crate::plan::PlanNode;
-use crate::substitute::Taxonomy;
-use crate::taxonomy::{is_transfer_motion, is_utensil};
+use crate::similarity::ranking::Taxonomy;
+use crate::vocab::states::{category, has_food_state, is_food_state, node_category, Category};
+use crate::vocab::taxonomy::{is_transfer_motion, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::collections::{BTreeMap, BTreeSet};
@@ -240,7 +240,7 @@ fn sold_as(kb: &KnowledgeBase, ingredient_labels: &[String]) -> HashMap<String, 
 fn heated_vessels(kb: &KnowledgeBase) -> HashSet<SmolStr> {
     kb.units
         .iter()
-        .filter(|u| crate::foods::cooks(&u.motion))
+        .filter(|u| crate::vocab::foods::cooks(&u.motion))
         .flat_map(|u| u.input_nodes())
         .map(|n| &kb.nodes[n].label)
         .filter(|l| is_utensil(l))
@@ -384,7 +384,7 @@ impl PlannerIndex {
                     }
                     // every listed content (contains, greased, garnished...), as g(u) always had it
                     for st in &node.states {
-                        if let Some(crate::model::StateArg::Ingredients(list)) = &st.arg {
+                        if let Some(crate::foon::model::StateArg::Ingredients(list)) = &st.arg {
                             ids.extend(list.iter().map(|l| intern(l)));
                         }
                     }

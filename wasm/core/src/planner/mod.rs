@@ -2,35 +2,36 @@
 //! node (Alg. 1), its task tree (Alg. 2), and the modification of that tree for the query's ingredients
 //! (Table I), followed by pruning, progress lines and recipe-like steps.
 
+mod alg1_goal;
+mod alg2_retrieve;
 mod cautions;
 mod check;
 mod explain;
-mod goal;
 mod index;
 mod modify;
 mod optimal;
 mod output;
-mod retrieve;
 mod schedule;
 mod score;
-pub mod states;
 mod transitions;
 mod tree;
 
-pub use crate::plan::{Caution, CautionKind};
+pub use crate::contract::plan::{Caution, CautionKind};
 pub use cautions::cautions;
 pub use check::{available_at_start, violations};
 pub use index::PlannerIndex;
 pub use transitions::{Transitions, Verdict};
 
+use crate::contract::plan::{
+    DishClassRef, Plan, PlanRequest, Query, QueryIngredient, FORMAT_VERSION,
+};
 use crate::error::{ErrorCode, FoonError, Result};
-use crate::kb::KnowledgeBase;
-use crate::label::{normalize_label, normalize_word};
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::label::{normalize_label, normalize_word};
 use crate::limits;
-use crate::plan::{DishClassRef, Plan, PlanRequest, Query, QueryIngredient, FORMAT_VERSION};
 use crate::robot::{robot_view, Motions};
 use crate::similarity::Similarity;
-use crate::taxonomy::{dish_class_name, dish_class_of};
+use crate::vocab::taxonomy::{dish_class_name, dish_class_of};
 use std::collections::BTreeMap;
 
 /// Plans a query against a knowledge base. `index` must have been built from the same `kb`
@@ -56,8 +57,8 @@ pub fn plan(
     let motions = request.robot.as_ref().map(Motions::new).transpose()?;
     let scorer = score::Scorer::new(similarity, index, &labels);
     let trace = explain::Recorder::new(request.explain);
-    let chosen =
-        goal::select(kb, index, &scorer, class, &mut notes, &query, &trace).ok_or_else(|| {
+    let chosen = alg1_goal::select(kb, index, &scorer, class, &mut notes, &query, &trace)
+        .ok_or_else(|| {
             FoonError::new(
                 ErrorCode::NoGoal,
                 "the knowledge base has no goal node with a functional unit that makes it",
@@ -73,7 +74,7 @@ pub fn plan(
             optimal::retrieve_in_mode(kb, index, &scorer, root, o.mode, m, &trace, &mut notes)
         });
     let reference = in_mode.unwrap_or_else(|| {
-        retrieve::retrieve_explained(
+        alg2_retrieve::retrieve_explained(
             kb,
             index,
             &scorer,
@@ -98,7 +99,7 @@ pub fn plan(
         goal_subgraph: index.subgraph_id(&chosen.goal.subgraph),
         scorer: &scorer,
         trace: &trace,
-        readings: crate::foods::query_readings(&query),
+        readings: crate::vocab::foods::query_readings(&query),
     };
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
@@ -157,7 +158,7 @@ fn note_little_kept(
     subgraph: &str,
     notes: &mut Vec<String>,
 ) {
-    use crate::plan::Origin;
+    use crate::contract::plan::Origin;
     let kept = order
         .iter()
         .filter(|&&u| {

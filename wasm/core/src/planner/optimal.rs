@@ -9,13 +9,13 @@
 //! sum whenever no made node feeds two units (as in the recipes of FOON-111). Ties go to fewer units,
 //! then to the smaller unit id.
 
+use super::alg2_retrieve::{retrieve, Retrieved};
 use super::explain::{kb_unit, Recorder};
 use super::index::PlannerIndex;
-use super::retrieve::{retrieve, Retrieved};
 use super::score::Scorer;
-use crate::kb::KnowledgeBase;
-use crate::model::{NodeId, UnitId};
-use crate::plan::RetrievalMode;
+use crate::contract::plan::RetrievalMode;
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::model::{NodeId, UnitId};
 use crate::robot::Motions;
 use crate::trace::{CandidateUnit, Expansion, Outcome};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};

@@ -4,7 +4,7 @@
 //! in all when the similarity has a memory (`Similarity::memory`): query names recur from plan to plan.
 
 use super::index::{GoalClass, PlannerIndex};
-use crate::model::UnitId;
+use crate::foon::model::UnitId;
 use crate::similarity::{PairRow, Prepared, Similarity};
 use rustc_hash::FxHashMap as HashMap;
 use std::cell::RefCell;

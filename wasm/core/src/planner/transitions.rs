@@ -5,13 +5,13 @@
 //! vegetables; a substitute's branch is demoted when it handles the asked food in a way no recipe
 //! handles a food of that form.
 
-use crate::foods;
-use crate::kb::KnowledgeBase;
-use crate::model::ObjectNode;
-use crate::taxonomy::is_utensil;
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::model::ObjectNode;
+use crate::vocab::foods;
+use crate::vocab::taxonomy::is_utensil;
 use rustc_hash::FxHashMap as HashMap;
 
-use super::states::{akin, is_food_state};
+use crate::vocab::states::{akin, is_food_state};
 
 /// Below this many transitions of a form the model says nothing of it (too few recipes to tell).
 const MIN_EVIDENCE: u32 = 20;

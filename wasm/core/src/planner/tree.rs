@@ -2,11 +2,11 @@
 //! renaming an object or editing a `contains {…}` list changes it everywhere at once and the tree stays a
 //! connected graph. Each slot has at most one designated producer; ordering follows producers only.
 
-use super::retrieve::Retrieved;
-use crate::kb::KnowledgeBase;
-use crate::model::{NodeId, ObjectNode, State, StateArg};
-use crate::plan::Origin;
-use crate::taxonomy::is_utensil;
+use super::alg2_retrieve::Retrieved;
+use crate::contract::plan::Origin;
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::model::{NodeId, ObjectNode, State, StateArg};
+use crate::vocab::taxonomy::is_utensil;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::borrow::Cow;

@@ -1,9 +1,10 @@
 //! Planning on small hand-made knowledge bases: load, plan (sound by the evaluator's definitions) and
 //! look at the result.
 
+use foon_core::contract::decode;
 use foon_core::planner::violations;
 use foon_core::similarity::Similarity;
-use foon_core::{decode, load, plan, Plan, PlannerIndex};
+use foon_core::{load, plan, Plan, PlannerIndex};
 
 pub fn kb(files: &[(&str, &str)]) -> (foon_core::KnowledgeBase, PlannerIndex) {
     let files: Vec<(String, Vec<u8>)> = files
@@ -45,7 +46,7 @@ pub fn query(dish: &str, items: &[(&str, &str)]) -> String {
 
 /// The plan's units as "motion: input (states) + ... -> output (states) + ...", in order.
 pub fn units(p: &Plan) -> Vec<String> {
-    let side = |nodes: &[std::sync::Arc<foon_core::plan::PlanNode>]| {
+    let side = |nodes: &[std::sync::Arc<foon_core::contract::plan::PlanNode>]| {
         let mut names: Vec<String> = nodes
             .iter()
             .map(|n| format!("{} ({})", n.label, n.states.join(", ")))
@@ -59,7 +60,7 @@ pub fn units(p: &Plan) -> Vec<String> {
         .collect()
 }
 
-pub fn outcome<'p>(p: &'p Plan, object: &str) -> &'p foon_core::plan::IngredientOutcome {
+pub fn outcome<'p>(p: &'p Plan, object: &str) -> &'p foon_core::contract::plan::IngredientOutcome {
     p.ingredients
         .iter()
         .find(|i| i.object == object)

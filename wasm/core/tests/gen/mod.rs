@@ -169,22 +169,22 @@ fn node_key(o: &Obj) -> (String, Vec<String>, Option<String>, Vec<String>) {
     let mut states: Vec<String> = o
         .states
         .iter()
-        .map(|&s| foon_core::label::normalize_word(STATES[s]))
+        .map(|&s| foon_core::foon::label::normalize_word(STATES[s]))
         .collect();
     states.sort();
     states.dedup();
     let mut contains: Vec<String> = o
         .contains
         .iter()
-        .map(|&l| foon_core::label::normalize_label(LABELS[l]))
+        .map(|&l| foon_core::foon::label::normalize_label(LABELS[l]))
         .collect();
     contains.sort();
     contains.dedup();
     (
-        foon_core::label::normalize_label(LABELS[o.label]),
+        foon_core::foon::label::normalize_label(LABELS[o.label]),
         states,
         o.container
-            .map(|c| foon_core::label::normalize_label(CONTAINERS[c])),
+            .map(|c| foon_core::foon::label::normalize_label(CONTAINERS[c])),
         contains,
     )
 }

@@ -1,8 +1,8 @@
 //! Checks of a plan shared by the planning properties: no unit twice, a valid execution order, one step
 //! per unit, and its FOON text export reading back to the same units.
 
-use foon_core::parse::{parse_str, ParsedObject};
-use foon_core::plan::{Plan, PlanNode};
+use foon_core::contract::plan::{Plan, PlanNode};
+use foon_core::foon::read::{parse_str, ParsedObject};
 use foon_core::planner::available_at_start;
 use std::collections::HashSet;
 

@@ -2,19 +2,19 @@
 //! here; each step has its file: `equivalent`, `cases` (Table I), `restate` (cases 3 and 4 in the tree),
 //! `branch` (case 2 copies, case 4 from FOON), `attach`, `finish` and `prune`.
 
+use super::alg2_retrieve::{retrieve, retrieve_within, Retrieved};
 use super::index::{Picks, PlannerIndex};
-use super::retrieve::{retrieve, retrieve_within, Retrieved};
-use super::states::{
-    akin, category, food_state_category, has_food_state, is_food_state, kind, state_text, Category,
-};
 use super::transitions::Verdict;
 use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
-use crate::foods;
-use crate::kb::KnowledgeBase;
-use crate::model::{NodeId, ObjectNode, State, UnitId};
-use crate::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
+use crate::contract::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::model::{NodeId, ObjectNode, State, UnitId};
 use crate::similarity::Similarity;
-use crate::taxonomy::{dish_class_name, is_transfer_motion, is_utensil};
+use crate::vocab::foods;
+use crate::vocab::states::{
+    akin, category, food_state_category, has_food_state, is_food_state, kind, state_text, Category,
+};
+use crate::vocab::taxonomy::{dish_class_name, is_transfer_motion, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::borrow::Cow;

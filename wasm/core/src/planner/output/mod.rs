@@ -1,16 +1,16 @@
 //! From the modified tree to the plan: units in execution order, progress lines (section IV-A,
 //! `progress`) and one plain sentence per unit (`steps`).
 
-use super::states::{category, kind, state_text, Category};
 use super::tree::{SlotId, TUnitId, Tree};
-use crate::foods;
-use crate::kb::{Goal, KnowledgeBase};
-use crate::model::{ObjectNode, State, StateArg};
-use crate::plan::{
+use crate::contract::plan::{
     DishClassRef, GoalInfo, IngredientOutcome, Plan, PlanNode, PlanUnit, ProgressLine,
     ProgressState, Query, Status,
 };
-use crate::taxonomy::{is_mixing_motion, PUT_MOTIONS};
+use crate::foon::kb::{Goal, KnowledgeBase};
+use crate::foon::model::{ObjectNode, State, StateArg};
+use crate::vocab::foods;
+use crate::vocab::states::{category, kind, state_text, Category};
+use crate::vocab::taxonomy::{is_mixing_motion, PUT_MOTIONS};
 use smol_str::{SmolStr, SmolStrBuilder};
 use std::sync::Arc;
 

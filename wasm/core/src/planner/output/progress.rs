@@ -425,7 +425,7 @@ pub(super) fn walk<'t>(
                                 location: location(n),
                             }
                         };
-                        let cooks = crate::foods::cooks(&tree.units[u].motion);
+                        let cooks = crate::vocab::foods::cooks(&tree.units[u].motion);
                         if states.last() == Some(&state) && !cooks {
                             // already there (FOON lists what a bowl holds among the inputs of
                             // the next thing added to it): no step of its own, unless it cooks

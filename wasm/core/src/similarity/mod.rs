@@ -2,6 +2,10 @@
 //! retrieval heuristic and substitution all go through it), so the embedding table can replace the
 //! exact-match default without touching the planner.
 
+mod cones;
+pub mod ranking;
+pub mod table;
+
 use rustc_hash::FxHashMap as HashMap;
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering::Relaxed};
 use std::sync::{Arc, Mutex, OnceLock};

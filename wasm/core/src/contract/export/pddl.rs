@@ -4,7 +4,7 @@
 //! exactly the plan's units (`tests/unit/pddl-planner.test.ts`).
 
 use super::objects::{ident, world, Action, Fact};
-use crate::plan::{Plan, PlanNode};
+use crate::contract::plan::{Plan, PlanNode};
 use serde::Serialize;
 use std::collections::BTreeSet;
 use std::fmt::Write;

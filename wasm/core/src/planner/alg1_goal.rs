@@ -3,11 +3,11 @@
 use super::explain::Recorder;
 use super::index::PlannerIndex;
 use super::score::{GoalFit, Scorer};
-use crate::foods::{self, Cooking};
-use crate::kb::{Goal, KnowledgeBase};
-use crate::plan::Query;
-use crate::taxonomy::{dish_class_name, kin_classes};
+use crate::contract::plan::Query;
+use crate::foon::kb::{Goal, KnowledgeBase};
 use crate::trace::GoalCandidate;
+use crate::vocab::foods::{self, Cooking};
+use crate::vocab::taxonomy::{dish_class_name, kin_classes};
 use std::cmp::Ordering;
 
 #[derive(Clone, Debug)]

@@ -4,10 +4,10 @@
 //! A malformed file is an error naming file, line, column and reason; no unit is ever dropped silently.
 
 use crate::error::{ErrorCode, FoonError, Result};
-use crate::label::{normalize_label, normalize_word};
+use crate::foon::label::{normalize_label, normalize_word};
+use crate::foon::model::{ObjectNode, State, StateArg};
 use crate::limits;
-use crate::model::{ObjectNode, State, StateArg};
-use crate::taxonomy::{dish_class_name, dish_classes, is_separating_motion, is_utensil};
+use crate::vocab::taxonomy::{dish_class_name, dish_classes, is_separating_motion, is_utensil};
 use rustc_hash::FxHashMap;
 use smol_str::SmolStr;
 

@@ -1,8 +1,8 @@
 //! The project's state taxonomy (`data/states.tsv`): twelve categories of states that can stand in for
 //! each other, and which category can be reached from which (a chopped onion cannot be made whole again).
 
-use crate::label::normalize_word;
-use crate::model::ObjectNode;
+use crate::foon::label::normalize_word;
+use crate::foon::model::ObjectNode;
 use rustc_hash::FxHashMap as HashMap;
 use smol_str::{SmolStr, SmolStrBuilder};
 use std::cell::RefCell;
@@ -107,7 +107,7 @@ struct Entry {
 fn table() -> &'static HashMap<String, Entry> {
     static TABLE: OnceLock<HashMap<String, Entry>> = OnceLock::new();
     TABLE.get_or_init(|| {
-        crate::taxonomy::data_lines(STATES_TSV)
+        crate::vocab::taxonomy::data_lines(STATES_TSV)
             .filter_map(|l| {
                 let mut columns = l.split('\t');
                 let state = columns.next()?;
@@ -263,7 +263,7 @@ fn comma_separated<'a>(states: impl Iterator<Item = &'a str>) -> SmolStr {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::State;
+    use crate::foon::model::State;
 
     #[test]
     fn a_state_undone_on_the_way_is_not_shown() {

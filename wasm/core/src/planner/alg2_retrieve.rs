@@ -9,8 +9,8 @@
 use super::explain::{kb_unit, Recorder};
 use super::index::PlannerIndex;
 use super::score::Scorer;
-use crate::kb::KnowledgeBase;
-use crate::model::{NodeId, UnitId};
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::model::{NodeId, UnitId};
 use crate::trace::{CandidateUnit, Expansion, Outcome};
 use fixedbitset::FixedBitSet;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};

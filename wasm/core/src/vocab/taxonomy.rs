@@ -1,12 +1,12 @@
 //! The project's own vocabularies: the 30 dish classes with their keywords, and the utensils,
 //! containers and appliances that are never ingredients. Both are project files under `data/`.
 
-use crate::label::{fold, normalize_label};
+use crate::foon::label::{fold, normalize_label};
 use rustc_hash::FxHashSet as HashSet;
 use std::sync::OnceLock;
 
-const DISH_CLASSES_TSV: &str = include_str!("../data/dish_classes.tsv");
-const UTENSILS_TXT: &str = include_str!("../data/utensils.txt");
+const DISH_CLASSES_TSV: &str = include_str!("../../data/dish_classes.tsv");
+const UTENSILS_TXT: &str = include_str!("../../data/utensils.txt");
 
 /// One dish class: its index (the number on FOON goal lines), name and keywords.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -96,7 +96,10 @@ pub fn dish_class_of(text: &str) -> Option<u32> {
     if let Some(c) = classes.iter().find(|c| c.keywords.contains(&wanted)) {
         return Some(c.index);
     }
-    let words: Vec<String> = fold(text).split(' ').map(crate::label::singular).collect();
+    let words: Vec<String> = fold(text)
+        .split(' ')
+        .map(crate::foon::label::singular)
+        .collect();
     let joined = format!(" {} ", words.join(" "));
     let mut best: Option<(usize, usize, u32)> = None; // (end position, keyword length, class)
     for c in classes {

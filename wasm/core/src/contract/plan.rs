@@ -289,7 +289,7 @@ pub struct Plan {
     pub goal: GoalInfo,
     /// In a valid execution order: every produced input is made by an earlier unit. Written with
     /// shared nodes by number (`plan_json`).
-    #[serde(with = "crate::plan_json")]
+    #[serde(with = "crate::contract::json")]
     pub units: Vec<PlanUnit>,
     /// One per query ingredient (after duplicates were removed), in query order.
     pub ingredients: Vec<IngredientOutcome>,

@@ -6,8 +6,8 @@
 //! facts the object ever has) and leaves its output objects exactly as theirs say, so a planner can
 //! neither skip a unit nor take one before the units making its inputs.
 
-use crate::plan::{Plan, PlanNode, PlanUnit};
-use crate::taxonomy::is_utensil;
+use crate::contract::plan::{Plan, PlanNode, PlanUnit};
+use crate::vocab::taxonomy::is_utensil;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// A PDDL name: lower-case letters, digits and dashes, starting with a letter, never a reserved word.

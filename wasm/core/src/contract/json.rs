@@ -4,7 +4,7 @@
 //! count of nodes written in full before it, so the app parses a sixth less text; its reader
 //! (`src/planner/index.ts`) and `deserialize` here put the nodes back.
 
-use crate::plan::{Origin, Plan, PlanNode, PlanUnit};
+use crate::contract::plan::{Origin, Plan, PlanNode, PlanUnit};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use smol_str::SmolStr;
 use std::sync::Arc;

@@ -2,10 +2,10 @@
 //! `#@file` part per subgraph), in the plain dialect. Reading the text back gives the same units, nodes
 //! and goals (`tests/prop_roundtrip.rs`), so a custom knowledge base can be exported and re-imported.
 
-use crate::bundle::FILE_MARK;
-use crate::kb::KnowledgeBase;
-use crate::model::{ObjectNode, State, StateArg};
-use crate::parse::{GoalMark, ParsedObject, Subgraph};
+use crate::foon::bundle::FILE_MARK;
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::model::{ObjectNode, State, StateArg};
+use crate::foon::read::{GoalMark, ParsedObject, Subgraph};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 

@@ -2,9 +2,9 @@
 //! where the JSON is wrong: `ErrorCode::BadQuery` (or `TooLarge`) with the 1-based line and column of the
 //! JSON text, never a panic. The bindings and the fuzz target `plan_request` use exactly these functions.
 
+use crate::contract::plan::PlanRequest;
 use crate::error::{ErrorCode, FoonError, Result};
 use crate::limits;
-use crate::plan::PlanRequest;
 use serde::de::DeserializeOwned;
 
 fn decode<T: DeserializeOwned>(json: &str, what: &str) -> Result<T> {

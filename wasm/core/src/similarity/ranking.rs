@@ -13,21 +13,21 @@
 //!
 //! All of it sits behind the `Similarity` trait, so the planner benefits without changes.
 
-use crate::cones::{dot, Cones};
-use crate::embedding::{is_stop_word, words, EmbeddingTable, WordStems};
 use crate::error::Result;
-use crate::kb::KnowledgeBase;
-use crate::label::normalize_label;
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::label::normalize_label;
 use crate::memo::Memo;
+use crate::similarity::cones::{dot, Cones};
+use crate::similarity::table::{is_stop_word, words, EmbeddingTable, WordStems};
 use crate::similarity::{PairMemory, Prepared, Similarity};
-use crate::taxonomy::data_lines;
+use crate::vocab::taxonomy::data_lines;
 use rust_stemmers::{Algorithm, Stemmer};
 use rustc_hash::FxHashMap as HashMap;
 use serde::Serialize;
 use std::sync::{Arc, Mutex, OnceLock};
 
-const TAXONOMY_TSV: &str = include_str!("../data/food_taxonomy.tsv");
-const ALIASES_TSV: &str = include_str!("../data/food_aliases.tsv");
+const TAXONOMY_TSV: &str = include_str!("../../data/food_taxonomy.tsv");
+const ALIASES_TSV: &str = include_str!("../../data/food_aliases.tsv");
 
 /// Trailing words that name a form or a piece of an ingredient rather than the ingredient.
 const FORM_WORDS: &[&str] = &[
@@ -1197,7 +1197,7 @@ fn cosine_of(q: &Profile, c: &Profile) -> f32 {
 }
 
 fn unit(mut v: Vec<f32>) -> Vec<f32> {
-    let n = crate::embedding::norm(&v);
+    let n = crate::similarity::table::norm(&v);
     if n > 0.0 {
         v.iter_mut().for_each(|x| *x /= n);
     }

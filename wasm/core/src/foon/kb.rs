@@ -4,10 +4,10 @@
 //! nodes and units are numbered in the sorted order of their contents.
 
 use crate::error::{ErrorCode, FoonError, Result};
+use crate::foon::model::{FunctionalUnit, NodeId, ObjectNode, UnitId, UnitObject};
+use crate::foon::read::Subgraph;
 use crate::limits;
-use crate::model::{FunctionalUnit, NodeId, ObjectNode, UnitId, UnitObject};
-use crate::parse::Subgraph;
-use crate::taxonomy::{is_start_state, is_utensil};
+use crate::vocab::taxonomy::{is_start_state, is_utensil};
 use rustc_hash::{FxHashMap, FxHashSet};
 use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
@@ -280,7 +280,7 @@ impl KnowledgeBase {
 }
 
 fn objects(
-    list: &[crate::parse::ParsedObject],
+    list: &[crate::foon::read::ParsedObject],
     index: &FxHashMap<ObjectNode, NodeId>,
 ) -> Vec<UnitObject> {
     let mut out: Vec<UnitObject> = list
@@ -320,7 +320,7 @@ fn is_raw(node: &ObjectNode) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::parse::parse_str;
+    use crate::foon::read::parse_str;
 
     const A: &str = "//\nO\ttomato\t1\nS\twhole\nO\tknife\t0\nM\tslice\t<Assumed>\nO\ttomato\t1\nS\tsliced\n//\nO\ttomato\t1\nS\tsliced\nO\tbowl\t0\nS\tempty\nM\tadd\t<Assumed>\nO\tbowl\t0\nS\tcontains\t{tomato}\nO\tsalad\t1\t15\nS\tin\t[bowl]\n";
     const B: &str = "//\nO\ttomato\t0\nS\twhole\nO\tknife\t0\nM\tslice\t<1:00,1:10>\nO\ttomato\t1\nS\tsliced\n//\n";
@@ -353,7 +353,7 @@ mod tests {
         let sliced = k
             .node_id(&ObjectNode::new(
                 "tomato",
-                vec![crate::model::State::plain("sliced")],
+                vec![crate::foon::model::State::plain("sliced")],
             ))
             .unwrap();
         assert_eq!(k.producers[sliced].len(), 1);
@@ -362,7 +362,7 @@ mod tests {
         let whole = k
             .node_id(&ObjectNode::new(
                 "tomato",
-                vec![crate::model::State::plain("whole")],
+                vec![crate::foon::model::State::plain("whole")],
             ))
             .unwrap();
         assert!(k.kitchen[whole]);

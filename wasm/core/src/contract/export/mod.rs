@@ -6,8 +6,8 @@ mod pddl;
 
 pub use pddl::{action_name, pddl, Pddl};
 
-use crate::plan::{Plan, PlanNode};
-use crate::taxonomy::is_utensil;
+use crate::contract::plan::{Plan, PlanNode};
+use crate::vocab::taxonomy::is_utensil;
 use serde::Serialize;
 use smol_str::SmolStr;
 use std::fmt::Write;

@@ -2,8 +2,8 @@
 //! labels and its plain states, as the planner knows them (normal forms, units the reader skipped left
 //! out).
 
-use crate::kb::KnowledgeBase;
-use crate::taxonomy::dish_class_name;
+use crate::foon::kb::KnowledgeBase;
+use crate::vocab::taxonomy::dish_class_name;
 use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -75,8 +75,8 @@ pub fn vocabulary(kb: &KnowledgeBase) -> Vocabulary {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kb::title_from_name;
-    use crate::parse::parse_str;
+    use crate::foon::kb::title_from_name;
+    use crate::foon::read::parse_str;
 
     #[test]
     fn titles_come_from_the_title_line_else_the_file_name() {

@@ -5,17 +5,17 @@
 //! a state of their own (`data/motion_states.tsv`), and which food an ambiguous name means in a given
 //! state (`data/food_readings.tsv`).
 
-use crate::label::{normalize_label, normalize_word};
-use crate::plan::Query;
-use crate::substitute::Taxonomy;
+use crate::contract::plan::Query;
+use crate::foon::label::{normalize_label, normalize_word};
+use crate::similarity::ranking::Taxonomy;
 use rustc_hash::FxHashMap as HashMap;
 use std::sync::OnceLock;
 
-const FORMS_TSV: &str = include_str!("../data/food_forms.tsv");
-const CARE_TSV: &str = include_str!("../data/food_care.tsv");
-const HEAT_TXT: &str = include_str!("../data/heat_motions.txt");
-const READINGS_TSV: &str = include_str!("../data/food_readings.tsv");
-const MOTION_STATES_TSV: &str = include_str!("../data/motion_states.tsv");
+const FORMS_TSV: &str = include_str!("../../data/food_forms.tsv");
+const CARE_TSV: &str = include_str!("../../data/food_care.tsv");
+const HEAT_TXT: &str = include_str!("../../data/heat_motions.txt");
+const READINGS_TSV: &str = include_str!("../../data/food_readings.tsv");
+const MOTION_STATES_TSV: &str = include_str!("../../data/motion_states.tsv");
 
 /// A physical form and the motion words it cannot take.
 #[derive(Debug)]
@@ -47,7 +47,7 @@ fn split_list(list: &str) -> impl Iterator<Item = String> + '_ {
 fn parse(text: &str) -> Forms {
     let mut forms = Vec::new();
     let mut of_category = HashMap::default();
-    for line in crate::taxonomy::data_lines(text) {
+    for line in crate::vocab::taxonomy::data_lines(text) {
         let mut parts = line.split('\t');
         let (Some(name), Some(categories), Some(cannot), Some(joins), Some(never), Some(none)) = (
             parts.next(),
@@ -139,7 +139,7 @@ struct Care {
 fn cares() -> &'static HashMap<String, Care> {
     static CARES: OnceLock<HashMap<String, Care>> = OnceLock::new();
     CARES.get_or_init(|| {
-        crate::taxonomy::data_lines(CARE_TSV)
+        crate::vocab::taxonomy::data_lines(CARE_TSV)
             .filter_map(|line| {
                 let mut parts = line.split('\t').map(str::trim);
                 let (key, cook, prepared) = (parts.next()?, parts.next()?, parts.next()?);
@@ -296,7 +296,7 @@ pub fn cuts(motion: &str) -> bool {
 fn heat_words() -> &'static [(&'static str, bool)] {
     static HEAT: OnceLock<Vec<(&'static str, bool)>> = OnceLock::new();
     HEAT.get_or_init(|| {
-        crate::taxonomy::data_lines(HEAT_TXT)
+        crate::vocab::taxonomy::data_lines(HEAT_TXT)
             .filter_map(|l| {
                 let mut parts = l.split('\t').map(str::trim);
                 Some((parts.next()?, parts.next() == Some("wet")))
@@ -325,7 +325,7 @@ pub fn cooks_food(food: &str, motion: &str) -> bool {
 pub fn leaves_in(motion: &str) -> Option<&'static str> {
     static LEAVES: OnceLock<HashMap<&'static str, &'static str>> = OnceLock::new();
     let table = LEAVES.get_or_init(|| {
-        crate::taxonomy::data_lines(MOTION_STATES_TSV)
+        crate::vocab::taxonomy::data_lines(MOTION_STATES_TSV)
             .filter_map(|l| l.split_once('\t'))
             .map(|(m, s)| (m.trim(), s.trim()))
             .collect()
@@ -338,7 +338,7 @@ fn readings() -> &'static HashMap<(String, String), String> {
     static READINGS: OnceLock<HashMap<(String, String), String>> = OnceLock::new();
     READINGS.get_or_init(|| {
         let mut map = HashMap::default();
-        for line in crate::taxonomy::data_lines(READINGS_TSV) {
+        for line in crate::vocab::taxonomy::data_lines(READINGS_TSV) {
             let mut parts = line.split('\t').map(str::trim);
             let (Some(name), Some(states), Some(reading)) =
                 (parts.next(), parts.next(), parts.next())
@@ -504,13 +504,13 @@ mod tests {
 
     #[test]
     fn every_form_row_has_its_six_columns_and_every_care_flag_is_known() {
-        let rows = crate::taxonomy::data_lines(FORMS_TSV).count();
+        let rows = crate::vocab::taxonomy::data_lines(FORMS_TSV).count();
         assert_eq!(
             forms().forms.len(),
             rows,
             "food_forms.tsv: a row lacks a column"
         );
-        for line in crate::taxonomy::data_lines(CARE_TSV) {
+        for line in crate::vocab::taxonomy::data_lines(CARE_TSV) {
             for flag in line
                 .split('\t')
                 .nth(3)
@@ -576,7 +576,7 @@ mod tests {
     #[test]
     fn every_reading_row_is_complete_and_names_a_taxonomy_food() {
         let taxonomy = Taxonomy::builtin();
-        for line in crate::taxonomy::data_lines(READINGS_TSV) {
+        for line in crate::vocab::taxonomy::data_lines(READINGS_TSV) {
             let parts: Vec<&str> = line.split('\t').map(str::trim).collect();
             assert_eq!(
                 parts.len(),
@@ -594,11 +594,11 @@ mod tests {
 
     #[test]
     fn a_motion_that_reshapes_a_food_names_a_state_of_the_taxonomy() {
-        use crate::planner::states::{category, Category};
+        use crate::vocab::states::{category, Category};
         assert_eq!(leaves_in("spread"), Some("spread"));
         assert_eq!(leaves_in("grind*"), Some("ground"));
         assert_eq!(leaves_in("pour"), None);
-        for line in crate::taxonomy::data_lines(MOTION_STATES_TSV) {
+        for line in crate::vocab::taxonomy::data_lines(MOTION_STATES_TSV) {
             let (_, state) = line
                 .split_once('\t')
                 .expect("motion_states.tsv: two columns");

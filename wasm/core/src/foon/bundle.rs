@@ -2,8 +2,8 @@
 //! text file, each introduced by a line `#@file <name>` (a FOON comment, so a bundle is also valid FOON).
 
 use crate::error::Result;
-use crate::kb::KnowledgeBase;
-use crate::parse::{parse_bytes, Subgraph};
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::read::{parse_bytes, Subgraph};
 
 pub const FILE_MARK: &str = "#@file ";
 
