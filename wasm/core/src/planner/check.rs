@@ -4,7 +4,7 @@
 //! uses, the goal made.
 
 use crate::contract::plan::{Plan, PlanNode, PlanUnit};
-use crate::vocab::taxonomy::START_STATES;
+use crate::vocab::states::START_STATES;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 

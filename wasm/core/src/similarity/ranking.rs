@@ -1,5 +1,5 @@
 //! Substitution of unseen ingredients by their nearest knowledge-base equivalent: the food-domain word
-//! vectors of `embedding`, plus project knowledge that raw cosine lacks:
+//! vectors of `table`, plus project knowledge that raw cosine lacks:
 //!
 //! - exact first: a query equal to a candidate (as written, through an alias, or word stem for word stem)
 //!   maps to it with similarity 1;

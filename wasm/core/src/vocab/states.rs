@@ -10,6 +10,27 @@ use std::sync::OnceLock;
 
 const STATES_TSV: &str = include_str!("../../data/states.tsv");
 
+/// States things have in the kitchen before cooking starts: a node in only these, in nothing and holding
+/// nothing, is available at the start even when some unit makes it (an empty bowl, a whole onion). The
+/// evaluator's `START_STATES` (`src/eval/structure.ts`) is this list.
+pub const START_STATES: &[&str] = &[
+    "empty",
+    "clean",
+    "whole",
+    "raw",
+    "off",
+    "off (ready)",
+    "unopened",
+    "closed",
+    "dry",
+];
+
+/// Whether a state word says a thing is as the kitchen has it: a start state, or a food as bought
+/// (`uncooked`, `fresh`). The knowledge base reads a node in only such states as a kitchen item.
+pub fn is_start_state(word: &str) -> bool {
+    START_STATES.contains(&word) || matches!(word, "uncooked" | "fresh")
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Category {
     Whole,
