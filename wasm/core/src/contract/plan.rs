@@ -1,5 +1,6 @@
 //! The planner's request and response, exactly the JSON contract of `docs/plan-format.md` (serde).
 
+use crate::foon::model::{ObjectNode, State};
 use crate::trace::Trace;
 use serde::{Deserialize, Serialize};
 use smol_str::SmolStr;
@@ -152,6 +153,17 @@ pub struct PlanNode {
     /// Its `contains {…}` list, if any.
     pub ingredients: Vec<SmolStr>,
     pub container: Option<SmolStr>,
+}
+
+impl From<&ObjectNode> for PlanNode {
+    fn from(n: &ObjectNode) -> PlanNode {
+        PlanNode {
+            label: n.label.clone(),
+            states: n.states.iter().map(State::text).collect(),
+            ingredients: n.ingredients(),
+            container: n.container().map(SmolStr::from),
+        }
+    }
 }
 
 /// How modification touched a unit.

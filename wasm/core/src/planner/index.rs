@@ -1,12 +1,9 @@
 //! Tables the planner derives once from a knowledge base: nodes per label, state frequencies per dish
 //! class, the motion most used to reach each state, the utensil most used with each motion.
 
-use super::output::plan_node;
 use super::transitions::Transitions;
-use crate::contract::plan::PlanNode;
 use crate::foon::kb::KnowledgeBase;
 use crate::foon::model::NodeId;
-use crate::memo::Memo;
 use crate::similarity::ranking::Taxonomy;
 use crate::vocab::states::{category, has_food_state, is_food_state, node_category, Category};
 use crate::vocab::taxonomy::{is_transfer_motion, is_utensil};
@@ -14,7 +11,6 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::{Arc, OnceLock};
 
 /// Built once per knowledge base (`PlannerIndex::new`) and passed to every `plan` call.
 #[derive(Clone, Debug, Default)]
@@ -61,15 +57,7 @@ pub struct PlannerIndex {
     /// For each node, the ids of the subgraphs (sorted) in which some unit makes it (not merely passes
     /// it on).
     made_in: Vec<Vec<u32>>,
-    /// Per (dish class, label, state), the label's nodes ranked for a case-4 branch (`modify::pick_nodes`).
-    pub(crate) picks: Memo<(Option<u32>, SmolStr, SmolStr), Picks, 4096>,
-    /// Each node as a plan shows it, made the first time a plan has it unchanged: plans share these
-    /// rather than each making its own (most of a plan's nodes are the knowledge base's).
-    plan_nodes: Vec<OnceLock<Arc<PlanNode>>>,
 }
-
-/// Knowledge-base nodes ranked for a case-4 branch, each flagged when it is in the wanted state.
-pub(crate) type Picks = Arc<[(NodeId, bool)]>;
 
 /// The goals goal selection may choose among (made by some unit, a dish rather than a container), with
 /// their ingredients numbered within the group: the pairs a query's names make with them are remembered
@@ -450,25 +438,12 @@ impl PlannerIndex {
                 .collect(),
             subgraph_ids,
             unit_sources,
-            picks: Memo::default(),
-            plan_nodes: std::iter::repeat_with(OnceLock::new)
-                .take(kb.nodes.len())
-                .collect(),
         }
     }
 
     /// Whether some unit of the knowledge base cooks in utensil `label` (a pot, a frying pan).
     pub(crate) fn is_heated(&self, label: &str) -> bool {
         self.heated.contains(label)
-    }
-
-    /// Node `n` as a plan shows it.
-    pub(crate) fn plan_node(&self, kb: &KnowledgeBase, n: NodeId) -> Arc<PlanNode> {
-        let made = || Arc::new(plan_node(&kb.nodes[n]));
-        match self.plan_nodes.get(n) {
-            Some(cell) => Arc::clone(cell.get_or_init(made)),
-            None => made(),
-        }
     }
 
     /// Whether node `n` is a starting item of one of the recipes unit `u` comes from (that recipe

@@ -104,7 +104,7 @@ pub fn plan(
     let (mut outcomes, removed) =
         modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
     let (values, order) = tree.drop_redundant_units();
-    let scheduled = schedule::schedule(kb, index, &mut tree, &values, order);
+    let scheduled = schedule::schedule(&mut tree, &values, order);
     if request.modify {
         schedule::confirm_planned(&tree, &scheduled.order, &mut outcomes);
         note_little_kept(

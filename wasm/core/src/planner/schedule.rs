@@ -11,13 +11,9 @@
 //! is dropped. Duplicated units and units whose products nobody uses are dropped.
 
 use super::check::available_at_start;
-use super::index::PlannerIndex;
-use super::output::plan_node;
-use super::tree::{Slot, TUnitId, Tree};
+use super::tree::{TUnitId, Tree};
 use crate::contract::plan::{IngredientOutcome, PlanNode, Status};
-use crate::foon::kb::KnowledgeBase;
 use rustc_hash::FxHashSet as HashSet;
-use std::borrow::Cow;
 use std::collections::BinaryHeap;
 use std::ops::Range;
 use std::sync::Arc;
@@ -37,17 +33,12 @@ pub(crate) struct Schedule {
     pub nodes: Vec<Option<Arc<PlanNode>>>,
 }
 
-/// Each live slot's plan node, made once per distinct node (plan nodes are costly), and the slots'
+/// Each live slot's plan node, made once per distinct node, and the slots'
 /// values. `value` tells equal nodes apart by id (`Tree::drop_redundant_units`), so the nodes need no hashing
 /// here: equal as plan nodes (states and contents as sets) is equal as tree nodes, whose states are
 /// sorted and unique. Values are numbered by first slot, from 1: 0 is every slot no live unit uses
 /// (never looked at).
-fn plan_nodes(
-    kb: &KnowledgeBase,
-    index: &PlannerIndex,
-    tree: &Tree,
-    value: &[usize],
-) -> (Vec<Option<Arc<PlanNode>>>, Values) {
+fn plan_nodes(tree: &Tree, value: &[usize]) -> (Vec<Option<Arc<PlanNode>>>, Values) {
     let mut nodes = vec![None; tree.slots.len()];
     let mut vals = Values {
         of_slot: vec![0; tree.slots.len()],
@@ -56,7 +47,7 @@ fn plan_nodes(
     let mut of_value: Vec<Option<(Arc<PlanNode>, Value)>> = vec![None; tree.slots.len()];
     for x in tree.live_slots() {
         let (p, v) = of_value[value[x]].get_or_insert_with(|| {
-            let p = plan_node_of(kb, index, &tree.slots[x]);
+            let p = Arc::new(PlanNode::from(&*tree.slots[x].node));
             vals.start.push(available_at_start(&p));
             (p, vals.start.len() - 1)
         });
@@ -64,17 +55,6 @@ fn plan_nodes(
         vals.of_slot[x] = *v;
     }
     (nodes, vals)
-}
-
-/// The slot's node as the plan shows it: a knowledge-base node the tree left as it is, shared with the
-/// other plans that have it (`PlannerIndex::plan_node`).
-fn plan_node_of(kb: &KnowledgeBase, index: &PlannerIndex, slot: &Slot) -> Arc<PlanNode> {
-    match (&slot.node, slot.kb) {
-        (Cow::Borrowed(node), Some(n)) if std::ptr::eq(*node, &kb.nodes[n]) => {
-            index.plan_node(kb, n)
-        }
-        _ => Arc::new(plan_node(&slot.node)),
-    }
 }
 
 /// Per unit: its input values (with repeats, sorted), output values (sorted) and the values it makes
@@ -135,16 +115,10 @@ fn push_sorted(buf: &mut Vec<Value>, values: impl Iterator<Item = Value>) -> Ran
 
 /// Orders the live units the goal needs so that the evaluator's invariants hold, editing the tree where
 /// the order alone cannot (see the module comment). Returns the order; dropped units are marked dead.
-/// `value` and `order`: the slots' values and the tree's order from `Tree::drop_redundant_units` (nothing has
-/// changed since).
-pub(crate) fn schedule(
-    kb: &KnowledgeBase,
-    index: &PlannerIndex,
-    tree: &mut Tree,
-    value: &[usize],
-    order: Vec<TUnitId>,
-) -> Schedule {
-    let (nodes, mut vals) = plan_nodes(kb, index, tree, value);
+/// `value` and `order`: the slots' values and the tree's order from `Tree::drop_redundant_units`
+/// (nothing has changed since).
+pub(crate) fn schedule(tree: &mut Tree, value: &[usize], order: Vec<TUnitId>) -> Schedule {
+    let (nodes, mut vals) = plan_nodes(tree, value);
     let goal = vals.of_slot[tree.goal];
     // the finished dish is never in the kitchen at the start, whatever its states say
     vals.start[goal] = false;

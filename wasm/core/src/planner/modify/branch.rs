@@ -136,7 +136,7 @@ pub(super) fn add_branch<'kb>(
     let s = prepared.unwrap_or(asked);
     let mut picked = None;
     let mut misfit = None;
-    let candidates = pick_nodes(ctx, eq, s);
+    let candidates = rank_nodes(ctx, eq, s);
     let count = candidates.len();
     // the best few in the state, and always the ingredient as it comes from the kitchen (last)
     let tried = candidates

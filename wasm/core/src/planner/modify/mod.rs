@@ -3,7 +3,7 @@
 //! `branch` (case 2 copies, case 4 from FOON), `attach`, `finish` and `prune`.
 
 use super::alg2_retrieve::{retrieve, retrieve_within, Retrieved};
-use super::index::{Picks, PlannerIndex};
+use super::index::PlannerIndex;
 use super::transitions::Verdict;
 use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
 use crate::contract::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};

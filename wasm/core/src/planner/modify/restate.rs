@@ -357,15 +357,6 @@ pub(super) fn utensil_slot<'kb>(kb: &'kb KnowledgeBase, tree: &mut Tree<'kb>, n:
 /// shredded), else same category, preferring one not in a vessel food is cooked in, then one without
 /// a place (ties: the state most frequent in recipes of the dish class, then overall).
 /// The flag says whether the node is in the wanted state (else it is the ingredient as bought).
-/// Remembered by the index: the ranking follows from the knowledge base alone, the same in every plan.
-pub(super) fn pick_nodes(ctx: &Context, eq: &str, s: &str) -> Picks {
-    let key = (ctx.class, SmolStr::new(eq), SmolStr::new(s));
-    ctx.index
-        .picks
-        .get_or_insert_with(key, || rank_nodes(ctx, eq, s).into())
-}
-
-/// `pick_nodes` worked out.
 pub(super) fn rank_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)> {
     let c = category(s);
     type Key = (

@@ -38,25 +38,13 @@ pub(crate) struct Parts<'a> {
     pub format_version: u32,
 }
 
-pub(crate) fn plan_node(n: &ObjectNode) -> PlanNode {
-    PlanNode {
-        label: n.label.clone(),
-        states: n.states.iter().map(State::text).collect(),
-        // one `contains` list (nearly every node) is sorted and unique already: copied as it is
-        ingredients: n
-            .contents_list()
-            .map_or_else(|| n.ingredients(), <[SmolStr]>::to_vec),
-        container: n.container().map(SmolStr::from),
-    }
-}
-
 pub(crate) fn build(p: Parts) -> Plan {
     let tree = p.tree;
     let order = p.order;
     // the schedule made a node for every slot a live unit uses
     let node = |x: SlotId| match p.nodes.get(x) {
         Some(Some(n)) => Arc::clone(n),
-        _ => Arc::new(plan_node(&tree.slots[x].node)),
+        _ => Arc::new(PlanNode::from(&*tree.slots[x].node)),
     };
     let units: Vec<PlanUnit> = order
         .iter()
