@@ -179,8 +179,8 @@ fn substitution_quality_on_the_dev_set() {
     // Generalisation: the same with the dev names taken out of the taxonomy (and of the alias list),
     // so that they are handled as unlisted names are (inferred category, vectors, lexical rules).
     let names: Vec<&str> = dev.iter().map(|(q, _)| q.as_str()).collect();
-    let taxonomy = foon_core::similarity::ranking::Taxonomy::builtin().without(&names);
-    let all_aliases = foon_core::similarity::ranking::aliases();
+    let taxonomy = foon_core::vocab::food_taxonomy::Taxonomy::builtin().without(&names);
+    let all_aliases = foon_core::vocab::food_taxonomy::aliases();
     let dev_keys: Vec<String> = names
         .iter()
         .map(|n| foon_core::foon::label::normalize_label(n))
@@ -248,7 +248,7 @@ fn weight_grid() {
     let labels: Vec<&str> = kb.ingredient_labels().into_iter().collect();
     let dev = dev_set();
     let names: Vec<&str> = dev.iter().map(|(q, _)| q.as_str()).collect();
-    let taxonomy = foon_core::similarity::ranking::Taxonomy::builtin().without(&names);
+    let taxonomy = foon_core::vocab::food_taxonomy::Taxonomy::builtin().without(&names);
     let mut sim = EmbeddingSimilarity::from_bytes(&bytes).unwrap();
     for head in [1.0f32, 1.5, 2.0] {
         for cat in [0.2f32, 0.3, 0.45] {
@@ -265,7 +265,7 @@ fn weight_grid() {
                     let listed = evaluate(&sim, &labels, &dev);
                     let unlisted_sim = sim.with_taxonomy_and_aliases(
                         taxonomy.clone(),
-                        (**foon_core::similarity::ranking::aliases()).clone(),
+                        (**foon_core::vocab::food_taxonomy::aliases()).clone(),
                     );
                     let unlisted = evaluate(&unlisted_sim, &labels, &dev);
                     eprintln!(
@@ -276,10 +276,10 @@ fn weight_grid() {
                         100.0 * unlisted.top5
                     );
                     sim = unlisted_sim.with_taxonomy_and_aliases(
-                        foon_core::similarity::ranking::Taxonomy::builtin()
+                        foon_core::vocab::food_taxonomy::Taxonomy::builtin()
                             .as_ref()
                             .clone(),
-                        (**foon_core::similarity::ranking::aliases()).clone(),
+                        (**foon_core::vocab::food_taxonomy::aliases()).clone(),
                     );
                 }
             }

@@ -4,7 +4,7 @@
 use super::transitions::Transitions;
 use crate::foon::kb::KnowledgeBase;
 use crate::foon::model::NodeId;
-use crate::similarity::ranking::Taxonomy;
+use crate::vocab::food_taxonomy::Taxonomy;
 use crate::vocab::states::{category, has_food_state, is_food_state, node_category, Category};
 use crate::vocab::taxonomy::{is_transfer_motion, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};

@@ -7,7 +7,7 @@
 
 use crate::contract::plan::Query;
 use crate::foon::label::{normalize_label, normalize_word};
-use crate::similarity::ranking::Taxonomy;
+use crate::vocab::food_taxonomy::Taxonomy;
 use rustc_hash::FxHashMap as HashMap;
 use std::sync::OnceLock;
 
