@@ -6,7 +6,9 @@ use super::alg2_retrieve::{retrieve, retrieve_within, Retrieved};
 use super::index::PlannerIndex;
 use super::transitions::Verdict;
 use super::tree::{dedup_slots, map_contents, rename_item, retain_contents, SlotId, TUnitId, Tree};
-use crate::contract::plan::{Alternative, IngredientOutcome, Match, Origin, Query, Status};
+use crate::contract::plan::{
+    Alternative, IngredientOutcome, Match, Origin, Query, QueryIngredient, Status,
+};
 use crate::foon::kb::KnowledgeBase;
 use crate::foon::model::{NodeId, ObjectNode, State, UnitId};
 use crate::similarity::Similarity;
@@ -89,6 +91,19 @@ struct Work {
     label: String,
 }
 
+/// The driver's record while it goes through the query's ingredients.
+#[derive(Default)]
+struct Driver {
+    /// One per query ingredient, in query order.
+    works: Vec<Work>,
+    /// Tree labels an ingredient has taken (renamed or kept): a later one copies rather than renames.
+    claimed: HashSet<String>,
+    /// The state each object was first settled in: a name asked twice keeps the first (its one line).
+    settled: HashMap<String, String>,
+    /// Ingredients to bring from elsewhere in FOON: (work index, equivalent, state).
+    pending: Vec<(usize, String, String)>,
+}
+
 pub(crate) fn modify<'kb>(
     ctx: &Context<'kb>,
     tree: &mut Tree<'kb>,
@@ -106,13 +121,57 @@ pub(crate) fn modify<'kb>(
         .iter()
         .map(|i| i.object.as_str())
         .collect();
-    let mut claimed: HashSet<String> = HashSet::default();
-    // the state each object was first settled in: a name asked twice keeps the first (its one line)
-    let mut settled: HashMap<String, String> = HashMap::default();
-    let mut works: Vec<Work> = Vec::with_capacity(query.ingredients.len());
-    // ingredients to bring from elsewhere in FOON: (work index, equivalent, state)
-    let mut pending: Vec<(usize, String, String)> = Vec::new();
+    let mut d = Driver::default();
     for ing in &query.ingredients {
+        let w = d.take(ctx, tree, ing, enabled, &requested, &reference_labels);
+        d.works.push(w);
+    }
+    let mut removed = Vec::new();
+    let any_planned = d.works.iter().any(|w| w.planned) || !d.pending.is_empty();
+    if enabled && !any_planned {
+        notes.push(
+            "no ingredient of the query could be planned: the reference task tree is kept unpruned"
+                .to_string(),
+        );
+    } else if enabled {
+        let keep: BTreeSet<String> = d
+            .works
+            .iter()
+            .filter(|w| w.planned)
+            .map(|w| w.label.clone())
+            .collect();
+        ctx.trace.record(|t| t.before_pruning(tree));
+        removed = prune(tree, &keep, &requested);
+        tree.drop_unneeded();
+        ctx.trace.record(|t| t.pruned_from(tree, &removed));
+        d.bring_pending(ctx, tree, query);
+        d.finish_planned(ctx, tree);
+        cook_dish(ctx, tree, notes);
+    } else {
+        notes.push("modification off: the reference task tree as retrieved".to_string());
+    }
+    let outcomes = query
+        .ingredients
+        .iter()
+        .zip(d.works)
+        .map(|(ing, w)| outcome(ing, w))
+        .collect();
+    (outcomes, removed)
+}
+
+impl Driver {
+    /// Plans one query ingredient in the reference tree: its equivalent, then (with modification on) the
+    /// tree renamed or a branch copied for it and its state settled, or it waits in `pending` for a
+    /// branch from elsewhere in FOON.
+    fn take<'kb>(
+        &mut self,
+        ctx: &Context<'kb>,
+        tree: &mut Tree<'kb>,
+        ing: &QueryIngredient,
+        enabled: bool,
+        requested: &HashSet<&str>,
+        reference_labels: &[SmolStr],
+    ) -> Work {
         let (o, s) = (ing.object.as_str(), ing.state.as_str());
         let mut w = Work {
             case: None,
@@ -129,9 +188,8 @@ pub(crate) fn modify<'kb>(
             w.reasons.push(format!("'{o}' {s} read as '{r}'"));
         }
         let name = read.unwrap_or(o);
-        let Some((eq, sim)) = equivalent(ctx, o, name, &reference_labels, &mut w) else {
-            works.push(w);
-            continue;
+        let Some((eq, sim)) = equivalent(ctx, o, name, reference_labels, &mut w) else {
+            return w;
         };
         let s = planned_state(ctx, o, &eq, s);
         w.low_confidence = eq != o && ctx.sim.low_confidence(name, &eq, sim);
@@ -139,21 +197,20 @@ pub(crate) fn modify<'kb>(
         if !enabled {
             let in_state = best_state_slot(tree, &slots, s, ctx.index.sold_as(&eq));
             judge_unmodified(tree, o, &eq, sim, &slots, in_state, &mut w);
-            works.push(w);
-            continue;
+            return w;
         }
         if slots.is_empty() {
             // case 4 from elsewhere in FOON (or an exact FOON label the reference tree lacks): attached
             // after pruning, so that it joins a unit that stays
-            pending.push((works.len(), eq.clone(), s.to_string()));
-            claimed.insert(eq.clone());
+            self.pending
+                .push((self.works.len(), eq.clone(), s.to_string()));
+            self.claimed.insert(eq.clone());
             w.matched = Some(Match {
                 label: eq.as_str().into(),
                 state: SmolStr::default(),
                 similarity: sim,
             });
-            works.push(w);
-            continue;
+            return w;
         }
         // the equivalent is in the tree: substitute (cases 2, 4) or keep (cases 1, 3)
         w.matched = Some(Match {
@@ -162,7 +219,7 @@ pub(crate) fn modify<'kb>(
             similarity: sim,
         });
         if eq != o {
-            if requested.contains(eq.as_str()) || claimed.contains(&eq) {
+            if requested.contains(eq.as_str()) || self.claimed.contains(&eq) {
                 match copy_branch(tree, &eq, o) {
                     Some(_) => w.reasons.push(format!(
                         "'{eq}' is also needed: its branch was copied for '{o}'"
@@ -172,62 +229,48 @@ pub(crate) fn modify<'kb>(
                         w.reasons.push(format!(
                             "'{eq}' is also needed and has no branch of its own to copy"
                         ));
-                        pending.push((works.len(), eq.clone(), s.to_string()));
-                        works.push(w);
-                        continue;
+                        self.pending
+                            .push((self.works.len(), eq.clone(), s.to_string()));
+                        return w;
                     }
                 }
             } else {
                 tree.rename_everywhere(&eq, o);
                 w.reasons.push(format!("'{eq}' substituted with '{o}'"));
             }
-            claimed.insert(eq.clone());
+            self.claimed.insert(eq.clone());
         }
-        claimed.insert(o.to_string());
+        self.claimed.insert(o.to_string());
         // renaming or copying gave `o` its slots; else they are the ones found for `eq`
         let slots = if eq == o {
             slots
         } else {
             tree.slots_with_label(o)
         };
-        settle_state(ctx, tree, &eq, o, s, &slots, &mut settled, &mut w);
+        settle_state(ctx, tree, &eq, o, s, &slots, &mut self.settled, &mut w);
         w.planned = true;
-        works.push(w);
+        w
     }
 
-    let mut removed = Vec::new();
-    let any_planned = works.iter().any(|w| w.planned) || !pending.is_empty();
-    if enabled && !any_planned {
-        notes.push(
-            "no ingredient of the query could be planned: the reference task tree is kept unpruned"
-                .to_string(),
-        );
-    } else if enabled {
-        let keep: BTreeSet<String> = works
-            .iter()
-            .filter(|w| w.planned)
-            .map(|w| w.label.clone())
-            .collect();
-        ctx.trace.record(|t| t.before_pruning(tree));
-        removed = prune(tree, &keep, &requested);
-        tree.drop_unneeded();
-        ctx.trace.record(|t| t.pruned_from(tree, &removed));
+    /// After pruning: the pending ingredients get their branches from elsewhere in FOON, and so does an
+    /// asked-for ingredient whose units served only pruned ones (butter spread on the bread that was not
+    /// asked for), like a case-4 ingredient.
+    fn bring_pending<'kb>(&mut self, ctx: &Context<'kb>, tree: &mut Tree<'kb>, query: &Query) {
         let present = tree.ingredient_labels();
-        // an asked-for ingredient whose units served only pruned ones (butter spread on the bread that
-        // was not asked for) comes back as a branch of its own, like a case-4 ingredient
-        for (i, w) in works.iter().enumerate() {
+        for (i, w) in self.works.iter().enumerate() {
             if w.planned && present.binary_search(&w.label.as_str()).is_err() {
                 let eq = w
                     .matched
                     .as_ref()
                     .map_or(w.label.clone(), |m| m.label.to_string());
                 let s = planned_state(ctx, &w.label, &eq, &query.ingredients[i].state);
-                pending.push((i, eq, s.to_string()));
+                self.pending.push((i, eq, s.to_string()));
             }
         }
+        let mut pending = std::mem::take(&mut self.pending);
         pending.sort_by_key(|p| p.0);
         for (i, eq, s) in pending {
-            let w = &mut works[i];
+            let w = &mut self.works[i];
             let o = query.ingredients[i].object.as_str();
             let lost = w.planned;
             let slots = tree.slots_with_label(o);
@@ -236,40 +279,23 @@ pub(crate) fn modify<'kb>(
                 if let Some(m) = w.matched.as_mut() {
                     m.state = tree_state(tree, &slots, &s, ctx.index.sold_as(&eq));
                 }
-                settle_state(ctx, tree, &eq, o, &s, &slots, &mut settled, w);
+                settle_state(ctx, tree, &eq, o, &s, &slots, &mut self.settled, w);
                 continue;
             }
             // a case-2 substitute was renamed in the tree already: its branch comes from `eq` again
-            match add_branch(ctx, tree, &eq, o, &s) {
-                Ok((state, reason)) => {
-                    settled.entry(o.to_string()).or_insert_with(|| s.clone());
-                    if lost {
-                        w.reasons.push(format!(
-                            "its units went with the pruned ingredients: {reason}"
-                        ));
-                    } else {
-                        w.case = Some(Case::EquivalentInOtherState);
-                        if let Some(m) = w.matched.as_mut() {
-                            m.state = state;
-                        }
-                        w.planned = true;
-                        w.reasons.push(reason);
-                    }
-                }
-                Err(reason) => {
-                    if lost {
-                        w.planned = false;
-                        w.reasons.push(format!(
-                            "its units went with the pruned ingredients and it could not be added again: {reason}"
-                        ));
-                    } else {
-                        w.matched = None;
-                        w.reasons.push(reason);
-                    }
-                }
+            let added = add_branch(ctx, tree, &eq, o, &s);
+            if added.is_ok() {
+                self.settled
+                    .entry(o.to_string())
+                    .or_insert_with(|| s.clone());
             }
+            branch_added(w, lost, added);
         }
-        for w in works.iter_mut().filter(|w| w.planned) {
+    }
+
+    /// What a cook does to each planned ingredient before it is used (`finish`).
+    fn finish_planned<'kb>(&mut self, ctx: &Context<'kb>, tree: &mut Tree<'kb>) {
+        for w in self.works.iter_mut().filter(|w| w.planned) {
             let eq = w
                 .matched
                 .as_ref()
@@ -286,33 +312,59 @@ pub(crate) fn modify<'kb>(
             }
             fit_states_to_form(ctx, tree, &w.label);
         }
-        cook_dish(ctx, tree, notes);
-    } else {
-        notes.push("modification off: the reference task tree as retrieved".to_string());
     }
-    let outcomes = query
-        .ingredients
-        .iter()
-        .zip(works)
-        .map(|(ing, w)| IngredientOutcome {
-            object: ing.object.as_str().into(),
-            state: ing.state.as_str().into(),
-            case: w.case.map(Case::number),
-            matched: w.matched,
-            alternatives: w.alternatives,
-            low_confidence: w.low_confidence,
-            overridden: w.overridden,
-            status: if w.planned {
-                Status::Planned
+}
+
+/// Records a branch brought from FOON for an ingredient (`lost`: one whose units went with pruning).
+fn branch_added(w: &mut Work, lost: bool, added: Result<(SmolStr, String), String>) {
+    match added {
+        Ok((state, reason)) => {
+            if lost {
+                w.reasons.push(format!(
+                    "its units went with the pruned ingredients: {reason}"
+                ));
             } else {
-                Status::Unplannable
-            },
-            reason: if w.reasons.is_empty() {
-                None
+                w.case = Some(Case::EquivalentInOtherState);
+                if let Some(m) = w.matched.as_mut() {
+                    m.state = state;
+                }
+                w.planned = true;
+                w.reasons.push(reason);
+            }
+        }
+        Err(reason) => {
+            if lost {
+                w.planned = false;
+                w.reasons.push(format!(
+                    "its units went with the pruned ingredients and it could not be added again: {reason}"
+                ));
             } else {
-                Some(w.reasons.join("; "))
-            },
-        })
-        .collect();
-    (outcomes, removed)
+                w.matched = None;
+                w.reasons.push(reason);
+            }
+        }
+    }
+}
+
+/// The plan's outcome of one query ingredient.
+fn outcome(ing: &QueryIngredient, w: Work) -> IngredientOutcome {
+    IngredientOutcome {
+        object: ing.object.as_str().into(),
+        state: ing.state.as_str().into(),
+        case: w.case.map(Case::number),
+        matched: w.matched,
+        alternatives: w.alternatives,
+        low_confidence: w.low_confidence,
+        overridden: w.overridden,
+        status: if w.planned {
+            Status::Planned
+        } else {
+            Status::Unplannable
+        },
+        reason: if w.reasons.is_empty() {
+            None
+        } else {
+            Some(w.reasons.join("; "))
+        },
+    }
 }
