@@ -8,7 +8,6 @@ use crate::foon::label::{normalize_label, normalize_word};
 use crate::foon::model::{ObjectNode, State, StateArg};
 use crate::limits;
 use crate::vocab::taxonomy::{dish_class_name, dish_classes, is_separating_motion, is_utensil};
-use rustc_hash::FxHashMap;
 use smol_str::SmolStr;
 
 /// A goal mark on an object line: the finished dish of the subgraph, with its dish class if given.
@@ -277,31 +276,14 @@ fn check_text(file: &str, line: usize, col: usize, what: &str, text: &str) -> Re
     Ok(())
 }
 
-/// Normal forms of a file's labels by their text as written: a file names the same few objects and
-/// containers line after line, and a normal form costs more than a lookup.
-#[derive(Default)]
-struct LabelForms<'a>(FxHashMap<&'a str, SmolStr>);
-
-impl<'a> LabelForms<'a> {
-    fn of(&mut self, raw: &'a str) -> SmolStr {
-        if let Some(form) = self.0.get(raw) {
-            return form.clone();
-        }
-        let form = SmolStr::from(normalize_label(raw));
-        self.0.insert(raw, form.clone());
-        form
-    }
+/// A label in its normal form.
+fn label_of(raw: &str) -> SmolStr {
+    SmolStr::from(normalize_label(raw))
 }
 
 /// Parses a state's argument: `[container]` or `{a,b,c}`; `None` when it names nothing (`[]`, `{ , }`),
 /// which the caller reports as a warning.
-fn state_arg<'a>(
-    file: &str,
-    line: usize,
-    col: usize,
-    text: &'a str,
-    forms: &mut LabelForms<'a>,
-) -> Result<Option<StateArg>> {
+fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<Option<StateArg>> {
     let bad = |why: &str| {
         FoonError::at(
             ErrorCode::BadBrackets,
@@ -325,7 +307,7 @@ fn state_arg<'a>(
         return Err(bad("nested brackets"));
     }
     if open == '[' {
-        let container = forms.of(inner);
+        let container = label_of(inner);
         if container.is_empty() {
             return Ok(None);
         }
@@ -334,7 +316,7 @@ fn state_arg<'a>(
     }
     let mut list: Vec<SmolStr> = inner
         .split(',')
-        .map(|item| forms.of(item))
+        .map(label_of)
         .filter(|s| !s.is_empty())
         .collect();
     for item in &list {
@@ -435,17 +417,19 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
         .in_file(name));
     }
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let mut units = Vec::new();
-    let mut warnings = Vec::new();
-    let mut unit = UnitBuilder::new();
+    let mut reader = Reader {
+        name,
+        units: Vec::new(),
+        warnings: Vec::new(),
+        unit: UnitBuilder::new(),
+    };
     let mut last_line = 0;
     let mut title = None;
     let mut f = Vec::new();
-    let mut forms = LabelForms::default();
     for (index, raw) in lines(text).enumerate() {
         let line_no = index + 1;
         last_line = line_no;
-        if units.len() > limits::MAX_UNITS {
+        if reader.units.len() > limits::MAX_UNITS {
             return Err(too_many_units(name, line_no - 1));
         }
         if raw.len() > limits::MAX_LINE_BYTES {
@@ -473,224 +457,24 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
             continue;
         }
         if trimmed.starts_with("//") {
-            if !unit.is_empty() {
-                units.extend(std::mem::replace(&mut unit, UnitBuilder::new()).finish(
-                    name,
-                    line_no,
-                    &mut warnings,
-                )?);
+            if !reader.unit.is_empty() {
+                reader.end_unit(line_no)?;
             }
             continue;
         }
         fields(line, &mut f);
-        let f = &f;
-        let (head_col, head) = f[0];
-        let Some((kind, bang)) = line_kind(head) else {
-            return Err(FoonError::at(
-                ErrorCode::UnknownLine,
-                name,
-                line_no,
-                head_col,
-                format!("unknown line type '{}': expected O (object), S (state), M (motion), '#' or '//'", head.chars().take(20).collect::<String>()),
-            ));
-        };
-        let field = |i: usize, what: &str| -> Result<(usize, &str)> {
-            f.get(i)
-                .copied()
-                .filter(|(_, s)| !s.is_empty())
-                .ok_or_else(|| {
-                    let col = f.last().map(|(c, s)| c + s.chars().count()).unwrap_or(1);
-                    FoonError::at(
-                        ErrorCode::MissingField,
-                        name,
-                        line_no,
-                        col,
-                        format!("missing {what}"),
-                    )
-                })
-        };
-        match kind {
-            'O' => {
-                unit.close_object();
-                if unit.motion.is_some() {
-                    unit.block = Block::Outputs;
-                }
-                let (lcol, raw_label) = field(1, "object label after 'O'")?;
-                let label = forms.of(raw_label);
-                check_text(name, line_no, lcol, "object label", &label)?;
-                // FOON's motion flag; some files write it as "00"
-                let moves = match f.get(2).map(|(c, t)| (c, t.parse::<u8>())) {
-                    None => false,
-                    Some((_, Ok(0))) => false,
-                    Some((_, Ok(1))) => true,
-                    Some((c, _)) => {
-                        let other = f[2].1;
-                        return Err(FoonError::at(
-                            ErrorCode::BadNumber,
-                            name,
-                            line_no,
-                            *c,
-                            format!("object flag must be 0 or 1, found '{other}'"),
-                        ));
-                    }
-                };
-                let goal = match f.get(3) {
-                    Some((c, class)) => match class.parse::<u32>() {
-                        Ok(n) if dish_class_name(n).is_some() => Some(GoalMark {
-                            dish_class: Some(n),
-                        }),
-                        Ok(n) => {
-                            let last = dish_classes().last().map_or(0, |d| d.index);
-                            return Err(FoonError::at(
-                                ErrorCode::BadNumber,
-                                name,
-                                line_no,
-                                *c,
-                                format!("dish class {n} is not a known dish class (0 to {last})"),
-                            ));
-                        }
-                        Err(_) => {
-                            return Err(FoonError::at(
-                                ErrorCode::BadNumber,
-                                name,
-                                line_no,
-                                *c,
-                                format!(
-                                    "dish class of a goal node must be a number, found '{class}'"
-                                ),
-                            ))
-                        }
-                    },
-                    None if bang => Some(GoalMark { dish_class: None }),
-                    None => None,
-                };
-                if f.len() > 4 {
-                    return Err(FoonError::at(
-                        ErrorCode::UnknownLine,
-                        name,
-                        line_no,
-                        f[4].0,
-                        "object line has more than four fields",
-                    ));
-                }
-                unit.open = Some((label, moves, goal, line_no, Vec::new()));
-            }
-            'S' => {
-                let Some(open) = unit.open.as_mut() else {
-                    return Err(FoonError::at(
-                        ErrorCode::StateWithoutObject,
-                        name,
-                        line_no,
-                        head_col,
-                        "state line with no object line (O) before it in this unit",
-                    ));
-                };
-                let (scol, raw_state) = field(1, "state name after 'S'")?;
-                // Some files write the argument in the same field: `in [bowl]`.
-                let (word, inline_arg) = match raw_state.find(['[', '{']) {
-                    Some(at) => (&raw_state[..at], Some(raw_state[at..].trim())),
-                    None => (raw_state, None),
-                };
-                let state_name = normalize_word(word);
-                check_text(name, line_no, scol, "state name", &state_name)?;
-                let (acol, arg_text) = match (inline_arg, f.get(2)) {
-                    (Some(a), None) => (scol, Some(a)),
-                    (None, Some((acol, a))) => (*acol, Some(*a)),
-                    (None, None) => (scol, None),
-                    (Some(_), Some((acol, _))) => {
-                        return Err(FoonError::at(
-                            ErrorCode::BadBrackets,
-                            name,
-                            line_no,
-                            *acol,
-                            "state has two arguments",
-                        ));
-                    }
-                };
-                let arg = match arg_text {
-                    None => None,
-                    Some(text) => match state_arg(name, line_no, acol, text, &mut forms)? {
-                        Some(arg) => Some(arg),
-                        // `on []` occurs in FOON-111: keep the state, drop the empty argument, report
-                        // it (the same for `[ ]`, `{ , }` and an argument written in the state field)
-                        None => {
-                            warnings.push(FoonError::at(
-                                ErrorCode::EmptyLabel,
-                                name,
-                                line_no,
-                                acol,
-                                format!(
-                                    "state '{state_name}' has an empty argument; it was left out"
-                                ),
-                            ));
-                            None
-                        }
-                    },
-                };
-                if f.len() > 3 {
-                    return Err(FoonError::at(
-                        ErrorCode::UnknownLine,
-                        name,
-                        line_no,
-                        f[3].0,
-                        "state line has more than three fields",
-                    ));
-                }
-                open.4.push(State {
-                    name: state_name.into(),
-                    arg,
-                });
-            }
-            _ => {
-                unit.close_object();
-                let (mcol, raw_motion) = field(1, "motion label after 'M'")?;
-                let motion = normalize_word(raw_motion);
-                check_text(name, line_no, mcol, "motion label", &motion)?;
-                if let Some((first, _, first_line)) = &unit.motion {
-                    // A missing '//' (FOON-111 has a few): the next unit's inputs start where an output
-                    // label repeats. Without such a repeat the split is ambiguous, so it is an error.
-                    let Some(split) = repeated_label_at(&unit.outputs) else {
-                        return Err(FoonError::at(
-                            ErrorCode::BadMotion,
-                            name,
-                            line_no,
-                            head_col,
-                            format!("second motion line in one unit (the first, '{first}', is on line {first_line}); separate units with '//'"),
-                        ));
-                    };
-                    let next_inputs = unit.outputs.split_off(split);
-                    warnings.push(FoonError::at(
-                        ErrorCode::BadMotion,
-                        name,
-                        next_inputs[0].line,
-                        1,
-                        format!("missing '//' before this line (the unit of line {first_line} has a second motion on line {line_no}); a new unit was started here"),
-                    ));
-                    units.extend(std::mem::replace(&mut unit, UnitBuilder::new()).finish(
-                        name,
-                        line_no,
-                        &mut warnings,
-                    )?);
-                    unit.inputs = next_inputs;
-                }
-                if unit.inputs.is_empty() {
-                    return Err(FoonError::at(
-                        ErrorCode::MotionWithoutInputs,
-                        name,
-                        line_no,
-                        head_col,
-                        format!("motion '{motion}' has no input object before it"),
-                    ));
-                }
-                let times = f[2..]
-                    .iter()
-                    .map(|(_, t)| t.trim_matches(['<', '>']).to_string())
-                    .filter(|t| !t.is_empty())
-                    .collect();
-                unit.motion = Some((motion, times, line_no));
-            }
-        }
+        reader.line(&Line {
+            file: name,
+            no: line_no,
+            f: &f,
+        })?;
     }
+    let Reader {
+        unit,
+        mut units,
+        mut warnings,
+        ..
+    } = reader;
     if !unit.is_empty() {
         units.extend(unit.finish(name, last_line, &mut warnings)?);
     }
@@ -704,6 +488,227 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
         units,
         warnings,
     })
+}
+
+/// One O, S or M line: its file, number and fields (with their columns).
+struct Line<'l> {
+    file: &'l str,
+    no: usize,
+    f: &'l [(usize, &'l str)],
+}
+
+impl<'l> Line<'l> {
+    fn error(&self, code: ErrorCode, col: usize, message: impl Into<String>) -> FoonError {
+        FoonError::at(code, self.file, self.no, col, message)
+    }
+
+    /// Field `i`, not empty, else a `MissingField` error naming `what`.
+    fn field(&self, i: usize, what: &str) -> Result<(usize, &'l str)> {
+        self.f
+            .get(i)
+            .copied()
+            .filter(|(_, s)| !s.is_empty())
+            .ok_or_else(|| {
+                let col = self
+                    .f
+                    .last()
+                    .map(|(c, s)| c + s.chars().count())
+                    .unwrap_or(1);
+                self.error(ErrorCode::MissingField, col, format!("missing {what}"))
+            })
+    }
+
+    /// An error when the line has more than `most` fields.
+    fn at_most(&self, most: usize, what: &str) -> Result<()> {
+        match self.f.get(most) {
+            Some(&(col, _)) => Err(self.error(ErrorCode::UnknownLine, col, what.to_string())),
+            None => Ok(()),
+        }
+    }
+}
+
+/// The units of one file as its lines are read.
+struct Reader<'a> {
+    name: &'a str,
+    units: Vec<ParsedUnit>,
+    warnings: Vec<FoonError>,
+    unit: UnitBuilder,
+}
+
+impl Reader<'_> {
+    /// Closes the unit being read (at `line_no`) and starts the next.
+    fn end_unit(&mut self, line_no: usize) -> Result<()> {
+        let unit = std::mem::replace(&mut self.unit, UnitBuilder::new());
+        self.units
+            .extend(unit.finish(self.name, line_no, &mut self.warnings)?);
+        Ok(())
+    }
+
+    fn line(&mut self, line: &Line) -> Result<()> {
+        let (head_col, head) = line.f[0];
+        let Some((kind, bang)) = line_kind(head) else {
+            return Err(line.error(
+                ErrorCode::UnknownLine,
+                head_col,
+                format!("unknown line type '{}': expected O (object), S (state), M (motion), '#' or '//'", head.chars().take(20).collect::<String>()),
+            ));
+        };
+        match kind {
+            'O' => self.object(line, bang),
+            'S' => self.state(line, head_col),
+            _ => self.motion(line, head_col),
+        }
+    }
+
+    /// `O<TAB>label<TAB>flag[<TAB>dish class]`: opens an object (`!` marks a goal).
+    fn object(&mut self, line: &Line, bang: bool) -> Result<()> {
+        self.unit.close_object();
+        if self.unit.motion.is_some() {
+            self.unit.block = Block::Outputs;
+        }
+        let (lcol, raw_label) = line.field(1, "object label after 'O'")?;
+        let label = label_of(raw_label);
+        check_text(line.file, line.no, lcol, "object label", &label)?;
+        let moves = object_flag(line)?;
+        let goal = goal_mark(line, bang)?;
+        line.at_most(4, "object line has more than four fields")?;
+        self.unit.open = Some((label, moves, goal, line.no, Vec::new()));
+        Ok(())
+    }
+
+    /// `S<TAB>state[<TAB>argument]`: a state of the open object.
+    fn state(&mut self, line: &Line, head_col: usize) -> Result<()> {
+        let Some(open) = self.unit.open.as_mut() else {
+            return Err(line.error(
+                ErrorCode::StateWithoutObject,
+                head_col,
+                "state line with no object line (O) before it in this unit",
+            ));
+        };
+        let (scol, raw_state) = line.field(1, "state name after 'S'")?;
+        // Some files write the argument in the same field: `in [bowl]`.
+        let (word, inline_arg) = match raw_state.find(['[', '{']) {
+            Some(at) => (&raw_state[..at], Some(raw_state[at..].trim())),
+            None => (raw_state, None),
+        };
+        let state_name = normalize_word(word);
+        check_text(line.file, line.no, scol, "state name", &state_name)?;
+        let (acol, arg_text) = match (inline_arg, line.f.get(2)) {
+            (Some(a), None) => (scol, Some(a)),
+            (None, Some((acol, a))) => (*acol, Some(*a)),
+            (None, None) => (scol, None),
+            (Some(_), Some((acol, _))) => {
+                return Err(line.error(ErrorCode::BadBrackets, *acol, "state has two arguments"));
+            }
+        };
+        let arg = match arg_text {
+            None => None,
+            Some(text) => match state_arg(line.file, line.no, acol, text)? {
+                Some(arg) => Some(arg),
+                // `on []` occurs in FOON-111: keep the state, drop the empty argument, report
+                // it (the same for `[ ]`, `{ , }` and an argument written in the state field)
+                None => {
+                    self.warnings.push(line.error(
+                        ErrorCode::EmptyLabel,
+                        acol,
+                        format!("state '{state_name}' has an empty argument; it was left out"),
+                    ));
+                    None
+                }
+            },
+        };
+        line.at_most(3, "state line has more than three fields")?;
+        open.4.push(State {
+            name: state_name.into(),
+            arg,
+        });
+        Ok(())
+    }
+
+    /// `M<TAB>motion[<TAB>times]`: the unit's motion; its inputs are the objects before it.
+    fn motion(&mut self, line: &Line, head_col: usize) -> Result<()> {
+        self.unit.close_object();
+        let (mcol, raw_motion) = line.field(1, "motion label after 'M'")?;
+        let motion = normalize_word(raw_motion);
+        check_text(line.file, line.no, mcol, "motion label", &motion)?;
+        if let Some((first, _, first_line)) = &self.unit.motion {
+            // A missing '//' (FOON-111 has a few): the next unit's inputs start where an output
+            // label repeats. Without such a repeat the split is ambiguous, so it is an error.
+            let Some(split) = repeated_label_at(&self.unit.outputs) else {
+                return Err(line.error(
+                    ErrorCode::BadMotion,
+                    head_col,
+                    format!("second motion line in one unit (the first, '{first}', is on line {first_line}); separate units with '//'"),
+                ));
+            };
+            let first_line = *first_line;
+            let next_inputs = self.unit.outputs.split_off(split);
+            self.warnings.push(FoonError::at(
+                ErrorCode::BadMotion,
+                line.file,
+                next_inputs[0].line,
+                1,
+                format!("missing '//' before this line (the unit of line {first_line} has a second motion on line {}); a new unit was started here", line.no),
+            ));
+            self.end_unit(line.no)?;
+            self.unit.inputs = next_inputs;
+        }
+        if self.unit.inputs.is_empty() {
+            return Err(line.error(
+                ErrorCode::MotionWithoutInputs,
+                head_col,
+                format!("motion '{motion}' has no input object before it"),
+            ));
+        }
+        let times = line.f[2..]
+            .iter()
+            .map(|(_, t)| t.trim_matches(['<', '>']).to_string())
+            .filter(|t| !t.is_empty())
+            .collect();
+        self.unit.motion = Some((motion, times, line.no));
+        Ok(())
+    }
+}
+
+/// An object line's motion flag (FOON's; some files write it as "00").
+fn object_flag(line: &Line) -> Result<bool> {
+    match line.f.get(2).map(|(c, t)| (c, t.parse::<u8>())) {
+        None | Some((_, Ok(0))) => Ok(false),
+        Some((_, Ok(1))) => Ok(true),
+        Some((c, _)) => {
+            let other = line.f[2].1;
+            Err(line.error(
+                ErrorCode::BadNumber,
+                *c,
+                format!("object flag must be 0 or 1, found '{other}'"),
+            ))
+        }
+    }
+}
+
+/// An object line's goal mark: a known dish class in its fourth field, or `O!` without one.
+fn goal_mark(line: &Line, bang: bool) -> Result<Option<GoalMark>> {
+    let Some(&(c, class)) = line.f.get(3) else {
+        return Ok(bang.then_some(GoalMark { dish_class: None }));
+    };
+    match class.parse::<u32>() {
+        Ok(n) if dish_class_name(n).is_some() => Ok(Some(GoalMark {
+            dish_class: Some(n),
+        })),
+        Ok(n) => {
+            let last = dish_classes().last().map_or(0, |d| d.index);
+            Err(line.error(
+                ErrorCode::BadNumber,
+                c,
+                format!("dish class {n} is not a known dish class (0 to {last})"),
+            ))
+        }
+        Err(_) => Err(line.error(
+            ErrorCode::BadNumber,
+            c,
+            format!("dish class of a goal node must be a number, found '{class}'"),
+        )),
+    }
 }
 
 /// The title of a `# title: Greek salad` comment (the text after `#`), if it is one.
