@@ -3,7 +3,7 @@
 
 use super::transitions::Transitions;
 use crate::foon::kb::KnowledgeBase;
-use crate::foon::model::NodeId;
+use crate::foon::model::{FunctionalUnit, NodeId, StateArg};
 use crate::vocab::food_taxonomy::Taxonomy;
 use crate::vocab::states::{category, has_food_state, is_food_state, node_category, Category};
 use crate::vocab::taxonomy::{is_transfer_motion, is_utensil};
@@ -122,6 +122,229 @@ fn by_word(flat: HashMap<(&str, Option<u32>), u32>) -> HashMap<String, ClassCoun
         out.entry(word.to_string()).or_default().insert(class, n);
     }
     out
+}
+
+/// Subgraph names numbered in name order, and each unit's subgraphs by number (sorted).
+fn subgraph_ids(kb: &KnowledgeBase) -> (HashMap<String, u32>, Vec<Vec<u32>>) {
+    let names: BTreeSet<&String> = kb.provenance.iter().flat_map(|s| s.iter()).collect();
+    let subgraph_ids: HashMap<String, u32> = names
+        .into_iter()
+        .enumerate()
+        .map(|(i, n)| (n.clone(), i as u32))
+        .collect();
+    let unit_sources = kb
+        .provenance
+        .iter()
+        .map(|p| {
+            let mut ids: Vec<u32> = p.iter().map(|s| subgraph_ids[s]).collect();
+            ids.sort_unstable();
+            ids.dedup();
+            ids
+        })
+        .collect();
+    (subgraph_ids, unit_sources)
+}
+
+/// Per node, the subgraphs (sorted) in which some unit makes it rather than passing it on.
+fn made_in(kb: &KnowledgeBase, unit_sources: &[Vec<u32>]) -> Vec<Vec<u32>> {
+    let mut made_in: Vec<Vec<u32>> = vec![Vec::new(); kb.nodes.len()];
+    for (uid, u) in kb.units.iter().enumerate() {
+        for o in u.output_nodes() {
+            if !u.input_nodes().any(|i| i == o) {
+                made_in[o].extend_from_slice(&unit_sources[uid]);
+            }
+        }
+    }
+    for ids in &mut made_in {
+        ids.sort_unstable();
+        ids.dedup();
+    }
+    made_in
+}
+
+/// How often each label is in each state, and each state occurs, in units of recipes of each dish class
+/// (class `None` counts all).
+fn state_counts(
+    kb: &KnowledgeBase,
+) -> (
+    HashMap<String, HashMap<String, ClassCounts>>,
+    HashMap<String, ClassCounts>,
+) {
+    let mut subgraph_class: HashMap<&str, Option<u32>> = HashMap::default();
+    for g in &kb.goals {
+        subgraph_class.entry(&g.subgraph).or_insert(g.dish_class);
+    }
+    let mut label_state: HashMap<&str, HashMap<(&str, Option<u32>), u32>> = HashMap::default();
+    let mut state_freq: HashMap<(&str, Option<u32>), u32> = HashMap::default();
+    for (uid, u) in kb.units.iter().enumerate() {
+        let classes: BTreeSet<Option<u32>> = kb.provenance[uid]
+            .iter()
+            .map(|s| subgraph_class.get(s.as_str()).copied().flatten())
+            .collect();
+        for o in u.inputs.iter().chain(u.outputs.iter()) {
+            let node = &kb.nodes[o.node];
+            if is_utensil(&node.label) {
+                continue;
+            }
+            for s in node.physical_states() {
+                for c in classes.iter().copied().chain([None]) {
+                    *label_state
+                        .entry(&node.label)
+                        .or_default()
+                        .entry((s, c))
+                        .or_insert(0) += 1;
+                    *state_freq.entry((s, c)).or_insert(0) += 1;
+                }
+            }
+        }
+    }
+    let label_state = label_state
+        .into_iter()
+        .map(|(label, states)| (label.to_string(), by_word(states)))
+        .collect();
+    (label_state, by_word(state_freq))
+}
+
+/// The motions the knowledge base uses most: to bring a food into each state and each category, and
+/// with each utensil.
+struct MotionTables {
+    for_state: HashMap<String, String>,
+    for_category: HashMap<Category, String>,
+    utensil: HashMap<String, NodeId>,
+}
+
+impl MotionTables {
+    fn count(kb: &KnowledgeBase) -> MotionTables {
+        let mut motion_state: BTreeMap<String, BTreeMap<String, u32>> = BTreeMap::new();
+        let mut motion_cat: BTreeMap<Category, BTreeMap<String, u32>> = BTreeMap::new();
+        let mut motion_utensil: BTreeMap<String, BTreeMap<NodeId, u32>> = BTreeMap::new();
+        for u in &kb.units {
+            for s in gained_states(kb, u) {
+                let count =
+                    |m: &mut BTreeMap<String, u32>| *m.entry(u.motion.clone()).or_insert(0) += 1;
+                count(motion_state.entry(s.to_string()).or_default());
+                count(motion_cat.entry(category(s)).or_default());
+            }
+            for i in &u.inputs {
+                let n = &kb.nodes[i.node];
+                if is_utensil(&n.label) && n.states.is_empty() {
+                    *motion_utensil
+                        .entry(u.motion.clone())
+                        .or_default()
+                        .entry(i.node)
+                        .or_insert(0) += 1;
+                }
+            }
+        }
+        MotionTables {
+            for_state: motion_state
+                .iter()
+                .filter_map(|(s, m)| Some((s.clone(), best(m)?)))
+                .collect(),
+            for_category: motion_cat
+                .iter()
+                .filter_map(|(c, m)| Some((*c, best(m)?)))
+                .collect(),
+            utensil: motion_utensil
+                .iter()
+                .filter_map(|(m, u)| Some((m.clone(), best(u)?)))
+                .collect(),
+        }
+    }
+}
+
+/// Food states an output of unit `u` gains over the input of the same label: the motion reaches them
+/// (not a pour or a scoop: a sauce poured into a bowl, written "sauce" only there, was not made so).
+fn gained_states<'k>(kb: &'k KnowledgeBase, u: &'k FunctionalUnit) -> Vec<&'k str> {
+    if is_transfer_motion(&u.motion) {
+        return Vec::new();
+    }
+    let mut gained = Vec::new();
+    for o in &u.outputs {
+        let out = &kb.nodes[o.node];
+        if is_utensil(&out.label) {
+            continue;
+        }
+        let before: BTreeSet<&str> = u
+            .inputs
+            .iter()
+            .map(|i| &kb.nodes[i.node])
+            .filter(|n| n.label == out.label)
+            .flat_map(|n| n.physical_states())
+            .collect();
+        gained.extend(
+            out.physical_states()
+                .filter(|s| !before.contains(s) && is_food_state(s)),
+        );
+    }
+    gained
+}
+
+/// Every name of an object or of a listed content, numbered (units' ingredients first, then goals',
+/// then every node's label), with each unit's and each goal's ingredients by number.
+struct Labels {
+    names: Vec<String>,
+    ids: HashMap<String, u32>,
+    unit_ingredients: Vec<Vec<u32>>,
+    goal_ingredients: Vec<Vec<u32>>,
+}
+
+impl Labels {
+    fn number(kb: &KnowledgeBase) -> Labels {
+        let mut names: Vec<String> = Vec::new();
+        let mut ids: HashMap<String, u32> = HashMap::default();
+        let mut intern = |l: &str| -> u32 {
+            if let Some(&i) = ids.get(l) {
+                return i;
+            }
+            let i = names.len() as u32;
+            names.push(l.to_string());
+            ids.insert(l.to_string(), i);
+            i
+        };
+        let unit_ingredients = kb
+            .units
+            .iter()
+            .map(|unit| {
+                let mut ids: Vec<u32> = Vec::new();
+                for n in unit.input_nodes() {
+                    let node = &kb.nodes[n];
+                    if !is_utensil(&node.label) {
+                        ids.push(intern(&node.label));
+                    }
+                    // every listed content (contains, greased, garnished...), as g(u) always had it
+                    for st in &node.states {
+                        if let Some(StateArg::Ingredients(list)) = &st.arg {
+                            ids.extend(list.iter().map(|l| intern(l)));
+                        }
+                    }
+                }
+                ids.sort_unstable();
+                ids.dedup();
+                ids
+            })
+            .collect();
+        let goal_ingredients = kb
+            .goals
+            .iter()
+            .map(|g| {
+                g.ingredients
+                    .iter()
+                    .filter(|l| !is_utensil(l))
+                    .map(|l| intern(l))
+                    .collect()
+            })
+            .collect();
+        for n in &kb.nodes {
+            intern(&n.label);
+        }
+        Labels {
+            names,
+            ids,
+            unit_ingredients,
+            goal_ingredients,
+        }
+    }
 }
 
 /// The usable goals (with their ingredients' label ids, `kb.goals` order) per dish class, and all of them.
@@ -247,195 +470,30 @@ impl PlannerIndex {
             .into_iter()
             .map(str::to_string)
             .collect();
-        let mut subgraph_class: HashMap<String, Option<u32>> = HashMap::default();
-        for g in &kb.goals {
-            subgraph_class
-                .entry(g.subgraph.clone())
-                .or_insert(g.dish_class);
-        }
-
-        // counted on borrowed words, owned once per distinct key at the end
-        let mut label_state: HashMap<&str, HashMap<(&str, Option<u32>), u32>> = HashMap::default();
-        let mut state_freq: HashMap<(&str, Option<u32>), u32> = HashMap::default();
-        let mut motion_state: BTreeMap<String, BTreeMap<String, u32>> = BTreeMap::new();
-        let mut motion_cat: BTreeMap<Category, BTreeMap<String, u32>> = BTreeMap::new();
-        let mut motion_utensil: BTreeMap<String, BTreeMap<NodeId, u32>> = BTreeMap::new();
-        let names: BTreeSet<&String> = kb.provenance.iter().flat_map(|s| s.iter()).collect();
-        let subgraph_ids: HashMap<String, u32> = names
-            .into_iter()
-            .enumerate()
-            .map(|(i, n)| (n.clone(), i as u32))
-            .collect();
-        let unit_sources: Vec<Vec<u32>> = kb
-            .provenance
-            .iter()
-            .map(|p| {
-                let mut ids: Vec<u32> = p.iter().map(|s| subgraph_ids[s]).collect();
-                ids.sort_unstable();
-                ids.dedup();
-                ids
-            })
-            .collect();
-        let mut made_in: Vec<Vec<u32>> = vec![Vec::new(); kb.nodes.len()];
-        for (uid, u) in kb.units.iter().enumerate() {
-            for o in u.output_nodes() {
-                if !u.input_nodes().any(|i| i == o) {
-                    made_in[o].extend_from_slice(&unit_sources[uid]);
-                }
-            }
-            let classes: BTreeSet<Option<u32>> = kb.provenance[uid]
-                .iter()
-                .map(|s| subgraph_class.get(s).copied().flatten())
-                .collect();
-            for o in u.inputs.iter().chain(u.outputs.iter()) {
-                let node = &kb.nodes[o.node];
-                if is_utensil(&node.label) {
-                    continue;
-                }
-                for s in node.physical_states() {
-                    for c in classes.iter().copied().chain([None]) {
-                        *label_state
-                            .entry(&node.label)
-                            .or_default()
-                            .entry((s, c))
-                            .or_insert(0) += 1;
-                        *state_freq.entry((s, c)).or_insert(0) += 1;
-                    }
-                }
-            }
-            // states an output gains over the input of the same label: the motion reaches them (not a
-            // pour or a scoop: a sauce poured into a bowl, written "sauce" only there, was not made so)
-            let gains: &[_] = if is_transfer_motion(&u.motion) {
-                &[]
-            } else {
-                &u.outputs
-            };
-            for o in gains {
-                let out = &kb.nodes[o.node];
-                if is_utensil(&out.label) {
-                    continue;
-                }
-                let before: BTreeSet<&str> = u
-                    .inputs
-                    .iter()
-                    .map(|i| &kb.nodes[i.node])
-                    .filter(|n| n.label == out.label)
-                    .flat_map(|n| n.physical_states())
-                    .collect();
-                for s in out.physical_states() {
-                    if before.contains(s) || !is_food_state(s) {
-                        continue;
-                    }
-                    *motion_state
-                        .entry(s.to_string())
-                        .or_default()
-                        .entry(u.motion.clone())
-                        .or_insert(0) += 1;
-                    *motion_cat
-                        .entry(category(s))
-                        .or_default()
-                        .entry(u.motion.clone())
-                        .or_insert(0) += 1;
-                }
-            }
-            for i in &u.inputs {
-                let n = &kb.nodes[i.node];
-                if is_utensil(&n.label) && n.states.is_empty() {
-                    *motion_utensil
-                        .entry(u.motion.clone())
-                        .or_default()
-                        .entry(i.node)
-                        .or_insert(0) += 1;
-                }
-            }
-        }
-        let mut label_names: Vec<String> = Vec::new();
-        let mut label_ids: HashMap<String, u32> = HashMap::default();
-        let mut intern = |l: &str| -> u32 {
-            if let Some(&i) = label_ids.get(l) {
-                return i;
-            }
-            let i = label_names.len() as u32;
-            label_names.push(l.to_string());
-            label_ids.insert(l.to_string(), i);
-            i
-        };
-        let unit_ingredients = kb
-            .units
-            .iter()
-            .map(|unit| {
-                let mut ids: Vec<u32> = Vec::new();
-                for n in unit.input_nodes() {
-                    let node = &kb.nodes[n];
-                    if !is_utensil(&node.label) {
-                        ids.push(intern(&node.label));
-                    }
-                    // every listed content (contains, greased, garnished...), as g(u) always had it
-                    for st in &node.states {
-                        if let Some(crate::foon::model::StateArg::Ingredients(list)) = &st.arg {
-                            ids.extend(list.iter().map(|l| intern(l)));
-                        }
-                    }
-                }
-                ids.sort_unstable();
-                ids.dedup();
-                ids
-            })
-            .collect();
-        let goal_ingredients: Vec<Vec<u32>> = kb
-            .goals
-            .iter()
-            .map(|g| {
-                g.ingredients
-                    .iter()
-                    .filter(|l| !is_utensil(l))
-                    .map(|l| intern(l))
-                    .collect()
-            })
-            .collect();
-        for n in &kb.nodes {
-            intern(&n.label);
-        }
-        let (class_goals, all_goals) = goal_classes(kb, &goal_ingredients);
-        let sold_as = sold_as(kb, &ingredient_labels);
+        let (subgraph_ids, unit_sources) = subgraph_ids(kb);
+        let (label_state, state_freq) = state_counts(kb);
+        let motions = MotionTables::count(kb);
+        let labels = Labels::number(kb);
+        let (class_goals, all_goals) = goal_classes(kb, &labels.goal_ingredients);
         PlannerIndex {
             class_goals,
             all_goals,
-            label_names,
-            label_ids,
-            unit_ingredients,
+            label_names: labels.names,
+            label_ids: labels.ids,
+            unit_ingredients: labels.unit_ingredients,
             id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
             label_set: NEXT_ID.fetch_add(1, Ordering::Relaxed),
             by_label,
+            sold_as: sold_as(kb, &ingredient_labels),
             ingredient_labels,
-            label_state: label_state
-                .into_iter()
-                .map(|(label, states)| (label.to_string(), by_word(states)))
-                .collect(),
-            state_freq: by_word(state_freq),
-            motion_for_state: motion_state
-                .iter()
-                .filter_map(|(s, m)| Some((s.clone(), best(m)?)))
-                .collect(),
-            motion_for_category: motion_cat
-                .iter()
-                .filter_map(|(c, m)| Some((*c, best(m)?)))
-                .collect(),
-            sold_as,
+            label_state,
+            state_freq,
+            motion_for_state: motions.for_state,
+            motion_for_category: motions.for_category,
             transitions: Transitions::mine(kb),
             heated: heated_vessels(kb),
-            utensil_for_motion: motion_utensil
-                .iter()
-                .filter_map(|(m, u)| Some((m.clone(), best(u)?)))
-                .collect(),
-            made_in: made_in
-                .into_iter()
-                .map(|mut ids| {
-                    ids.sort_unstable();
-                    ids.dedup();
-                    ids
-                })
-                .collect(),
+            utensil_for_motion: motions.utensil,
+            made_in: made_in(kb, &unit_sources),
             subgraph_ids,
             unit_sources,
         }
