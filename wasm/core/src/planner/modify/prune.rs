@@ -107,6 +107,82 @@ pub(super) fn namesake(
     (slots, dish_side)
 }
 
+/// The labels pruning removes before any unit goes: those of the tree's starting nodes (not utensils, not
+/// made by a unit), and the names only the lists of starting nodes give, unless kept or asked for.
+fn starting_labels(
+    tree: &Tree,
+    live: &[SlotId],
+    keep: &BTreeSet<String>,
+    requested: &HashSet<&str>,
+) -> BTreeSet<String> {
+    // what a unit gives out is made, whether or not it is the unit chosen to make it (the broth FOON's
+    // ladle leaves in the bowl beside the ramen is not a starting ingredient)
+    let mut made = vec![false; tree.slots.len()];
+    for (_, u) in tree.alive_units() {
+        for &(x, _) in &u.outputs {
+            made[x] = true;
+        }
+    }
+    let mut starting: Vec<&str> = live
+        .iter()
+        .filter(|&&x| !made[x] && !tree.slots[x].utensil)
+        .map(|&x| tree.slots[x].node.label.as_str())
+        .collect();
+    // names that only the lists of starting nodes give are ingredients too (FOON's "contain {butter}"
+    // makes no node of the butter a skillet holds, and the french toast made in it lists butter): not
+    // asked for, they go. A name a unit's output lists first is made there (the egg white a crack
+    // leaves in the bowl).
+    let named = |item: &str| live.iter().any(|&x| tree.slots[x].node.label == item);
+    for &x in live.iter().filter(|&&x| !made[x]) {
+        let unnamed =
+            |item: &&str| !requested.contains(item) && !keep.contains(*item) && !named(item);
+        starting.extend(tree.slots[x].node.listed().filter(unnamed));
+    }
+    starting.sort_unstable();
+    starting.dedup();
+    starting
+        .into_iter()
+        .filter(|&l| !keep.contains(l))
+        .map(str::to_string)
+        .collect()
+}
+
+/// The outputs of a removed unit: one its inputs have (the same node, else the same label) stands for
+/// that input from now on (`alias`); any other is gone, and its label (unless a utensil's) is returned.
+fn outputs_of_removed(
+    tree: &Tree,
+    inputs: &[(SlotId, bool)],
+    outputs: &[(SlotId, bool)],
+    alias: &mut HashMap<SlotId, SlotId>,
+    gone: &mut [bool],
+) -> Vec<String> {
+    let mut labels = Vec::new();
+    for &(x, _) in outputs {
+        let node = &tree.slots[x].node;
+        let same = inputs
+            .iter()
+            .find(|i| tree.slots[i.0].node == *node)
+            .or_else(|| {
+                inputs
+                    .iter()
+                    .find(|i| tree.slots[i.0].node.label == node.label)
+            });
+        match same {
+            Some(&(i, _)) if i != x => {
+                alias.insert(x, i);
+            }
+            Some(_) => {}
+            None => {
+                gone[x] = true;
+                if !tree.slots[x].utensil {
+                    labels.push(node.label.to_string());
+                }
+            }
+        }
+    }
+    labels
+}
+
 /// Removes every starting ingredient not asked for (`keep`: planned so far; `requested`: the query's
 /// names, some still to be brought in), with the units that only served it; containers that held it
 /// pass on unchanged, and it leaves every `contains {…}` list. Returns the removed labels.
@@ -118,43 +194,8 @@ pub(super) fn prune(
     requested: &HashSet<&str>,
 ) -> Vec<String> {
     let order = tree.order();
-    // sized once (the slots bound the live ones, and these names and the names listed with them
-    // nearly always): a filtered list would grow step by step
-    let mut live: Vec<SlotId> = Vec::with_capacity(tree.slots.len());
-    live.extend(tree.live_slots());
-    // what a unit gives out is made, whether or not it is the unit chosen to make it (the broth FOON's
-    // ladle leaves in the bowl beside the ramen is not a starting ingredient)
-    let mut made = vec![false; tree.slots.len()];
-    for (_, u) in tree.alive_units() {
-        for &(x, _) in &u.outputs {
-            made[x] = true;
-        }
-    }
-    // only the labels that go are copied
-    let mut starting: Vec<&str> = Vec::with_capacity(tree.slots.len());
-    starting.extend(
-        live.iter()
-            .filter(|&&x| !made[x] && !tree.slots[x].utensil)
-            .map(|&x| tree.slots[x].node.label.as_str()),
-    );
-    // names that only the lists of starting nodes give are ingredients too (FOON's "contain {butter}"
-    // makes no node of the butter a skillet holds, and the french toast made in it lists butter): not
-    // asked for, they go. A name a unit's output lists first is made there (the egg white a crack
-    // leaves in the bowl).
-    // (asked-for names are set aside first: they are nearly all a starting node lists)
-    let named = |item: &str| live.iter().any(|&x| tree.slots[x].node.label == item);
-    for &x in live.iter().filter(|&&x| !made[x]) {
-        let unnamed =
-            |item: &&str| !requested.contains(item) && !keep.contains(*item) && !named(item);
-        starting.extend(tree.slots[x].node.listed().filter(unnamed));
-    }
-    starting.sort_unstable();
-    starting.dedup();
-    let mut pruned: BTreeSet<String> = starting
-        .into_iter()
-        .filter(|&l| !keep.contains(l))
-        .map(str::to_string)
-        .collect();
+    let live: Vec<SlotId> = tree.live_slots().collect();
+    let mut pruned = starting_labels(tree, &live, keep, requested);
     let goal = tree.goal;
     let dish = tree.slots[goal].node.label.clone();
     let (namesake_slots, dish_side) = if pruned.remove(dish.as_str()) {
@@ -232,34 +273,9 @@ pub(super) fn prune(
                 .all(|o| inputs.iter().any(|i| label(i.0) == label(o.0)));
         if (lost_all || no_op || moves_nothing || outputs.is_empty()) && !makes_goal {
             tree.units[u].alive = false;
-            for &(x, _) in &outputs {
-                let utensil = tree.slots[x].utensil;
-                let node = &tree.slots[x].node;
-                let same = inputs
-                    .iter()
-                    .find(|i| tree.slots[i.0].node == *node)
-                    .or_else(|| {
-                        inputs
-                            .iter()
-                            .find(|i| tree.slots[i.0].node.label == node.label)
-                    });
-                match same {
-                    Some(&(i, _)) if i != x => {
-                        alias.insert(x, i);
-                    }
-                    Some(_) => {}
-                    None => {
-                        let label = node.label.clone();
-                        gone[x] = true;
-                        if !utensil
-                            && !keep.contains(label.as_str())
-                            && !going.contains(label.as_str())
-                        {
-                            with_units.insert(label.to_string());
-                        }
-                    }
-                }
-            }
+            let gone_with = outputs_of_removed(tree, &inputs, &outputs, &mut alias, &mut gone);
+            let unlisted = |l: &String| !keep.contains(l.as_str()) && !going.contains(l.as_str());
+            with_units.extend(gone_with.into_iter().filter(unlisted));
             // what only it put into a container (the egg white and yolk a crack leaves in the pot) goes
             // with it, from the units after it as well
             let made_here = made_in(tree, &inputs, &outputs);
