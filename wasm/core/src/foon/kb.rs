@@ -88,6 +88,9 @@ type UnitKey = (Vec<NodeId>, String, Vec<NodeId>);
 /// A merged unit being built: inputs, outputs, and the subgraphs it was seen in.
 type MergedUnit = (Vec<UnitObject>, Vec<UnitObject>, BTreeSet<String>);
 
+/// A goal mark in a file: (file, node, dish class).
+type GoalMarkOf = (String, NodeId, Option<u32>);
+
 impl KnowledgeBase {
     /// Merges subgraphs into one universal FOON.
     pub fn merge(subgraphs: &[Subgraph]) -> Result<KnowledgeBase> {
@@ -107,54 +110,8 @@ impl KnowledgeBase {
                 "the knowledge base has no functional units (no FOON files, or only empty ones)",
             ));
         }
-        // Number nodes in sorted order so that ids do not depend on file order.
-        // distinct first, then sorted: nodes recur in many units, and comparing them is the cost
-        let distinct: FxHashSet<&ObjectNode> = subgraphs
-            .iter()
-            .flat_map(|g| g.units.iter())
-            .flat_map(|u| u.inputs.iter().chain(u.outputs.iter()))
-            .map(|o| &o.node)
-            .collect();
-        let mut all: Vec<&ObjectNode> = distinct.into_iter().collect();
-        all.sort_unstable();
-        let nodes: Vec<ObjectNode> = all.into_iter().cloned().collect();
-        let node_index: FxHashMap<ObjectNode, NodeId> = nodes
-            .iter()
-            .cloned()
-            .enumerate()
-            .map(|(i, n)| (n, i))
-            .collect();
-
-        // Union of units keyed by (inputs, motion, outputs); motion flags are OR-ed over duplicates.
-        let mut merged: BTreeMap<UnitKey, MergedUnit> = BTreeMap::new();
-        let mut goal_marks: BTreeSet<(String, NodeId, Option<u32>)> = BTreeSet::new();
-        for g in subgraphs {
-            for u in &g.units {
-                let ins = objects(&u.inputs, &node_index);
-                let outs = objects(&u.outputs, &node_index);
-                let key = (sorted_nodes(&ins), u.motion.clone(), sorted_nodes(&outs));
-                let entry = merged
-                    .entry(key)
-                    .or_insert_with(|| (ins.clone(), outs.clone(), BTreeSet::new()));
-                or_flags(&mut entry.0, &ins);
-                or_flags(&mut entry.1, &outs);
-                entry.2.insert(g.name.clone());
-                for o in u.outputs.iter().chain(u.inputs.iter()) {
-                    if let Some(mark) = &o.goal {
-                        goal_marks.insert((g.name.clone(), node_index[&o.node], mark.dish_class));
-                    }
-                }
-            }
-        }
-        // A node marked as a goal twice in one file, once with its dish class and once without, is one goal.
-        let classified: BTreeSet<(String, NodeId)> = goal_marks
-            .iter()
-            .filter(|(_, _, class)| class.is_some())
-            .map(|(file, node, _)| (file.clone(), *node))
-            .collect();
-        goal_marks.retain(|(file, node, class)| {
-            class.is_some() || !classified.contains(&(file.clone(), *node))
-        });
+        let (nodes, node_index) = numbered_nodes(subgraphs);
+        let (merged, goal_marks) = merged_units(subgraphs, &node_index);
         let mut units = Vec::with_capacity(merged.len());
         let mut provenance = Vec::with_capacity(merged.len());
         for ((_, motion, _), (mut inputs, mut outputs, files)) in merged {
@@ -167,7 +124,6 @@ impl KnowledgeBase {
             });
             provenance.push(files.into_iter().collect());
         }
-
         let mut producers = vec![Vec::new(); nodes.len()];
         let mut consumers = vec![Vec::new(); nodes.len()];
         for (id, u) in units.iter().enumerate() {
@@ -278,6 +234,65 @@ impl KnowledgeBase {
             .filter(|l| !is_utensil(l))
             .collect()
     }
+}
+
+/// The distinct object nodes of all subgraphs, numbered in sorted order so that ids do not depend on
+/// file order, and each node's number.
+fn numbered_nodes(subgraphs: &[Subgraph]) -> (Vec<ObjectNode>, FxHashMap<ObjectNode, NodeId>) {
+    let distinct: FxHashSet<&ObjectNode> = subgraphs
+        .iter()
+        .flat_map(|g| g.units.iter())
+        .flat_map(|u| u.inputs.iter().chain(u.outputs.iter()))
+        .map(|o| &o.node)
+        .collect();
+    let mut all: Vec<&ObjectNode> = distinct.into_iter().collect();
+    all.sort_unstable();
+    let nodes: Vec<ObjectNode> = all.into_iter().cloned().collect();
+    let node_index: FxHashMap<ObjectNode, NodeId> = nodes
+        .iter()
+        .cloned()
+        .enumerate()
+        .map(|(i, n)| (n, i))
+        .collect();
+    (nodes, node_index)
+}
+
+/// The union of all subgraphs' units keyed by (inputs, motion, outputs), motion flags OR-ed over
+/// duplicates, with the files each comes from; and the goal marks as (file, node, dish class).
+fn merged_units(
+    subgraphs: &[Subgraph],
+    node_index: &FxHashMap<ObjectNode, NodeId>,
+) -> (BTreeMap<UnitKey, MergedUnit>, BTreeSet<GoalMarkOf>) {
+    let mut merged: BTreeMap<UnitKey, MergedUnit> = BTreeMap::new();
+    let mut goal_marks: BTreeSet<GoalMarkOf> = BTreeSet::new();
+    for g in subgraphs {
+        for u in &g.units {
+            let ins = objects(&u.inputs, node_index);
+            let outs = objects(&u.outputs, node_index);
+            let key = (sorted_nodes(&ins), u.motion.clone(), sorted_nodes(&outs));
+            let entry = merged
+                .entry(key)
+                .or_insert_with(|| (ins.clone(), outs.clone(), BTreeSet::new()));
+            or_flags(&mut entry.0, &ins);
+            or_flags(&mut entry.1, &outs);
+            entry.2.insert(g.name.clone());
+            for o in u.outputs.iter().chain(u.inputs.iter()) {
+                if let Some(mark) = &o.goal {
+                    goal_marks.insert((g.name.clone(), node_index[&o.node], mark.dish_class));
+                }
+            }
+        }
+    }
+    // A node marked as a goal twice in one file, once with its dish class and once without, is one goal.
+    let classified: BTreeSet<(String, NodeId)> = goal_marks
+        .iter()
+        .filter(|(_, _, class)| class.is_some())
+        .map(|(file, node, _)| (file.clone(), *node))
+        .collect();
+    goal_marks.retain(|(file, node, class)| {
+        class.is_some() || !classified.contains(&(file.clone(), *node))
+    });
+    (merged, goal_marks)
 }
 
 fn objects(
