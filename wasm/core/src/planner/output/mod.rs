@@ -1,7 +1,7 @@
 //! From the modified tree to the plan: units in execution order, progress lines (section IV-A,
 //! `progress`) and one plain sentence per unit (`steps`).
 
-use super::tree::{SlotId, TUnitId, Tree};
+use super::tree::{SlotId, TUnit, TUnitId, Tree};
 use crate::contract::plan::{
     DishClassRef, GoalInfo, IngredientOutcome, Plan, PlanNode, PlanUnit, ProgressLine,
     ProgressState, Query, Status,

@@ -160,6 +160,67 @@ pub(super) fn relation_to<'t>(tree: &'t Tree, container: &str) -> &'t str {
     said_by(true).or_else(|| said_by(false)).unwrap_or("in")
 }
 
+/// What a unit's motion does, by its words.
+struct MotionKind {
+    /// It puts things into a place ("pour", "place", "add").
+    puts: bool,
+    /// It opens or closes a container.
+    closes: bool,
+    /// It handles a container itself rather than what it holds.
+    handles: bool,
+}
+
+impl MotionKind {
+    fn of(motion: &str) -> MotionKind {
+        MotionKind {
+            puts: moves_into(motion),
+            closes: CLOSES.contains(&motion),
+            handles: PUT_MOTIONS.contains(&motion)
+                || HANDLES.contains(&motion)
+                || motion.ends_with(" open"),
+        }
+    }
+}
+
+/// How a sentence's objects were found, which decides its place and the tools it names.
+#[derive(Default)]
+struct Found<'t> {
+    /// The container worked on, as (relation, label), when it is the place ("… in the bowl").
+    holder: Option<(&'t str, &'t str)>,
+    /// A container opened or closed where it stands.
+    closed: bool,
+    /// What is put somewhere was taken out of a vessel other than the products'.
+    from_elsewhere: bool,
+    /// The objects are what moved, the tools it moved with aside.
+    with_tools: bool,
+}
+
+/// The unit `u` and its tree, as a sentence is made of them.
+struct Said<'t> {
+    tree: &'t Tree<'t>,
+    unit: &'t TUnit<'t>,
+}
+
+impl<'t> Said<'t> {
+    fn node(&self, x: SlotId) -> &'t ObjectNode {
+        &self.tree.slots[x].node
+    }
+
+    fn utensil(&self, x: SlotId) -> bool {
+        self.tree.slots[x].utensil
+    }
+
+    fn tool(&self, x: SlotId) -> bool {
+        self.utensil(x) && self.node(x).states.is_empty()
+    }
+}
+
+fn push<'n>(objects: &mut Vec<&'n str>, l: &'n str) {
+    if !objects.contains(&l) {
+        objects.push(l);
+    }
+}
+
 /// One plain sentence for a unit: "Slice the tomato on the cutting board." `objects` is a buffer reused
 /// from sentence to sentence (the sentence's objects, then its tools after them).
 pub(super) fn sentence<'t>(
@@ -168,70 +229,130 @@ pub(super) fn sentence<'t>(
     objects: &mut Vec<&'t str>,
     relations: &mut Relations<'t>,
 ) -> String {
-    let unit = &tree.units[u];
-    let node = |x: SlotId| &tree.slots[x].node;
-    // the slot's flag rather than a lookup of its label
-    let utensil = |x: SlotId| tree.slots[x].utensil;
+    let said = Said {
+        tree,
+        unit: &tree.units[u],
+    };
+    let unit = said.unit;
+    let motion = unit.motion.trim_end_matches('*');
+    let kind = MotionKind::of(motion);
     objects.clear();
-    fn push<'n>(objects: &mut Vec<&'n str>, l: &'n str) {
-        if !objects.contains(&l) {
-            objects.push(l);
-        }
-    }
-    for &(x, m) in &unit.inputs {
-        if m && !utensil(x) {
-            push(objects, &node(x).label);
-        }
-    }
-    if objects.is_empty() {
-        for &(x, _) in &unit.inputs {
-            if !utensil(x) {
+    let found = said.objects(motion, &kind, objects, relations);
+    let place = found.holder.or_else(|| {
+        (!found.closed)
+            .then(|| said.place(objects, relations))
+            .flatten()
+    });
+    let settled = said.settled(
+        objects,
+        place.filter(|_| found.holder.is_none() && kind.puts),
+    );
+    let moved = objects.len();
+    said.tools(objects, &found, place);
+    let (objects, tools) = objects.split_at(moved);
+    write(&unit.motion, objects, place, kind.puts, &settled, tools)
+}
+
+impl<'t> Said<'t> {
+    /// The objects the unit works on, into `objects`.
+    fn objects(
+        &self,
+        motion: &str,
+        kind: &MotionKind,
+        objects: &mut Vec<&'t str>,
+        relations: &mut Relations<'t>,
+    ) -> Found<'t> {
+        let unit = self.unit;
+        let node = |x: SlotId| self.node(x);
+        let utensil = |x: SlotId| self.utensil(x);
+        for &(x, m) in &unit.inputs {
+            if m && !utensil(x) {
                 push(objects, &node(x).label);
             }
         }
-    }
-    // no food among the inputs: the unit works on what a container holds ("Mix the egg and the milk in
-    // the bowl with the whisk", "Cook the egg in the pot", "Pour the flour and the salt into the bowl"),
-    // not on a tool or the container ("Mix the whisk", "Cook the pot", "Pour the bowl"), unless it handles
-    // the container itself: "Place the pot onto the stove", "Cover the pot with the pot lid" (only tools
-    // move: the lid) but "Cover the pot" when the pot moves
-    let mut holder = None;
-    let mut closed = false;
-    // the vessel worked on is the one things are taken from, not the one they go into
-    let mut from_elsewhere = false;
-    let tool = |x: SlotId| utensil(x) && node(x).states.is_empty();
-    let motion = unit.motion.trim_end_matches('*');
-    let puts = moves_into(motion);
-    let tools_only = unit.inputs.iter().any(|&(x, m)| m && tool(x))
-        && unit.inputs.iter().all(|&(x, m)| !m || tool(x))
-        && !PUT_MOTIONS.contains(&motion);
-    let closes = CLOSES.contains(&motion);
-    let handles =
-        PUT_MOTIONS.contains(&motion) || HANDLES.contains(&motion) || motion.ends_with(" open");
-    // food already in a vessel, mixed there into something new, is mixed with all the vessel holds: the
-    // blender blends the whole cup, not the honey FOON moves ("Blend the honey, the blueberry and the milk")
-    if !objects.is_empty() && !puts && !handles && !closes && is_mixing_motion(motion) {
-        let label_of = |x: SlotId| node(x).label.as_str();
-        let makes_new = unit.outputs.iter().any(|&(o, _)| {
-            !utensil(o) && !unit.inputs.iter().any(|&(i, _)| label_of(i) == label_of(o))
-        });
-        let inside = |v: &ObjectNode, l: &str| {
-            unit.inputs
-                .iter()
-                .any(|&(i, _)| label_of(i) == l && node(i).container() == Some(v.label.as_str()))
-        };
-        let vessel = unit
-            .inputs
-            .iter()
-            .map(|&(i, _)| node(i))
-            .find(|v| v.holds_something() && objects.iter().all(|l| inside(v, l)));
-        if let Some(v) = vessel.filter(|_| makes_new) {
-            for l in v.contents() {
-                push(objects, l);
+        if objects.is_empty() {
+            for &(x, _) in &unit.inputs {
+                if !utensil(x) {
+                    push(objects, &node(x).label);
+                }
             }
         }
+        let MotionKind {
+            puts,
+            closes,
+            handles,
+        } = *kind;
+        let mut found = Found::default();
+        // food already in a vessel, mixed there into something new, is mixed with all the vessel
+        // holds: the blender blends the whole cup, not the honey FOON moves ("Blend the honey, the
+        // blueberry and the milk")
+        if !objects.is_empty() && !puts && !handles && !closes && is_mixing_motion(motion) {
+            let label_of = |x: SlotId| node(x).label.as_str();
+            let makes_new = unit.outputs.iter().any(|&(o, _)| {
+                !utensil(o) && !unit.inputs.iter().any(|&(i, _)| label_of(i) == label_of(o))
+            });
+            let inside = |v: &ObjectNode, l: &str| {
+                unit.inputs.iter().any(|&(i, _)| {
+                    label_of(i) == l && node(i).container() == Some(v.label.as_str())
+                })
+            };
+            let vessel = unit
+                .inputs
+                .iter()
+                .map(|&(i, _)| node(i))
+                .find(|v| v.holds_something() && objects.iter().all(|l| inside(v, l)));
+            if let Some(v) = vessel.filter(|_| makes_new) {
+                for l in v.contents() {
+                    push(objects, l);
+                }
+            }
+        }
+        if objects.is_empty() && !handles {
+            self.worked_on(kind, objects, &mut found, relations);
+        }
+        // what moved, the tools it moved with aside ("Cut open the packet with the scissors")
+        if objects.is_empty() {
+            for &(x, m) in &unit.inputs {
+                if m && !self.tool(x) {
+                    push(objects, &node(x).label);
+                    found.with_tools = true;
+                }
+            }
+        }
+        if objects.is_empty() {
+            for &(x, m) in &unit.inputs {
+                if m {
+                    push(objects, &node(x).label);
+                }
+            }
+        }
+        if objects.is_empty() {
+            if let Some(&(x, _)) = unit.inputs.first() {
+                push(objects, &node(x).label);
+            }
+        }
+        found
     }
-    if objects.is_empty() && !handles {
+
+    /// No food among the inputs: the unit works on what a container holds ("Mix the egg and the milk in
+    /// the bowl with the whisk", "Cook the egg in the pot", "Pour the flour and the salt into the
+    /// bowl"), not on a tool or the container ("Mix the whisk", "Cook the pot", "Pour the bowl"),
+    /// unless it handles the container itself: "Place the pot onto the stove", "Cover the pot with the
+    /// pot lid" (only tools move: the lid) but "Cover the pot" when the pot moves.
+    fn worked_on(
+        &self,
+        kind: &MotionKind,
+        objects: &mut Vec<&'t str>,
+        out: &mut Found<'t>,
+        relations: &mut Relations<'t>,
+    ) {
+        let unit = self.unit;
+        let node = |x: SlotId| self.node(x);
+        let utensil = |x: SlotId| self.utensil(x);
+        let MotionKind { puts, closes, .. } = *kind;
+        let tools_only = unit.inputs.iter().any(|&(x, m)| m && self.tool(x))
+            && unit.inputs.iter().all(|&(x, m)| !m || self.tool(x))
+            && !PUT_MOTIONS.contains(&unit.motion.trim_end_matches('*'));
         let vessel = |i: &&(SlotId, bool)| node(i.0).holds_something();
         // a lid is put on or taken off what the unit covers or uncovers, before or after
         let covered = closes
@@ -263,7 +384,7 @@ pub(super) fn sentence<'t>(
             (closes || moved.clone().all(|i| machine(i.0)))
                 .then(|| {
                     let found = unit.inputs.iter().find(source);
-                    from_elsewhere = puts && found.is_some();
+                    out.from_elsewhere = puts && found.is_some();
                     found.or_else(|| unit.inputs.iter().find(vessel))
                 })
                 .flatten()
@@ -272,46 +393,29 @@ pub(super) fn sentence<'t>(
             let n = node(x);
             if closes {
                 push(objects, &n.label);
-                closed = true;
+                out.closed = true;
             } else {
                 for l in n.contents() {
                     push(objects, l);
                 }
                 // poured out of it (with more than tools moving): where it goes is the place
-                if (tools_only || !puts) && !from_elsewhere {
-                    holder = Some((relations.to(&n.label), n.label.as_str()));
+                if (tools_only || !puts) && !out.from_elsewhere {
+                    out.holder = Some((relations.to(&n.label), n.label.as_str()));
                 }
             }
         }
     }
-    // what moved, the tools it moved with aside ("Cut open the packet with the scissors")
-    let mut with_tools = false;
-    if objects.is_empty() {
-        for &(x, m) in &unit.inputs {
-            if m && !tool(x) {
-                push(objects, &node(x).label);
-                with_tools = true;
-            }
-        }
-    }
-    if objects.is_empty() {
-        for &(x, m) in &unit.inputs {
-            if m {
-                push(objects, &node(x).label);
-            }
-        }
-    }
-    if objects.is_empty() {
-        if let Some(&(x, _)) = unit.inputs.first() {
-            push(objects, &node(x).label);
-        }
-    }
-    // where the moved objects end up
-    let place = holder.or_else(|| {
-        // a container opened or closed where it stands
-        if closed {
-            return None;
-        }
+
+    /// Where the moved objects end up.
+    fn place(
+        &self,
+        objects: &[&'t str],
+        relations: &mut Relations<'t>,
+    ) -> Option<(&'t str, &'t str)> {
+        let unit = self.unit;
+        let node = |x: SlotId| self.node(x);
+        let utensil = |x: SlotId| self.utensil(x);
+
         unit.outputs
             .iter()
             .find_map(|&(x, _)| {
@@ -354,42 +458,70 @@ pub(super) fn sentence<'t>(
                         .flatten()
                 })
             })
-    });
-    // what is already where the others are put is not put there again (FOON lists what a bowl holds
-    // among the inputs of the next thing added to it): the others go onto it ("Pour the maple syrup onto
-    // the french toast on the plate"); a bowl of the same name that does not hold it is another bowl
-    let mut settled = Vec::new();
-    if let Some((_, c)) = place.filter(|_| holder.is_none() && puts) {
-        let mut vessels = unit
-            .inputs
-            .iter()
-            .map(|i| node(i.0))
-            .filter(|n| n.label == c);
-        if let Some(first) = vessels.next() {
-            let holds = |n: &ObjectNode, l: &str| n.contents().any(|i| i == l);
-            let there = |l: &str| holds(first, l) && vessels.clone().all(|n| holds(n, l));
-            let count = objects.iter().filter(|l| there(l)).count();
-            if count > 0 && count < objects.len() {
-                settled.extend(objects.iter().copied().filter(|l| there(l)));
-                objects.retain(|l| !there(l));
+    }
+
+    /// What is already where the others are put is not put there again (FOON lists what a bowl holds
+    /// among the inputs of the next thing added to it): the others go onto it ("Pour the maple syrup onto
+    /// the french toast on the plate"); a bowl of the same name that does not hold it is another bowl.
+    /// Returns those, taken out of `objects`.
+    fn settled(&self, objects: &mut Vec<&'t str>, put_into: Option<(&str, &str)>) -> Vec<&'t str> {
+        let unit = self.unit;
+        let node = |x: SlotId| self.node(x);
+        let mut settled = Vec::new();
+        if let Some((_, c)) = put_into {
+            let mut vessels = unit
+                .inputs
+                .iter()
+                .map(|i| node(i.0))
+                .filter(|n| n.label == c);
+            if let Some(first) = vessels.next() {
+                let holds = |n: &ObjectNode, l: &str| n.contents().any(|i| i == l);
+                let there = |l: &str| holds(first, l) && vessels.clone().all(|n| holds(n, l));
+                let count = objects.iter().filter(|l| there(l)).count();
+                if count > 0 && count < objects.len() {
+                    settled.extend(objects.iter().copied().filter(|l| there(l)));
+                    objects.retain(|l| !there(l));
+                }
+            }
+        }
+        settled
+    }
+
+    /// The tools the sentence names after its objects, into `objects`.
+    fn tools(&self, objects: &mut Vec<&'t str>, found: &Found, place: Option<(&str, &str)>) {
+        let unit = self.unit;
+        let node = |x: SlotId| self.node(x);
+        let utensil = |x: SlotId| self.utensil(x);
+        let moved = objects.len();
+        for &(x, m) in &unit.inputs {
+            let n = node(x);
+            if (!m
+                || found.holder.is_some()
+                || found.closed
+                || found.from_elsewhere
+                || found.with_tools)
+                && utensil(x)
+                && n.states.is_empty()
+                && !objects[..moved].contains(&n.label.as_str())
+                && place.is_none_or(|p| p.1 != n.label)
+            {
+                objects.push(&n.label);
             }
         }
     }
-    let moved = objects.len();
-    for &(x, m) in &unit.inputs {
-        let n = node(x);
-        if (!m || holder.is_some() || closed || from_elsewhere || with_tools)
-            && utensil(x)
-            && n.states.is_empty()
-            && !objects[..moved].contains(&n.label.as_str())
-            && place.is_none_or(|p| p.1 != n.label)
-        {
-            objects.push(&n.label);
-        }
-    }
-    let (objects, tools) = objects.split_at(moved);
+}
+
+/// The sentence: verb, objects, place (with what is settled there) and tools.
+fn write(
+    motion: &str,
+    objects: &[&str],
+    place: Option<(&str, &str)>,
+    puts: bool,
+    settled: &[&str],
+    tools: &[&str],
+) -> String {
     let mut text = String::new();
-    let after = push_verb(&mut text, &unit.motion);
+    let after = push_verb(&mut text, motion);
     text.push(' ');
     push_list(&mut text, objects);
     text.push_str(after);
@@ -404,7 +536,7 @@ pub(super) fn sentence<'t>(
         // a long list of what is there already says less than the container's name
         if (1..=2).contains(&settled.len()) {
             text.push(' ');
-            push_list(&mut text, &settled);
+            push_list(&mut text, settled);
             text.push(' ');
             text.push_str(rel);
         }
