@@ -23,11 +23,12 @@ pub use index::PlannerIndex;
 pub use transitions::{Transitions, Verdict};
 
 use crate::contract::plan::{
-    DishClassRef, Plan, PlanRequest, Query, QueryIngredient, FORMAT_VERSION,
+    DishClassRef, Plan, PlanRequest, Query, QueryIngredient, RetrievalMode, FORMAT_VERSION,
 };
 use crate::error::{ErrorCode, FoonError, Result};
 use crate::foon::kb::KnowledgeBase;
 use crate::foon::label::{normalize_label, normalize_word};
+use crate::foon::model::NodeId;
 use crate::limits;
 use crate::robot::{robot_view, Motions};
 use crate::similarity::Similarity;
@@ -47,8 +48,7 @@ pub fn plan(
     let query = prepare_query(&request.query, &mut notes)?;
     let overrides = prepare_overrides(&request.overrides)?;
     let class = dish_class_of(&query.dish_type);
-    // the distinct names (a query has a few; at most `MAX_QUERY_INGREDIENTS`)
-    let mut labels: Vec<String> = Vec::with_capacity(query.ingredients.len());
+    let mut labels: Vec<String> = Vec::new();
     for i in &query.ingredients {
         if !labels.contains(&i.object) {
             labels.push(i.object.clone());
@@ -65,30 +65,9 @@ pub fn plan(
             )
         })?;
     let goal_subgraph = index.subgraph_id(&chosen.goal.subgraph);
-    let in_mode = request
-        .robot
-        .as_ref()
-        .zip(motions.as_ref())
-        .and_then(|(o, m)| {
-            let root = (chosen.goal.node, goal_subgraph);
-            optimal::retrieve_in_mode(kb, index, &scorer, root, o.mode, m, &trace, &mut notes)
-        });
-    let reference = in_mode.unwrap_or_else(|| {
-        alg2_retrieve::retrieve_explained(
-            kb,
-            index,
-            &scorer,
-            chosen.goal.node,
-            index.subgraph_id(&chosen.goal.subgraph),
-            &trace,
-        )
-    });
-    for &n in &reference.blocked {
-        notes.push(format!(
-            "every unit making '{}' needs it again (a cycle): taken as available",
-            kb.nodes[n]
-        ));
-    }
+    let root = (chosen.goal.node, goal_subgraph);
+    let mode = request.robot.as_ref().map(|o| o.mode).zip(motions.as_ref());
+    let reference = reference_tree(kb, index, &scorer, root, mode, &trace, &mut notes);
     let mut tree = tree::Tree::from_retrieved(kb, &reference, chosen.goal.node);
     let ctx = modify::Context {
         kb,
@@ -96,7 +75,7 @@ pub fn plan(
         sim: similarity,
         class,
         overrides: &overrides,
-        goal_subgraph: index.subgraph_id(&chosen.goal.subgraph),
+        goal_subgraph,
         scorer: &scorer,
         trace: &trace,
         readings: crate::vocab::foods::query_readings(&query),
@@ -145,6 +124,32 @@ pub fn plan(
         .zip(motions.as_ref())
         .map(|(o, m)| robot_view(&plan, o, m));
     Ok(plan)
+}
+
+/// Alg. 2's reference task tree of the goal `root` (node, subgraph), or the tree of a robot's retrieval
+/// mode; a note for each node taken as available to break a cycle.
+fn reference_tree(
+    kb: &KnowledgeBase,
+    index: &PlannerIndex,
+    scorer: &score::Scorer,
+    root: (NodeId, Option<u32>),
+    mode: Option<(RetrievalMode, &Motions)>,
+    trace: &explain::Recorder,
+    notes: &mut Vec<String>,
+) -> alg2_retrieve::Retrieved {
+    let in_mode = mode.and_then(|(mode, m)| {
+        optimal::retrieve_in_mode(kb, index, scorer, root, mode, m, trace, notes)
+    });
+    let reference = in_mode.unwrap_or_else(|| {
+        alg2_retrieve::retrieve_explained(kb, index, scorer, root.0, root.1, trace)
+    });
+    for &n in &reference.blocked {
+        notes.push(format!(
+            "every unit making '{}' needs it again (a cycle): taken as available",
+            kb.nodes[n]
+        ));
+    }
+    reference
 }
 
 /// Says so when the plan keeps next to nothing of the reference task tree (at most two of its units,
