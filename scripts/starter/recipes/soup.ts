@@ -50,12 +50,12 @@ function butternutSquashSoup(): WrittenRecipe {
   sweat(r, "pot", ["onion"], BUTTER);
   r.put("pour", "butternut squash", "pot").put("pour", [...VEG_BROTH], "pot");
   r.putAll("sprinkle", [["nutmeg", "ground", "in [jar]"], SALT, PEPPER], "pot");
+  // the cream simmers in the pot: what joins the soup last is cooked with it, not stirred raw into the bowl
+  r.put("pour", ["heavy cream", "liquid", "in [carton]"], "pot");
   r.mix("simmer", "pot", "soup", ["liquid", "cooked"], { with: ["wooden spoon"] });
   r.put("pour", "soup", "blender jar", { with: ["ladle"] });
   r.mix("blend", "blender jar", "squash soup", ["blended", "creamy", "hot"], { with: ["blender"] });
-  r.put("pour", "squash soup", "serving bowl");
-  r.top("pour", ["heavy cream", "liquid", "in [carton]"], "squash soup", { plus: ["garnished"] });
-  return written(r, "squash soup");
+  return written(r.put("pour", "squash soup", "serving bowl"), "squash soup");
 }
 
 /** Beef and vegetable soup: beef browned, then simmered with root vegetables in broth. */
@@ -90,7 +90,7 @@ function blackBeanSoup(): WrittenRecipe {
   r.mix("simmer", "pot", "black bean soup", ["thick liquid", "cooked"], { with: ["wooden spoon"] });
   r.alter("mash", "black bean soup", { set: ["thick liquid", "cooked", "lumpy"], with: ["masher"] });
   ladle(r, "black bean soup");
-  r.top("scoop and pour", ["sour cream", "creamy", "in [container]"], "black bean soup", { with: ["spoon"] });
+  r.top("pick-and-place", ["sour cream", "creamy", "in [container]"], "black bean soup", { with: ["spoon"] });
   r.prep(["cilantro", "leaf"], "chop:chopped").top("sprinkle", "cilantro", "black bean soup", { plus: ["garnished"] });
   return written(r, "black bean soup");
 }
