@@ -30,10 +30,11 @@ function ladle(r: Recipe, soup: string, bowl = "serving bowl"): Recipe {
 /** Gazpacho: raw vegetables blended with oil and vinegar and served cold. */
 function gazpacho(): WrittenRecipe {
   const r = new Recipe("s112-gazpacho", "Gazpacho", "soup");
-  r.prep(["tomato", "whole"], "core:cored", "chop:chopped").put("pick-and-place", "tomato", "blender jar");
-  r.prep(["cucumber", "whole", "unpeeled"], "peel:peeled,whole:peeler", "chop:chopped").put("pick-and-place", "cucumber", "blender jar");
-  r.prep(["sweet pepper", "whole"], "cut:seeded", "chop:chopped").put("pick-and-place", "sweet pepper", "blender jar");
-  r.prep(["red onion", "whole", "unpeeled"], "peel:peeled,whole", "chop:chopped").put("pick-and-place", "red onion", "blender jar");
+  // cut in pieces, not chopped: the blender chops, and a plan borrowing a chopped vegetable gets no stray blender jar
+  r.prep(["tomato", "whole"], "core:cored", "cut:cut in pieces").put("pick-and-place", "tomato", "blender jar");
+  r.prep(["cucumber", "whole", "unpeeled"], "peel:peeled,whole:peeler", "cut:cut in pieces").put("pick-and-place", "cucumber", "blender jar");
+  r.prep(["sweet pepper", "whole"], "cut:seeded", "cut:cut in pieces").put("pick-and-place", "sweet pepper", "blender jar");
+  r.prep(["red onion", "whole", "unpeeled"], "peel:peeled,whole", "cut:cut in pieces").put("pick-and-place", "red onion", "blender jar");
   mincedGarlic(r).put("pick-and-place", "garlic", "blender jar");
   r.put("pour", OLIVE_OIL, "blender jar").put("pour", ["vinegar", "liquid", "in [bottle]"], "blender jar");
   r.putAll("sprinkle", [SALT, PEPPER], "blender jar");
