@@ -7,7 +7,8 @@ import cytoscape, { type Core, type StylesheetJson } from "cytoscape";
 import type { Plan } from "../../planner/types";
 import { el } from "../dom";
 import { explainSteps, type ExplainStep } from "../model/explain";
-import type { AppState, Store } from "../store";
+import type { StateSource } from "../draw-schedule";
+import type { AppState } from "../store";
 import { readColors, type GraphColors } from "../theme-colors";
 import { showGraph, stylesheet } from "./tree-view";
 
@@ -34,7 +35,7 @@ function rowList(step: ExplainStep): HTMLElement {
   return list;
 }
 
-export function mountExplainView(host: HTMLElement, store: Store): ExplainViewHandle {
+export function mountExplainView(host: HTMLElement, store: StateSource): ExplainViewHandle {
   const prev = el("button", { type: "button", text: "◀ Previous", "aria-label": "Previous step" });
   const play = el("button", { type: "button", text: "▶ Play", "aria-pressed": "false" });
   const next = el("button", { type: "button", text: "Next ▶", "aria-label": "Next step" });

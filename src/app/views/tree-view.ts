@@ -9,7 +9,8 @@ import { el } from "../dom";
 import { graphToSvg, type PlacedNode } from "../export/svg";
 import { layoutTree } from "../model/layout";
 import { planToGraph, selectNode, type Selection, type TreeGraph } from "../model/tree";
-import type { AppState, Store } from "../store";
+import type { StateSource } from "../draw-schedule";
+import type { AppState } from "../store";
 import { readColors, type GraphColors } from "../theme-colors";
 
 const OBJECT_SIZE = 26;
@@ -100,7 +101,7 @@ function updateNode(node: CollectionReturnValue, def: ElementDefinition): void {
   for (const mark of ["marked", "goal"]) if (node.hasClass(mark) !== classes.has(mark)) node.toggleClass(mark, classes.has(mark));
 }
 
-export function mountTreeView(host: HTMLElement, store: Store, actions: TreeViewActions): TreeViewHandle {
+export function mountTreeView(host: HTMLElement, store: StateSource, actions: TreeViewActions): TreeViewHandle {
   const canvas = el("div", { class: "cy", role: "img", "aria-label": "Task tree graph (the Steps list below is the same plan as text)" });
   const fit = el("button", { type: "button", text: "Fit" });
   const zoomIn = el("button", { type: "button", "aria-label": "Zoom in", title: "Zoom in", text: "+" });
