@@ -5,7 +5,7 @@
 // worker's round trip, the planner in it). Figures are printed, never asserted.
 
 import { existsSync, readFileSync } from "node:fs";
-import { join } from "node:path";
+import { join, resolve } from "node:path";
 import { gzipSync } from "node:zlib";
 import type { Browser, Page, Request } from "playwright-core";
 import { ROOT } from "../src/planner/node";
@@ -14,7 +14,8 @@ import { serveStatic } from "../tests/e2e/app-static-server";
 
 const ROUNDS = Number(process.env.BENCH_ROUNDS ?? 5);
 const PREFIX = "/bench/";
-const DIST = join(ROOT, "dist");
+/** The built page: dist/, or another build (BENCH_DIST, a path from the repository) to compare with. */
+const DIST = resolve(ROOT, process.env.BENCH_DIST ?? "dist");
 const QUERY = "dish=salad&i=chili+pepper~chopped&i=tomato~whole&i=cool+whip";
 
 /** What one visit measured, in ms after navigation start, and the files it fetched. */
