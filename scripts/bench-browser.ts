@@ -50,9 +50,14 @@ async function visit(page: Page, url: string): Promise<Visit> {
   return { phases, files: fetched };
 }
 
-/** One re-plan, in ms: request to views drawn, the drawing part of it (and each view's), the planner's own time in the worker. */
+/**
+ * One re-plan, in ms: request to views drawn, the drawing part of it (and each view's), the planner's own time
+ * in the worker, and request to the end of the next frame (the browser painted the DOM views, Cytoscape its
+ * canvas).
+ */
 interface Replan {
   shown: number;
+  painted: number;
   drawn: number;
   views: Record<string, number>;
   planner: number;
@@ -63,20 +68,40 @@ async function replans(page: Page, edits: number): Promise<Replan[]> {
   const state = page.locator(".ingredient-row .state").first();
   const times: Replan[] = [];
   for (let i = 0; i < edits; i++) {
-    await page.evaluate(() => performance.clearMeasures("foon:plan shown"));
+    await page.evaluate(() => {
+      performance.clearMeasures("foon:plan shown");
+      delete (globalThis as { benchPainted?: number }).benchPainted;
+    });
     await state.fill(i % 2 === 0 ? "diced" : "chopped");
     await page.waitForFunction(() => performance.getEntriesByName("foon:plan shown").length > 0);
     await page.locator(".plan-status[data-state='ready']").waitFor();
+    await page.waitForFunction(() => (globalThis as { benchPainted?: number }).benchPainted !== undefined);
     times.push(
       await page.evaluate(() => {
         const drawn = performance.getEntriesByName("foon:plan drawn")[0] as PerformanceMeasure | undefined;
         const detail = (drawn?.detail ?? {}) as { views?: Record<string, number>; planner?: number };
         const shown = performance.getEntriesByName("foon:plan shown")[0]?.duration ?? NaN;
-        return { shown, drawn: drawn?.duration ?? NaN, views: detail.views ?? {}, planner: detail.planner ?? NaN };
+        const painted = (globalThis as { benchPainted?: number }).benchPainted ?? NaN;
+        return { shown, painted, drawn: drawn?.duration ?? NaN, views: detail.views ?? {}, planner: detail.planner ?? NaN };
       }),
     );
   }
   return times;
+}
+
+/**
+ * Runs in the page before its scripts: when the page measures a plan shown, notes the time at the end of the
+ * next frame (a task queued from the next animation frame runs after that frame's paint).
+ */
+function notePaintAfterShown(): void {
+  const measure = performance.measure.bind(performance);
+  performance.measure = ((...args: Parameters<Performance["measure"]>) => {
+    const entry = measure(...args);
+    if (args[0] === "foon:plan shown") {
+      requestAnimationFrame(() => setTimeout(() => ((globalThis as { benchPainted?: number }).benchPainted = performance.now() - entry.startTime)));
+    }
+    return entry;
+  }) as Performance["measure"];
 }
 
 const median = (xs: number[]): number => {
@@ -115,6 +140,7 @@ function reportReplans(replans: Replan[]): void {
   const views = names.map((v) => `${v} ${ms((r) => r.views[v] ?? 0)}`).join(", ");
   console.log(
     `  re-plan after an edit (request to the views on screen drawn): median ${ms((r) => r.shown)}, max ${Math.max(...shown).toFixed(1)} ms over ${replans.length}; ` +
+      `to the end of the next frame (painted) ${ms((r) => r.painted)}; ` +
       `medians of its parts: drawing the views ${ms((r) => r.drawn)} (${views || "none"}), the worker's round trip ${ms((r) => r.shown - r.drawn)} (the planner in it ${ms((r) => r.planner)})`,
   );
 }
@@ -125,6 +151,7 @@ async function page(browser: Browser, url: string, edit: boolean): Promise<{ col
   let replan: Replan[] = [];
   for (let round = 0; round < ROUNDS; round++) {
     const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+    await context.addInitScript(notePaintAfterShown);
     const tab = await context.newPage();
     cold.push(await visit(tab, url));
     if (round === 0 && edit) replan = await replans(tab, 20);
