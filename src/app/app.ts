@@ -15,7 +15,6 @@ import { Store } from "./store";
 import type { DownloadFormat } from "./views/export-panel";
 
 export { ALL_VIEWS, type ViewName } from "./layout";
-export { DRAWN_MEASURE, FIRST_PLAN_MARK, SHOWN_MEASURE } from "./plan-controller";
 
 /** What the embedding page is told: each plan shown, each selection, each error. */
 export type AppEvents = PlanEvents;
