@@ -1,8 +1,9 @@
-// `npm run bench:browser`: the built page (dist/) in headless Chromium from a local static server, cold
-// (a fresh profile: nothing cached) and warm (the same profile again, its service worker in control), and
-// the widget page cold. Prints each load phase as the median over BENCH_ROUNDS visits (default 5), the
-// download in gzip bytes, and re-plans after an edit in the page (with their parts: drawing the views, the
-// worker's round trip, the planner in it). Figures are printed, never asserted.
+// `npm run bench:browser`: the built page (dist/, or BENCH_DIST) in headless Chromium from a local static
+// server, cold (a fresh profile: nothing cached) and warm (the same profile again, its service worker in
+// control), and the widget page the same way. Prints each load phase as the median over BENCH_ROUNDS visits
+// (default 5), the download in gzip bytes, and re-plans after an edit in the page: request to the views on
+// screen drawn, its parts (each view's drawing, the worker's round trip, the planner in it) and request to
+// the end of the next frame. Figures are printed, never asserted.
 
 import { existsSync, readFileSync } from "node:fs";
 import { join, resolve } from "node:path";
