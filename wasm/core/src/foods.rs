@@ -574,6 +574,9 @@ mod tests {
     fn an_ambiguous_name_is_read_by_its_state() {
         assert_eq!(reading("pepper", "diced"), Some("bell pepper"));
         assert_eq!(reading("pepper", "whole veg"), Some("bell pepper"));
+        assert_eq!(reading("pepper", "whole"), Some("bell pepper"));
+        assert_eq!(reading("pepper", "sauce"), Some("hot sauce"));
+        assert_eq!(reading("cheese", "creamy"), Some("cream cheese"));
         assert_eq!(reading("pepper", "ground"), Some("black pepper"));
         assert_eq!(reading("pepper", "flakes"), Some("red pepper flake"));
         assert_eq!(reading("garlic", "ground"), Some("garlic powder"));

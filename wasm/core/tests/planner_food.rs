@@ -1644,6 +1644,44 @@ S\tsliced
 }
 
 #[test]
+fn ginger_asked_chopped_is_chopped_where_foon_grates_it_not_cut_twice() {
+    // FOON grates the ginger into the pot and leaves "grated" out of the node it makes
+    let soup = "//
+O\tginger\t1
+S\tpeeled
+O\tpot\t0
+S\tcontains\t{broth}
+O\tgrater\t1
+M\tgrate\t<Assumed>
+O\tginger\t1
+S\tpeeled
+S\tin\t[pot]
+O\tpot\t0
+S\tcontains\t{broth,ginger}
+//
+O\tpot\t0
+S\tcontains\t{broth,ginger}
+O\tstove\t0
+S\ton
+M\tboil\t<Assumed>
+O\tginger soup\t1\t1
+S\tcooked
+S\tcontains\t{broth,ginger}
+S\tin\t[pot]
+//
+";
+    let ask = query("soup", &[("ginger", "chopped")]);
+    let p = plan_of(
+        &[("soup.txt", soup), ("other.txt", PREPARED)],
+        &ExactMatch,
+        &ask,
+    );
+    let motions = line_motions(&p, "ginger");
+    assert_eq!(motions.first(), Some(&"chop"), "{:#?}", p.progress_lines);
+    assert!(!motions.contains(&"grate"), "{motions:?}");
+}
+
+#[test]
 fn salt_in_a_pot_that_is_boiled_is_not_called_cooked_but_the_chicken_is() {
     let pot = CHICKEN_POT
         .replacen(
