@@ -44,15 +44,16 @@ export function download(name: string, content: string | Blob, type = "text/plai
 }
 
 /**
- * Tells `onChange` whether `element` is within half a screen of the viewport, each time that changes (once,
- * `true`, without IntersectionObserver); returns a function that stops watching.
+ * Tells `onChange` whether `element` is within `margin` of the viewport (default: half a screen above or
+ * below), each time that changes (once, `true`, without IntersectionObserver); returns a function that stops
+ * watching.
  */
-export function watchNearScreen(element: Element, onChange: (near: boolean) => void): () => void {
+export function watchNearScreen(element: Element, onChange: (near: boolean) => void, margin = "50% 0px"): () => void {
   if (typeof IntersectionObserver === "undefined") {
     onChange(true);
     return () => undefined;
   }
-  const observer = new IntersectionObserver((entries) => onChange(entries[entries.length - 1]!.isIntersecting), { rootMargin: "50% 0px" });
+  const observer = new IntersectionObserver((entries) => onChange(entries[entries.length - 1]!.isIntersecting), { rootMargin: margin });
   observer.observe(element);
   return () => observer.disconnect();
 }

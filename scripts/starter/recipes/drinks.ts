@@ -40,7 +40,7 @@ function greenSmoothie(): WrittenRecipe {
 
 function mangoLassi(): WrittenRecipe {
   const r = new Recipe("s70-mango_lassi", "Mango lassi", "drinks");
-  r.prep(["mango", "whole"], "peel:peeled,whole:peeler", "cut:seeded", "dice:diced");
+  r.prep(["mango", "whole"], "peel:peeled,whole:peeler", "cut:cut in pieces"); // cut off the stone; the blender does the rest
   r.put("pick-and-place", "mango", "blender jar").put("scoop and pour", [...YOGURT], "blender jar");
   r.put("pour", MILK, "blender jar").put("pour", SUGAR, "blender jar");
   r.put("sprinkle", ["cardamom", "ground", "in [jar]"], "blender jar").put("pick-and-place", [...ICE], "blender jar");

@@ -111,10 +111,10 @@ function chickenRamen(): WrittenRecipe {
   r.cookEach("boil", "saucepan", ["egg"], { set: ["whole", "boiled"] });
   r.put("pick-and-place", "egg", "bowl", { with: ["spoon"] }).drop("water");
   r.alter("peel", "egg", { set: ["peeled", "boiled"] }).alter("cut in half", "egg", { set: ["halved", "boiled"], with: ["knife"] });
-  r.put("pour", "broth", "serving bowl", { with: ["ladle"] });
-  r.put("pour", ["ramen noodle", "dried", "in [package]"], "serving bowl");
-  r.alter("soak", "ramen noodle", { set: ["soaked", "cooked"] });
-  r.mix("stir", "serving bowl", "ramen", ["liquid", "hot"], { with: ["chopstick"] });
+  // the noodles cook in the simmering broth, so what joins the ramen last is cooked too
+  r.put("pour", ["ramen noodle", "dried", "in [package]"], "pot");
+  r.mix("simmer", "pot", "ramen", ["liquid", "cooked"], { with: ["chopstick"] });
+  r.put("pour", "ramen", "serving bowl", { with: ["ladle"] });
   r.top("pick-and-place", "egg", "ramen", { with: ["spoon"] });
   r.prep(["green onion", "whole"], "slice:sliced").top("sprinkle", "green onion", "ramen", { plus: ["garnished"] });
   return written(r, "ramen");

@@ -166,9 +166,10 @@ function chickenCongee(): WrittenRecipe {
   r.prep(["ginger", "whole", "unpeeled"], "peel:peeled,whole:peeler", "slice:julienned").put("sprinkle", "ginger", "pot");
   r.prep(["chicken", "raw"], "slice:sliced").put("pick-and-place", "chicken", "pot", { with: ["tongs"] });
   r.put("sprinkle", SALT, "pot").heat("pot");
+  // seasoned in the pot, not poured on the bowl: what joins the congee last simmers with it
+  r.put("pour", [...SOY], "pot").put("pour", ["sesame oil", "liquid", "in [bottle]"], "pot");
   r.mix("simmer", "pot", "congee", ["thick liquid", "cooked"], { with: ["wooden spoon"] });
   r.put("pour", "congee", "serving bowl", { with: ["ladle"] });
-  r.top("pour", [...SOY], "congee").top("pour", ["sesame oil", "liquid", "in [bottle]"], "congee");
   r.prep(["green onion", "whole"], "slice:sliced").top("sprinkle", "green onion", "congee", { plus: ["garnished"] });
   return written(r, "congee");
 }

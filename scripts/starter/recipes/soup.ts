@@ -30,10 +30,11 @@ function ladle(r: Recipe, soup: string, bowl = "serving bowl"): Recipe {
 /** Gazpacho: raw vegetables blended with oil and vinegar and served cold. */
 function gazpacho(): WrittenRecipe {
   const r = new Recipe("s112-gazpacho", "Gazpacho", "soup");
-  r.prep(["tomato", "whole"], "core:cored", "chop:chopped").put("pick-and-place", "tomato", "blender jar");
-  r.prep(["cucumber", "whole", "unpeeled"], "peel:peeled,whole:peeler", "chop:chopped").put("pick-and-place", "cucumber", "blender jar");
-  r.prep(["sweet pepper", "whole"], "cut:seeded", "chop:chopped").put("pick-and-place", "sweet pepper", "blender jar");
-  r.prep(["red onion", "whole", "unpeeled"], "peel:peeled,whole", "chop:chopped").put("pick-and-place", "red onion", "blender jar");
+  // cut in pieces, not chopped: the blender chops, and a plan borrowing a chopped vegetable gets no stray blender jar
+  r.prep(["tomato", "whole"], "core:cored", "cut:cut in pieces").put("pick-and-place", "tomato", "blender jar");
+  r.prep(["cucumber", "whole", "unpeeled"], "peel:peeled,whole:peeler", "cut:cut in pieces").put("pick-and-place", "cucumber", "blender jar");
+  r.prep(["sweet pepper", "whole"], "cut:seeded", "cut:cut in pieces").put("pick-and-place", "sweet pepper", "blender jar");
+  r.prep(["red onion", "whole", "unpeeled"], "peel:peeled,whole", "cut:cut in pieces").put("pick-and-place", "red onion", "blender jar");
   mincedGarlic(r).put("pick-and-place", "garlic", "blender jar");
   r.put("pour", OLIVE_OIL, "blender jar").put("pour", ["vinegar", "liquid", "in [bottle]"], "blender jar");
   r.putAll("sprinkle", [SALT, PEPPER], "blender jar");
@@ -50,12 +51,12 @@ function butternutSquashSoup(): WrittenRecipe {
   sweat(r, "pot", ["onion"], BUTTER);
   r.put("pour", "butternut squash", "pot").put("pour", [...VEG_BROTH], "pot");
   r.putAll("sprinkle", [["nutmeg", "ground", "in [jar]"], SALT, PEPPER], "pot");
+  // the cream simmers in the pot: what joins the soup last is cooked with it, not stirred raw into the bowl
+  r.put("pour", ["heavy cream", "liquid", "in [carton]"], "pot");
   r.mix("simmer", "pot", "soup", ["liquid", "cooked"], { with: ["wooden spoon"] });
   r.put("pour", "soup", "blender jar", { with: ["ladle"] });
   r.mix("blend", "blender jar", "squash soup", ["blended", "creamy", "hot"], { with: ["blender"] });
-  r.put("pour", "squash soup", "serving bowl");
-  r.top("pour", ["heavy cream", "liquid", "in [carton]"], "squash soup", { plus: ["garnished"] });
-  return written(r, "squash soup");
+  return written(r.put("pour", "squash soup", "serving bowl"), "squash soup");
 }
 
 /** Beef and vegetable soup: beef browned, then simmered with root vegetables in broth. */
@@ -90,7 +91,7 @@ function blackBeanSoup(): WrittenRecipe {
   r.mix("simmer", "pot", "black bean soup", ["thick liquid", "cooked"], { with: ["wooden spoon"] });
   r.alter("mash", "black bean soup", { set: ["thick liquid", "cooked", "lumpy"], with: ["masher"] });
   ladle(r, "black bean soup");
-  r.top("scoop and pour", ["sour cream", "creamy", "in [container]"], "black bean soup", { with: ["spoon"] });
+  r.top("pick-and-place", ["sour cream", "creamy", "in [container]"], "black bean soup", { with: ["spoon"] });
   r.prep(["cilantro", "leaf"], "chop:chopped").top("sprinkle", "cilantro", "black bean soup", { plus: ["garnished"] });
   return written(r, "black bean soup");
 }

@@ -7,9 +7,10 @@ import cytoscape, { type Core, type StylesheetJson } from "cytoscape";
 import type { Plan } from "../../planner/types";
 import { el } from "../dom";
 import { explainSteps, type ExplainStep } from "../model/explain";
-import type { AppState, Store } from "../store";
+import type { StateSource } from "../draw-schedule";
+import type { AppState } from "../store";
 import { readColors, type GraphColors } from "../theme-colors";
-import { replaceGraph, stylesheet } from "./tree-view";
+import { showGraph, stylesheet } from "./tree-view";
 
 /** The paper (its sections are named in each step's link). */
 const PAPER_URL = "https://scholar.google.com/scholar?q=%22Approximate+Task+Tree+Retrieval+in+a+Knowledge+Network+for+Robotic+Cooking%22";
@@ -34,7 +35,7 @@ function rowList(step: ExplainStep): HTMLElement {
   return list;
 }
 
-export function mountExplainView(host: HTMLElement, store: Store): ExplainViewHandle {
+export function mountExplainView(host: HTMLElement, store: StateSource): ExplainViewHandle {
   const prev = el("button", { type: "button", text: "◀ Previous", "aria-label": "Previous step" });
   const play = el("button", { type: "button", text: "▶ Play", "aria-pressed": "false" });
   const next = el("button", { type: "button", text: "Next ▶", "aria-label": "Next step" });
@@ -80,8 +81,9 @@ export function mountExplainView(host: HTMLElement, store: Store): ExplainViewHa
     counter.textContent = `Step ${at + 1} of ${steps.length}`;
     caption.textContent = step.caption;
     section.textContent = step.section;
-    replaceGraph(cy, step.graph);
+    showGraph(cy, step.graph);
     cy.batch(() => {
+      cy.elements().removeClass("frontier focus"); // kept elements still carry the previous step's
       for (const id of step.frontier) cy.getElementById(id).addClass("frontier");
       for (const id of step.focus) cy.getElementById(id).addClass("focus");
     });

@@ -3,7 +3,8 @@
 
 import type { ExportFormat } from "../../planner/types";
 import { el } from "../dom";
-import type { AppState, Store } from "../store";
+import type { StateSource } from "../draw-schedule";
+import type { AppState } from "../store";
 
 export type DownloadFormat = ExportFormat | "png" | "svg";
 
@@ -20,7 +21,7 @@ const BUTTONS: { format: DownloadFormat; text: string }[] = [
   { format: "svg", text: "Graph SVG" },
 ];
 
-export function mountExportPanel(host: HTMLElement, store: Store, actions: ExportActions): () => void {
+export function mountExportPanel(host: HTMLElement, store: StateSource, actions: ExportActions): () => void {
   const buttons = BUTTONS.map(({ format, text }) => {
     const b = el("button", { type: "button", "data-format": format, text });
     b.addEventListener("click", () => actions.exportAs(format));

@@ -4,7 +4,8 @@
 
 import type { Stats } from "../../planner/types";
 import { el, plural, uid } from "../dom";
-import type { AppState, Store } from "../store";
+import type { StateSource } from "../draw-schedule";
+import type { AppState } from "../store";
 
 export interface KnowledgeBaseActions {
   loadFiles(files: File[]): void;
@@ -25,7 +26,7 @@ function statsRows(stats: Stats): [string, string][] {
   ];
 }
 
-export function mountKnowledgeBasePanel(host: HTMLElement, store: Store, actions: KnowledgeBaseActions, dropTarget: HTMLElement): () => void {
+export function mountKnowledgeBasePanel(host: HTMLElement, store: StateSource, actions: KnowledgeBaseActions, dropTarget: HTMLElement): () => void {
   const inputId = uid("kb-files");
   const status = el("p", { class: "kb-status", role: "status" });
   const error = el("p", { class: "kb-error", role: "alert" });

@@ -7,7 +7,8 @@ import type { Plan } from "../../planner/types";
 import { el } from "../dom";
 import { describeUnit, selectProgressMotion, type Selection } from "../model/tree";
 import { columnCount, progressRows, type ProgressCell, type ProgressRow } from "../model/progress";
-import type { AppState, Store } from "../store";
+import type { StateSource } from "../draw-schedule";
+import type { AppState } from "../store";
 
 const NAME_WIDTH = 130;
 const COLUMN = 112;
@@ -18,7 +19,7 @@ export interface ProgressViewActions {
   select(selection: Selection): void;
 }
 
-export function mountProgressView(host: HTMLElement, store: Store, actions: ProgressViewActions): () => void {
+export function mountProgressView(host: HTMLElement, store: StateSource, actions: ProgressViewActions): () => void {
   const frame = el("div", { class: "progress-frame" });
   const detail = el("p", { class: "muted small progress-detail", "aria-live": "polite" });
   host.replaceChildren(el("h2", { text: "Progress lines" }), frame, detail);

@@ -3,9 +3,10 @@
 
 import type { Plan } from "../../planner/types";
 import { el, plural } from "../dom";
-import type { AppState, Store } from "../store";
+import type { StateSource } from "../draw-schedule";
+import type { AppState } from "../store";
 
-export function mountReferenceView(host: HTMLElement, store: Store): () => void {
+export function mountReferenceView(host: HTMLElement, store: StateSource): () => void {
   const body = el("div", { class: "reference-body" });
   host.replaceChildren(el("h2", { text: "Reference recipe" }), body);
 

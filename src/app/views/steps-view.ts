@@ -4,7 +4,8 @@
 import type { Plan } from "../../planner/types";
 import { el, uid } from "../dom";
 import { selectUnit, type Selection } from "../model/tree";
-import type { AppState, Store } from "../store";
+import type { StateSource } from "../draw-schedule";
+import type { AppState } from "../store";
 
 export interface StepsViewActions {
   select(selection: Selection): void;
@@ -27,7 +28,7 @@ function robotFigures(plan: Plan, i: number): HTMLElement | null {
   return el("span", { class: `robot-figures ${unit.by}`, "data-by": unit.by, text: ` [${who}: cost ${unit.cost}, ${percent(unit.success_rate)}]` });
 }
 
-export function mountStepsView(host: HTMLElement, store: Store, actions: StepsViewActions): () => void {
+export function mountStepsView(host: HTMLElement, store: StateSource, actions: StepsViewActions): () => void {
   const titleId = uid("steps-title");
   const list = el("ol", { class: "steps", role: "listbox", "aria-labelledby": titleId });
   const cautions = el("div", { class: "cautions", role: "note", hidden: true });

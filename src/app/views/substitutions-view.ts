@@ -5,7 +5,8 @@
 import type { IngredientOutcome, Plan } from "../../planner/types";
 import { el, uid } from "../dom";
 import { caseText, similarityText, substituteChoices } from "../model/substitutions";
-import type { AppState, Store } from "../store";
+import type { StateSource } from "../draw-schedule";
+import type { AppState } from "../store";
 
 export interface SubstitutionsActions {
   /** `label` null: let the planner choose again. */
@@ -46,7 +47,7 @@ function row(outcome: IngredientOutcome, actions: SubstitutionsActions): HTMLTab
   return tr;
 }
 
-export function mountSubstitutionsView(host: HTMLElement, store: Store, actions: SubstitutionsActions): () => void {
+export function mountSubstitutionsView(host: HTMLElement, store: StateSource, actions: SubstitutionsActions): () => void {
   const body = el("tbody");
   const table = el(
     "table",

@@ -3,13 +3,14 @@
 // modification added, renamed or grafted are outlined and dashed. Selecting a node selects its
 // functional unit and ingredient.
 
-import cytoscape, { type Core, type ElementDefinition, type StylesheetJson } from "cytoscape";
+import cytoscape, { type CollectionReturnValue, type Core, type ElementDefinition, type StylesheetJson } from "cytoscape";
 import type { Plan } from "../../planner/types";
 import { el } from "../dom";
 import { graphToSvg, type PlacedNode } from "../export/svg";
 import { layoutTree } from "../model/layout";
 import { planToGraph, selectNode, type Selection, type TreeGraph } from "../model/tree";
-import type { AppState, Store } from "../store";
+import type { StateSource } from "../draw-schedule";
+import type { AppState } from "../store";
 import { readColors, type GraphColors } from "../theme-colors";
 
 const OBJECT_SIZE = 26;
@@ -71,15 +72,36 @@ export function stylesheet(c: GraphColors): StylesheetJson {
   ];
 }
 
-/** Shows a graph in place of the one drawn: one batch, so Cytoscape restyles and redraws once. */
-export function replaceGraph(cy: Core, graph: TreeGraph): void {
+/**
+ * Shows a graph in place of the one drawn, in one batch. Elements the two graphs share stay (a re-plan
+ * usually changes a few nodes): only what is added or changed is restyled and has its label measured again,
+ * which is most of what Cytoscape does with a new element.
+ */
+export function showGraph(cy: Core, graph: TreeGraph): void {
+  const next = elements(graph);
+  const wanted = new Set(next.map((e) => e.data.id));
   cy.batch(() => {
-    cy.elements().remove();
-    cy.add(elements(graph));
+    cy.elements().filter((e) => !wanted.has(e.id())).remove();
+    const added: ElementDefinition[] = [];
+    for (const def of next) {
+      const drawn = cy.getElementById(def.data.id!);
+      if (drawn.empty()) added.push(def);
+      else if (def.group === "nodes") updateNode(drawn, def);
+    }
+    cy.add(added);
   });
 }
 
-export function mountTreeView(host: HTMLElement, store: Store, actions: TreeViewActions): TreeViewHandle {
+/** A node kept from the graph drawn before: its place, and its data and marks where they changed. */
+function updateNode(node: CollectionReturnValue, def: ElementDefinition): void {
+  const { x, y } = def.position!;
+  if (node.position("x") !== x || node.position("y") !== y) node.position({ x, y });
+  for (const [key, value] of Object.entries(def.data)) if (node.data(key) !== value) node.data(key, value);
+  const classes = new Set((def.classes as string).split(" "));
+  for (const mark of ["marked", "goal"]) if (node.hasClass(mark) !== classes.has(mark)) node.toggleClass(mark, classes.has(mark));
+}
+
+export function mountTreeView(host: HTMLElement, store: StateSource, actions: TreeViewActions): TreeViewHandle {
   const canvas = el("div", { class: "cy", role: "img", "aria-label": "Task tree graph (the Steps list below is the same plan as text)" });
   const fit = el("button", { type: "button", text: "Fit" });
   const zoomIn = el("button", { type: "button", "aria-label": "Zoom in", title: "Zoom in", text: "+" });
@@ -128,7 +150,7 @@ export function mountTreeView(host: HTMLElement, store: Store, actions: TreeView
   function renderPlan(next: Plan | null): void {
     plan = next;
     graph = next === null ? { nodes: [], edges: [] } : planToGraph(next);
-    replaceGraph(cy, graph);
+    showGraph(cy, graph);
     fitTree();
     canvas.dataset.nodes = String(graph.nodes.length);
     canvas.dataset.edges = String(graph.edges.length);

@@ -1568,6 +1568,120 @@ S\tsliced
 }
 
 #[test]
+fn onion_joins_a_soup_before_it_is_boiled_not_as_it_is_served() {
+    // parsley is scattered over the soup as it is served: a unit that adds a food, closer to the dish
+    let soup = CHICKEN_POT.replace(
+        "O\tbowl\t0\nS\tempty\nM\tpour",
+        "O\tbowl\t0\nS\tempty\nO\tparsley\t1\nS\tchopped\nM\tpour",
+    );
+    assert_ne!(soup, CHICKEN_POT);
+    let ask = query(
+        "soup",
+        &[
+            ("chicken breast", "sliced"),
+            ("parsley", "chopped"),
+            ("onion", "chopped"),
+        ],
+    );
+    let p = plan_of(
+        &[("soup.txt", &soup), ("other.txt", PREPARED)],
+        &ExactMatch,
+        &ask,
+    );
+    assert!(
+        line_motions(&p, "onion").contains(&"boil"),
+        "{:#?}",
+        p.progress_lines
+    );
+}
+
+#[test]
+fn a_new_ingredient_does_not_join_where_pepper_is_ground() {
+    let salad = "//
+O\tlettuce\t1
+S\tchopped
+O\tsalad bowl\t0
+S\tempty
+M\ttoss\t<Assumed>
+O\tsalad bowl\t0
+S\tcontains\t{lettuce}
+//
+O\tsalad bowl\t0
+S\tcontains\t{lettuce}
+O\tblack pepper\t1
+S\tpeppercorn
+M\tgrind\t<Assumed>
+O\tsalad bowl\t0
+S\tcontains\t{lettuce,black pepper}
+//
+O\tsalad bowl\t0
+S\tcontains\t{lettuce,black pepper}
+M\tmix\t<Assumed>
+O\tgreen salad\t1\t15
+S\tmixed
+S\tcontains\t{lettuce,black pepper}
+//
+O\tcucumber\t1
+S\twhole
+O\tknife\t1
+M\tslice\t<Assumed>
+O\tcucumber\t1
+S\tsliced
+//
+";
+    let ask = query(
+        "salad",
+        &[
+            ("lettuce", "chopped"),
+            ("black pepper", "ground"),
+            ("cucumber", "sliced"),
+        ],
+    );
+    let p = plan_of(&[("salad.txt", salad)], &ExactMatch, &ask);
+    let motions = line_motions(&p, "cucumber");
+    assert!(!motions.contains(&"grind"), "{motions:?}");
+    assert!(motions.contains(&"toss"), "{:#?}", p.progress_lines);
+}
+
+#[test]
+fn ginger_asked_chopped_is_chopped_where_foon_grates_it_not_cut_twice() {
+    // FOON grates the ginger into the pot and leaves "grated" out of the node it makes
+    let soup = "//
+O\tginger\t1
+S\tpeeled
+O\tpot\t0
+S\tcontains\t{broth}
+O\tgrater\t1
+M\tgrate\t<Assumed>
+O\tginger\t1
+S\tpeeled
+S\tin\t[pot]
+O\tpot\t0
+S\tcontains\t{broth,ginger}
+//
+O\tpot\t0
+S\tcontains\t{broth,ginger}
+O\tstove\t0
+S\ton
+M\tboil\t<Assumed>
+O\tginger soup\t1\t1
+S\tcooked
+S\tcontains\t{broth,ginger}
+S\tin\t[pot]
+//
+";
+    let ask = query("soup", &[("ginger", "chopped")]);
+    let p = plan_of(
+        &[("soup.txt", soup), ("other.txt", PREPARED)],
+        &ExactMatch,
+        &ask,
+    );
+    let motions = line_motions(&p, "ginger");
+    assert_eq!(motions.first(), Some(&"chop"), "{:#?}", p.progress_lines);
+    assert!(!motions.contains(&"grate"), "{motions:?}");
+}
+
+#[test]
 fn salt_in_a_pot_that_is_boiled_is_not_called_cooked_but_the_chicken_is() {
     let pot = CHICKEN_POT
         .replacen(

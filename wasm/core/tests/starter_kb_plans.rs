@@ -18,7 +18,7 @@ fn most_cautions(kind: CautionKind) -> usize {
     match kind {
         CautionKind::MotionOnForm => 4,
         CautionKind::Uncooked => 0,
-        CautionKind::ShortOfDish => 11,
+        CautionKind::ShortOfDish => 8,
         CautionKind::LeftWhole => 3,
     }
 }

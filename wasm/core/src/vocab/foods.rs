@@ -132,6 +132,8 @@ struct Care {
     /// Cooked only with water (boiled, simmered, steamed, baked covered): rice is not cooked by
     /// stir-frying it raw.
     wet: bool,
+    /// Joins a dish that is cooked before the cooking (stock, a bay leaf, onion).
+    heat: bool,
     /// What a cook takes off it before it is used or cut (an onion's skin, a cherry's stone).
     trims: Vec<&'static Trim>,
 }
@@ -154,6 +156,7 @@ fn cares() -> &'static HashMap<String, Care> {
                 let care = Care {
                     first: flags.iter().any(|f| f == "first"),
                     wet: flags.iter().any(|f| f == "wet"),
+                    heat: flags.iter().any(|f| f == "heat"),
                     trims: TRIMS
                         .iter()
                         .filter(|t| flags.iter().any(|f| f == t.flag))
@@ -203,6 +206,12 @@ pub fn shows_cooking(food: &str) -> bool {
 /// Whether `food` must be cooked before it is eaten (raw chicken, dry pasta, flour).
 pub fn must_cook(food: &str) -> bool {
     cooking(food) != Cooking::No
+}
+
+/// Whether `food` joins a dish that is cooked before the cooking, not after it (stock, wine, a bay leaf,
+/// onion, carrot): it gives its taste or softens in the heat.
+pub fn joins_before_heat(food: &str) -> bool {
+    care_of(food).is_some_and(|c| c.heat)
 }
 
 /// The state a cook brings `food` to when a query names only its category ("whole veg" onion: chopped).
@@ -519,7 +528,7 @@ mod tests {
                 .flatten()
             {
                 assert!(
-                    matches!(flag.as_str(), "first" | "wet")
+                    matches!(flag.as_str(), "first" | "wet" | "heat")
                         || TRIMS.iter().any(|t| t.flag == flag),
                     "food_care.tsv: flag '{flag}' in {line}"
                 );
@@ -565,6 +574,9 @@ mod tests {
     fn an_ambiguous_name_is_read_by_its_state() {
         assert_eq!(reading("pepper", "diced"), Some("bell pepper"));
         assert_eq!(reading("pepper", "whole veg"), Some("bell pepper"));
+        assert_eq!(reading("pepper", "whole"), Some("bell pepper"));
+        assert_eq!(reading("pepper", "sauce"), Some("hot sauce"));
+        assert_eq!(reading("cheese", "creamy"), Some("cream cheese"));
         assert_eq!(reading("pepper", "ground"), Some("black pepper"));
         assert_eq!(reading("pepper", "flakes"), Some("red pepper flake"));
         assert_eq!(reading("garlic", "ground"), Some("garlic powder"));

@@ -13,6 +13,9 @@ pub(super) const SINGLE_ITEM_WORDS: &[&str] = &[
     "peel",
     "crack",
     "grate",
+    "grind",
+    "mash",
+    "crush",
     "julienne",
     "core",
     "squeeze",
@@ -139,8 +142,9 @@ pub(super) fn attach_point(
     c: Category,
 ) -> Option<TUnitId> {
     let goal_label = tree.slots[tree.goal].node.label.as_str();
-    let raw_unsafe = foods::must_cook(o);
     let food = known_as(ctx, o, o);
+    // joins where the dish is cooked after it: it must be cooked, or it gives its taste in the heat
+    let wants_heat = foods::must_cook(o) || foods::joins_before_heat(food);
     // closest to the goal first: a unit further from it must do strictly better, so its kin
     // ingredients are worked out only when they could make it
     let mut best: Option<(TUnitId, AttachKey)> = None;
@@ -162,7 +166,7 @@ pub(super) fn attach_point(
             i.1 && !x.utensil && x.node.label != goal_label
         });
         let fits = foods::joins_by(o, &unit.motion);
-        let safe = !raw_unsafe || cooks_what_joins(tree, cooked, u, food);
+        let safe = !wants_heat || cooks_what_joins(tree, cooked, u, food);
         let beats = |kin: bool, pref: usize| {
             let key = (reaches, fits, safe, adds, kin, usize::MAX - pref);
             best.as_ref().is_none_or(|(_, b)| key > *b).then_some(key)

@@ -316,7 +316,17 @@ pub(super) fn cut_in(tree: &Tree, u: TUnitId, o: &str) -> Option<(SlotId, Vec<St
             .filter(|st| !before.contains(st) && SEPARATION.contains(&category(st)))
             .map(str::to_string)
             .collect();
-        (!g.is_empty()).then_some((x, g))
+        // FOON may leave the state out ("ginger in pot" once grated): the motion says the food is cut
+        let in_pieces = |st: &str| {
+            matches!(
+                category(st),
+                Category::Cut | Category::FinelyCut | Category::Ground
+            )
+        };
+        let cut_unsaid = g.is_empty()
+            && !food_states(out).into_iter().any(in_pieces)
+            && foods::leaves_in(&unit.motion).is_some_and(in_pieces);
+        (!g.is_empty() || cut_unsaid).then_some((x, g))
     })
 }
 

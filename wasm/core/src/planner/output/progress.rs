@@ -305,6 +305,14 @@ pub(super) fn walk<'t>(
                 at = v;
                 continue;
             }
+            // FOON takes the vessel up again as another node of it (the pot the garlic was fried in, later
+            // the rice's): the later node listing the food goes on
+            if let Some(v) = vessel_again(tree, uses, at, label, from).filter(|v| !seen.contains(v))
+            {
+                seen.push(v);
+                at = v;
+                continue;
+            }
             // its last node sits in a vessel: what the vessel's contents become (the vessel the unit
             // that last moved it, or made it, put it in, though FOON's vessel may not list it)
             let touched = last_step.or_else(|| {
@@ -577,6 +585,28 @@ pub(super) fn vessel_holding(tree: &Tree, uses: &Uses, at: SlotId, label: &str) 
             slot.utensil
                 && slot.node.label == container
                 && uses.first_use[x] != usize::MAX
+                && slot.node.contents().any(|i| i == label)
+        })
+        .min_by_key(|&x| uses.first_use[x])
+}
+
+/// A later node of vessel `at` (first used at or after position `from`) that lists `label` among its
+/// contents, when `at` is a vessel holding it.
+fn vessel_again(tree: &Tree, uses: &Uses, at: SlotId, label: &str, from: usize) -> Option<SlotId> {
+    let vessel = &tree.slots[at];
+    if !vessel.utensil || !vessel.node.contents().any(|i| i == label) {
+        return None;
+    }
+    uses.live
+        .iter()
+        .map(|&(x, _)| x)
+        .filter(|&x| {
+            let slot = &tree.slots[x];
+            x != at
+                && slot.utensil
+                && slot.node.label == vessel.node.label
+                && uses.first_use[x] != usize::MAX
+                && uses.first_use[x] >= from
                 && slot.node.contents().any(|i| i == label)
         })
         .min_by_key(|&x| uses.first_use[x])
