@@ -71,6 +71,8 @@ fn every_dev_plan_reads_back_whole() {
     assert_eq!(plans.len(), 640);
     for (path, p) in &plans {
         assert_eq!(direct(p), full(p), "{path}");
+        let serde: Value = serde_json::from_str(&serde_json::to_string(p).unwrap()).unwrap();
+        assert_eq!(serde, full(p), "{path}: serde writes every node in full");
         assert_eq!(&read_back(p), p, "{path}");
     }
 }

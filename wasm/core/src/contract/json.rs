@@ -1,17 +1,27 @@
 //! The plan as JSON (`docs/plan-format.md`), on `plan.rs`'s serde derives, the one definition of the
-//! format. Only the units are written by hand: a node several units share (what one unit makes and the
-//! next uses, a bowl: about 40 % of a plan's nodes) is written in full once and then by its number, the
-//! count of nodes written in full before it, so the app parses a sixth less text; its reader
-//! (`src/planner/index.ts`) and `deserialize` here put the nodes back.
+//! format. Serde writes every node in full (the JSON export, the CLI). `write_plan_json`, the app's way
+//! through the WASM module, writes a node several units share (what one unit makes and the next uses, a
+//! bowl: about 40 % of a plan's nodes) in full once and then by its number, the count of nodes written in
+//! full before it, so the app parses a sixth less text; its reader (`src/planner/index.ts`) and
+//! `deserialize` here put the nodes back.
 
 use crate::contract::plan::{Origin, Plan, PlanNode, PlanUnit};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use smol_str::SmolStr;
+use std::cell::Cell;
 use std::sync::Arc;
 
-/// Writes `plan` as compact JSON at the end of `out`.
+thread_local! {
+    /// Set while `write_plan_json` writes: `Plan::units` then writes shared nodes by number.
+    static SHARED_NODES: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Writes `plan` as compact JSON at the end of `out`, shared nodes by number.
 pub fn write_plan_json(plan: &Plan, out: &mut Vec<u8>) {
-    serde_json::to_writer(out, plan).expect("a plan has only string keys: it always writes");
+    SHARED_NODES.set(true);
+    let written = serde_json::to_writer(out, plan);
+    SHARED_NODES.set(false);
+    written.expect("a plan has only string keys: it always writes");
 }
 
 /// How many of the last nodes written in full are looked through for the one at hand: a node is mostly
@@ -36,11 +46,14 @@ enum Shared<N> {
     Full(N),
 }
 
-/// `Plan::units` as JSON, shared nodes by number.
+/// `Plan::units` as JSON: every node in full, or shared nodes by number within `write_plan_json`.
 pub(crate) fn serialize<S: Serializer>(
     units: &[PlanUnit],
     serializer: S,
 ) -> Result<S::Ok, S::Error> {
+    if !SHARED_NODES.get() {
+        return units.serialize(serializer);
+    }
     let mut written = Vec::new();
     let mut shared = |node| shared(&mut written, node);
     let units: Vec<Unit<&PlanNode, &SmolStr, &Arc<[String]>>> = units
@@ -80,7 +93,8 @@ fn shared<'a>(
     }
 }
 
-/// `Plan::units` read back: each number becomes the node it stands for, shared as it was.
+/// `Plan::units` read back from either form: each number becomes the node it stands for, shared as
+/// it was.
 pub(crate) fn deserialize<'de, D: Deserializer<'de>>(
     deserializer: D,
 ) -> Result<Vec<PlanUnit>, D::Error> {

@@ -299,8 +299,8 @@ pub struct Plan {
     /// `false` for the reference task tree as retrieved.
     pub modified: bool,
     pub goal: GoalInfo,
-    /// In a valid execution order: every produced input is made by an earlier unit. Written with
-    /// shared nodes by number (`plan_json`).
+    /// In a valid execution order: every produced input is made by an earlier unit. The app's JSON has
+    /// shared nodes by number (`contract::json`).
     #[serde(with = "crate::contract::json")]
     pub units: Vec<PlanUnit>,
     /// One per query ingredient (after duplicates were removed), in query order.
