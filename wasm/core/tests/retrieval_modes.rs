@@ -188,36 +188,53 @@ fn a_made_node_two_units_share_counts_once() {
     );
 }
 
-/// A salad of 18 cucumber parts, each poured or stirred from the same slices: 2^18 trees of 20 units
-/// each, more than the exact search's budget tries.
-fn many_parts(motion: &str) -> String {
-    let parts = 18;
-    let mut text = String::from(
-        "//\nO\tcucumber\t1\nS\twhole\nM\tslice\t<Assumed>\nO\tcucumber\t1\nS\tsliced\n",
-    );
-    for i in 0..parts {
-        text += &format!("//\nO\tcucumber\t1\nS\tsliced\nM\t{motion}\t<Assumed>\nO\tcucumber\t1\nS\tin\t[bowl {i}]\n");
+/// A salad of 18 cucumber parts, each poured from shared slices (cost 1) or stirred (free) from a part
+/// shaken (free) from a part peeled (10): the search's bound sees only the free units below a stirred part
+/// until every part is decided, so it meets all 2^18 ways of deciding them, more than its budget.
+fn many_parts() -> [(&'static str, String); 2] {
+    let unit = |input: &str, motion: &str, output: &str| {
+        format!(
+            "//\nO\tcucumber\t1\nS\t{input}\nM\t{motion}\t<Assumed>\nO\tcucumber\t1\nS\t{output}\n"
+        )
+    };
+    let parts = 0..18;
+    let mix: String = parts
+        .clone()
+        .map(|i| format!("O\tcucumber\t1\nS\tin\t[bowl {i}]\n"))
+        .collect();
+    let mix = format!("//\n{mix}M\tmix\t<Assumed>\nO\tcucumber salad\t1\t15\nS\tmixed\n//\n");
+    let mut poured = unit("whole", "slice", "sliced");
+    let mut stirred = String::new();
+    for i in parts {
+        poured += &unit("sliced", "pour", &format!("in\t[bowl {i}]"));
+        stirred += &unit("whole", "peel", &format!("in\t[jar {i}]"));
+        stirred += &unit(
+            &format!("in\t[jar {i}]"),
+            "shake",
+            &format!("in\t[cup {i}]"),
+        );
+        stirred += &unit(
+            &format!("in\t[cup {i}]"),
+            "stir",
+            &format!("in\t[bowl {i}]"),
+        );
     }
-    text += "//\n";
-    for i in 0..parts {
-        text += &format!("O\tcucumber\t1\nS\tin\t[bowl {i}]\n");
-    }
-    text + "M\tmix\t<Assumed>\nO\tcucumber salad\t1\t15\nS\tmixed\n//\n"
+    [("a.txt", poured + &mix), ("b.txt", stirred + &mix)]
 }
 
 #[test]
 fn when_the_search_budget_runs_out_the_best_tree_found_is_kept_and_said() {
-    let (poured, stirred) = (many_parts("pour"), many_parts("stir"));
-    let files = [("a.txt", poured.as_str()), ("b.txt", stirred.as_str())];
-    let p = plan_of(&files, &ExactMatch, &request("fewest_units", ""));
+    let files = many_parts();
+    let files: Vec<(&str, &str)> = files.iter().map(|(n, t)| (*n, t.as_str())).collect();
+    let request = r#"{"query": {"type": "salad", "ingredients": [{"object": "cucumber", "state": "whole"}]},
+        "modify": false, "robot": {"mode": "lowest_cost", "motion_costs": {"slice": 1, "pour": 1,
+        "mix": 1, "stir": 0, "shake": 0, "peel": 10}}}"#;
+    let p = plan_of(&files, &ExactMatch, request);
+    // the lightest derivation's tree: slice, 18 pours, mix
     assert_eq!(p.units.len(), 20);
-    assert!(
-        p.notes
-            .iter()
-            .any(|n| n.contains("fewest_units") && n.contains("may not be the best")),
-        "{:?}",
-        p.notes
-    );
+    assert_eq!(p.robot.expect("a robot view").cost, 20.0);
+    let note = "lowest_cost: the search for the best tree stopped";
+    assert!(p.notes.iter().any(|n| n.contains(note)), "{:?}", p.notes);
 }
 
 /// On FOON-111, each mode's reference task tree is no worse by its measure than the heuristic's.

@@ -3,11 +3,12 @@
 //!
 //! Each is exact over the search space of Algorithm 2 (the units making the node, then the units making
 //! their inputs, down to the kitchen or a starting item of the recipe that needs it): every unit has a
-//! weight (1; its motion's cost; −ln of its success rate), a tree's value is the sum over its units, and
-//! Knuth's lightest-derivation algorithm (Dijkstra's, over the AND/OR graph) finds the least. A node the
-//! tree makes is made once; the value counts it once for each unit that takes it, which is the tree's own
-//! sum whenever no made node feeds two units (as in the recipes of FOON-111). Ties go to fewer units,
-//! then to the smaller unit id.
+//! weight (1; its motion's cost; −ln of its success rate) and a tree's value is the sum over its distinct
+//! units. Knuth's lightest-derivation algorithm (Dijkstra's, over the AND/OR graph) finds the least sum
+//! counting a made node once for each unit taking it; that is the tree's own value, and its tree the
+//! best, when no tree of the space can hold a unit twice over (no made node feeds two units of the space,
+//! no unit makes two of its nodes). Otherwise `exact` searches from that tree for a better one, within a
+//! budget. Ties go to fewer units, then to the smaller unit id (the lightest derivation's tree first).
 
 mod exact;
 
@@ -348,6 +349,14 @@ fn best_tree(
     (found.tree, found.exact)
 }
 
+/// A retrieved tree's value by a mode's measure: its units' summed weights, then their number.
+fn measure(r: &Retrieved, weight: &dyn Fn(UnitId) -> f64) -> Value {
+    Value {
+        weight: r.units.iter().map(|&u| weight(u)).sum(),
+        units: r.units.len() as u32,
+    }
+}
+
 /// The reference task tree in `mode`, or `None` for the heuristic's tree: in the heuristic mode, when
 /// every way of making `root` runs into a cycle, and when the heuristic's tree is better by the mode's own
 /// measure (only possible when the exact search ran out of budget; `notes` says so).
@@ -383,38 +392,36 @@ pub(crate) fn retrieve_in_mode(
         return None;
     };
     let (tree, exact) = best_tree(kb, &lightest, root, &weight);
-    let why = if exact {
-        why.to_string()
-    } else {
+    if !exact {
         notes.push(format!(
             "retrieval mode {why}: the search for the best tree stopped after {} choices; \
              the best tree found is kept and may not be the best",
             exact::BUDGET
         ));
-        format!("{why} (best found: search budget ran out)")
-    };
+    }
     let retrieved = Retrieved {
         units: execution_order(&lightest.space, &tree.chosen, root),
         chosen: tree.chosen,
         blocked: Vec::new(),
     };
     let heuristic = retrieve(kb, index, scorer, root, prefer);
-    let measure = |r: &Retrieved| Value {
-        weight: r.units.iter().map(|&u| weight(u)).sum(),
-        units: r.units.len() as u32,
-    };
-    if exact::better(measure(&heuristic), measure(&retrieved)) {
+    if exact::better(measure(&heuristic, &weight), measure(&retrieved, &weight)) {
         notes.push(format!(
             "retrieval mode {why}: the paper's heuristic finds a better tree by this mode's measure \
-             here, and it is kept"
+             here (it takes a node two of its units need from the kitchen, as a starting item of the \
+             first one's recipe, or the search ran out of budget), and it is kept"
         ));
         return None;
     }
+    let trace_why = match exact {
+        true => why.to_string(),
+        false => format!("{why} (the best tree found: the search budget ran out)"),
+    };
     trace.record(|t| {
         let value = |u: UnitId| unit_value(&lightest.space, &lightest.best, &weight, u);
         for &n in &tree.nodes {
             let chosen = retrieved.chosen[&n];
-            let e = expansion(kb, scorer, &lightest.space, n, chosen, &value, &why);
+            let e = expansion(kb, scorer, &lightest.space, n, chosen, &value, &trace_why);
             t.retrieval.push(e);
         }
     });

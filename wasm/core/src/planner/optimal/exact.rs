@@ -6,7 +6,8 @@
 //! tree, then by the lightest derivation's value, then by unit id). A tree's value is the sum of its
 //! distinct units' weights, then their number; a tree replaces the best found only when strictly better,
 //! so ties keep the lightest derivation's tree, then the first found. The bound is admissible: each node
-//! left that no unit of the tree makes needs a new unit, which weighs at least the lightest unit making it.
+//! left that no unit of the tree makes needs a new unit, whose weight it shares at most with the other
+//! nodes left that unit makes.
 //! (The lightest derivation's values are no bound here: sharing makes a tree lighter than they say.)
 //! The search stops after `BUDGET` choices and keeps the best tree found.
 
@@ -213,21 +214,33 @@ impl Search<'_, '_> {
         }
     }
 
-    /// A value no tree completing this one beats: each node left that no unit of the tree makes needs a
-    /// new unit, at least as heavy as its lightest maker (one unit may make several).
+    /// A value no tree completing this one beats. Each node left that no unit of the tree makes needs a
+    /// new unit; a new unit making k of those nodes is shared among them, so each costs at least the least
+    /// share of a unit making it (its weight over its k, and 1 over k units).
     fn bound(&self, at: usize) -> Value {
-        let left = self.nodes[at..]
+        let left: HashSet<NodeId> = self.nodes[at..]
             .iter()
-            .filter(|n| self.made.get(n).copied().unwrap_or(0) == 0);
-        let (mut weight, mut units) = (0.0_f64, 0);
-        for n in left {
-            let lightest = self.space.makers[n].iter().map(|u| self.space.weight[u]);
-            weight = weight.max(lightest.fold(f64::INFINITY, f64::min));
-            units = 1;
+            .copied()
+            .filter(|n| self.made.get(n).copied().unwrap_or(0) == 0)
+            .collect();
+        let (mut weight, mut units) = (0.0, 0.0);
+        for n in &left {
+            let shares = self.space.makers[n].iter().map(|&u| {
+                let k = self.space.kb.units[u]
+                    .output_nodes()
+                    .filter(|o| left.contains(o))
+                    .count() as f64;
+                (self.space.weight[&u] / k, 1.0 / k)
+            });
+            let least = shares.fold((f64::INFINITY, f64::INFINITY), |a, b| {
+                (a.0.min(b.0), a.1.min(b.1))
+            });
+            weight += least.0;
+            units += least.1;
         }
         Value {
             weight: self.value.weight + weight,
-            units: self.value.units + units,
+            units: self.value.units + (units - EPSILON).ceil().max(0.0) as u32,
         }
     }
 
