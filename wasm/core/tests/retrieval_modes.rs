@@ -228,13 +228,19 @@ fn when_the_search_budget_runs_out_the_best_tree_found_is_kept_and_said() {
     let files: Vec<(&str, &str)> = files.iter().map(|(n, t)| (*n, t.as_str())).collect();
     let request = r#"{"query": {"type": "salad", "ingredients": [{"object": "cucumber", "state": "whole"}]},
         "modify": false, "robot": {"mode": "lowest_cost", "motion_costs": {"slice": 1, "pour": 1,
-        "mix": 1, "stir": 0, "shake": 0, "peel": 10}}}"#;
+        "mix": 1, "stir": 0, "shake": 0, "peel": 10}}, "explain": true}"#;
     let p = plan_of(&files, &ExactMatch, request);
     // the lightest derivation's tree: slice, 18 pours, mix
     assert_eq!(p.units.len(), 20);
     assert_eq!(p.robot.expect("a robot view").cost, 20.0);
     let note = "lowest_cost: the search for the best tree stopped";
     assert!(p.notes.iter().any(|n| n.contains(note)), "{:?}", p.notes);
+    let trace = p.trace.expect("explain asks for a trace");
+    let why = trace.retrieval[0].why.as_deref().expect("the mode's name");
+    assert_eq!(
+        why,
+        "lowest_cost (the best tree found: the search budget ran out)"
+    );
 }
 
 /// On FOON-111, each mode's reference task tree is no worse by its measure than the heuristic's.
