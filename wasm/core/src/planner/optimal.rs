@@ -359,7 +359,8 @@ fn measure(r: &Retrieved, weight: &dyn Fn(UnitId) -> f64) -> Value {
 
 /// The reference task tree in `mode`, or `None` for the heuristic's tree: in the heuristic mode, when
 /// every way of making `root` runs into a cycle, and when the heuristic's tree is better by the mode's own
-/// measure (only possible when the exact search ran out of budget; `notes` says so).
+/// measure (after the exact search ran out of budget, or where Algorithm 2 takes from the kitchen a node
+/// the search makes; `notes` says so).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn retrieve_in_mode(
     kb: &KnowledgeBase,
