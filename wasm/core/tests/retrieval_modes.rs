@@ -277,3 +277,80 @@ fn on_dev_queries_each_mode_is_at_least_as_good_as_the_heuristic() {
     eprintln!("trees better than the heuristic's (fewest, cheapest, surest): {better:?}");
     assert!(better.iter().all(|&b| b > 0), "{better:?}");
 }
+
+/// A small random graph in one recipe: the cucumber's states s1..s5 and the salad, each made by one or two
+/// units from one or two earlier states (s0 is the whole cucumber, from the kitchen); unit i has motion
+/// `m{i}`, and a cost of 0 to 5. Returns the recipe, each unit's inputs (state numbers), output and cost.
+#[allow(clippy::type_complexity)]
+fn random_graph(seed: &mut u64) -> (String, Vec<(Vec<usize>, usize, u32)>) {
+    let mut next = |n: u64| {
+        *seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((*seed >> 33) % n) as usize
+    };
+    let mut units = Vec::new();
+    for output in 1..=6 {
+        for _ in 0..=next(2) {
+            let mut inputs: Vec<usize> = (0..=next(2)).map(|_| next(output as u64)).collect();
+            inputs.sort_unstable();
+            inputs.dedup();
+            units.push((inputs, output, next(6) as u32));
+        }
+    }
+    let node = |s: usize| match s {
+        0 => "O\tcucumber\t1\nS\twhole\n".to_string(),
+        6 => "O\tcucumber salad\t1\t15\nS\tmixed\n".to_string(),
+        s => format!("O\tcucumber\t1\nS\ts{s}\n"),
+    };
+    let mut text = String::new();
+    for (i, (inputs, output, _)) in units.iter().enumerate() {
+        text += "//\n";
+        text += &inputs.iter().map(|&s| node(s)).collect::<String>();
+        text += &format!("M\tm{i}\t<Assumed>\n{}", node(*output));
+    }
+    (text + "//\n", units)
+}
+
+/// The least (cost, units) of any set of the units that makes the salad from the whole cucumber.
+fn cheapest_by_brute_force(units: &[(Vec<usize>, usize, u32)]) -> (u32, usize) {
+    let mut best = (u32::MAX, usize::MAX);
+    for set in 0u32..1 << units.len() {
+        let chosen: Vec<_> = (0..units.len()).filter(|i| set >> i & 1 == 1).collect();
+        let mut made = vec![true, false, false, false, false, false, false];
+        while let Some(&i) = chosen
+            .iter()
+            .find(|&&i| !made[units[i].1] && units[i].0.iter().all(|&s| made[s]))
+        {
+            made[units[i].1] = true;
+        }
+        if made[6] {
+            let cost = chosen.iter().map(|&i| units[i].2).sum();
+            best = best.min((cost, chosen.len()));
+        }
+    }
+    best
+}
+
+#[test]
+fn on_random_graphs_with_shared_states_the_cheapest_tree_is_found() {
+    let mut seed = 33;
+    for round in 0..200 {
+        let (text, units) = random_graph(&mut seed);
+        let costs: Vec<String> = (0..units.len())
+            .map(|i| format!(r#""m{i}": {}"#, units[i].2))
+            .collect();
+        let request = format!(
+            r#"{{"query": {{"type": "salad", "ingredients": [{{"object": "cucumber", "state": "whole"}}]}},
+            "modify": false, "robot": {{"mode": "lowest_cost", "motion_costs": {{{}}}}}}}"#,
+            costs.join(", ")
+        );
+        let p = plan_of(&[("a.txt", &text)], &ExactMatch, &request);
+        let found = (p.robot.expect("a robot view").cost as u32, p.units.len());
+        assert_eq!(
+            found,
+            cheapest_by_brute_force(&units),
+            "round {round}:\n{text}"
+        );
+    }
+}
