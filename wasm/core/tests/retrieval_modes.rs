@@ -317,7 +317,7 @@ fn cheapest_by_brute_force(units: &[(Vec<usize>, usize, u32)]) -> (u32, usize) {
     let mut best = (u32::MAX, usize::MAX);
     for set in 0u32..1 << units.len() {
         let chosen: Vec<_> = (0..units.len()).filter(|i| set >> i & 1 == 1).collect();
-        let mut made = vec![true, false, false, false, false, false, false];
+        let mut made = [true, false, false, false, false, false, false];
         while let Some(&i) = chosen
             .iter()
             .find(|&&i| !made[units[i].1] && units[i].0.iter().all(|&s| made[s]))
