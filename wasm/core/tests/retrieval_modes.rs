@@ -1,6 +1,7 @@
 //! The retrieval modes (`docs/robot.md`) on a hand-made knowledge base where each picks a different tree,
-//! the robot view's figures, and on FOON-111's dev queries: each mode's tree is at least as good, by its
-//! own measure, as the heuristic's.
+//! the robot view's figures, trees whose units share a made node (hand-made, and random ones against a
+//! brute force), the search budget, and on FOON-111's dev queries: each mode's tree is at least as good,
+//! by its own measure, as the heuristic's.
 
 mod common;
 use common::hand::{plan_of, try_plan};
