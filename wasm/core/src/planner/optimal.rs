@@ -3,11 +3,14 @@
 //!
 //! Each is exact over the search space of Algorithm 2 (the units making the node, then the units making
 //! their inputs, down to the kitchen or a starting item of the recipe that needs it): every unit has a
-//! weight (1; its motion's cost; −ln of its success rate), a tree's value is the sum over its units, and
-//! Knuth's lightest-derivation algorithm (Dijkstra's, over the AND/OR graph) finds the least. A node the
-//! tree makes is made once; the value counts it once for each unit that takes it, which is the tree's own
-//! sum whenever no made node feeds two units (as in the recipes of FOON-111). Ties go to fewer units,
-//! then to the smaller unit id.
+//! weight (1; its motion's cost; −ln of its success rate) and a tree's value is the sum over its distinct
+//! units. Knuth's lightest-derivation algorithm (Dijkstra's, over the AND/OR graph) finds the least sum
+//! counting a made node once for each unit taking it; that is the tree's own value, and its tree the
+//! best, when no tree of the space can hold a unit twice over (no made node feeds two units of the space,
+//! no unit makes two of its nodes). Otherwise `exact` searches from that tree for a better one, within a
+//! budget. Ties go to fewer units, then to the smaller unit id (the lightest derivation's tree first).
+
+mod exact;
 
 use super::alg2_retrieve::{retrieve, Retrieved};
 use super::explain::{kb_unit, Recorder};
@@ -86,27 +89,29 @@ fn search_space(
     space
 }
 
-/// The lightest tree making `root` under `weight` (each at least 0), or `None` when every way of making
-/// it runs into a cycle. `why` names the mode in the trace, which records each node of the tree with its
-/// candidates and the value of the best tree through each (`CandidateUnit::value`).
-fn retrieve_lightest(
+/// What Knuth's algorithm leaves: the search space, each node's least value and the unit giving it, and
+/// when each node was final and each unit complete.
+struct Lightest {
+    space: HashMap<UnitId, Vec<NodeId>>,
+    best: HashMap<NodeId, (Value, UnitId)>,
+    finished: Finished,
+}
+
+/// Knuth's lightest derivation under `weight` (each at least 0) over the search space below `root`, or
+/// `None` when every way of making `root` runs into a cycle.
+fn lightest(
     kb: &KnowledgeBase,
     index: &PlannerIndex,
-    scorer: &Scorer,
     root: NodeId,
     weight: &dyn Fn(UnitId) -> f64,
-    why: &str,
-    trace: &Recorder,
-) -> Option<Retrieved> {
+) -> Option<Lightest> {
     let space = search_space(kb, index, root);
-    // the nodes to make: the root and the inputs some unit needs made
-    let mut wanted: HashSet<NodeId> = space.values().flatten().copied().collect();
-    wanted.insert(root);
+    let wanted = wanted(&space, root);
     // per node, the units of the space taking it
     let mut takers: HashMap<NodeId, Vec<UnitId>> = HashMap::default();
     let mut waiting: HashMap<UnitId, (usize, Value)> = HashMap::default();
     let mut heap = BinaryHeap::new();
-    let mut order = Finished::default();
+    let mut finished = Finished::default();
     let mut units: Vec<&UnitId> = space.keys().collect();
     units.sort_unstable();
     for &u in units {
@@ -120,11 +125,11 @@ fn retrieve_lightest(
         waiting.insert(u, (space[&u].len(), own));
         if space[&u].is_empty() {
             offer(kb, &wanted, u, own, &mut heap);
-            order.completed.insert(u, 0);
+            finished.completed.insert(u, 0);
         }
     }
-    // Knuth's algorithm: a node's value is final when it leaves the heap; a unit is offered to its outputs
-    // once all its needed inputs are final
+    // a node's value is final when it leaves the heap; a unit is offered to its outputs once all its
+    // needed inputs are final
     let mut best: HashMap<NodeId, (Value, UnitId)> = HashMap::default();
     while let Some(Reverse((value, u, node))) = heap.pop() {
         if best.contains_key(&node) {
@@ -132,7 +137,7 @@ fn retrieve_lightest(
         }
         best.insert(node, (value, u));
         let tick = best.len();
-        order.nodes.insert(node, tick);
+        finished.nodes.insert(node, tick);
         for &t in takers.get(&node).map_or(&[][..], Vec::as_slice) {
             let (left, sum) = waiting.get_mut(&t)?;
             *left -= 1;
@@ -140,24 +145,40 @@ fn retrieve_lightest(
             if *left == 0 {
                 let sum = *sum;
                 offer(kb, &wanted, t, sum, &mut heap);
-                order.completed.insert(t, tick);
+                finished.completed.insert(t, tick);
             }
         }
     }
     best.get(&root)?;
-    let (nodes, chosen) = choose(kb, &space, &best, &order, root);
-    trace.record(|t| {
-        let value = |u: UnitId| unit_value(&space, &best, weight, u);
-        for &n in &nodes {
-            t.retrieval
-                .push(expansion(kb, scorer, &space, n, chosen[&n], &value, why));
-        }
-    });
-    Some(Retrieved {
-        units: execution_order(&space, &chosen, root),
-        chosen,
-        blocked: Vec::new(),
+    Some(Lightest {
+        space,
+        best,
+        finished,
     })
+}
+
+/// The nodes to make: the root and the inputs some unit of the space needs made.
+fn wanted(space: &HashMap<UnitId, Vec<NodeId>>, root: NodeId) -> HashSet<NodeId> {
+    let mut wanted: HashSet<NodeId> = space.values().flatten().copied().collect();
+    wanted.insert(root);
+    wanted
+}
+
+/// Whether a tree of the space can hold a unit twice over in the lightest derivation's count: a made
+/// node two units of the space take, or a unit making two nodes to make. Without either, every tree's
+/// value is the sum over its distinct units and the lightest derivation is exact.
+fn can_share(kb: &KnowledgeBase, space: &HashMap<UnitId, Vec<NodeId>>, root: NodeId) -> bool {
+    let wanted = wanted(space, root);
+    let mut taken: HashSet<NodeId> = HashSet::default();
+    let fed_twice = space.values().flatten().any(|&n| !taken.insert(n));
+    fed_twice
+        || space.keys().any(|&u| {
+            kb.units[u]
+                .output_nodes()
+                .filter(|o| wanted.contains(o))
+                .nth(1)
+                .is_some()
+        })
 }
 
 type Heap = BinaryHeap<Reverse<(Value, UnitId, NodeId)>>;
@@ -182,6 +203,12 @@ fn unit_value(
         .try_fold(weight(u), |sum, n| Some(sum + best.get(n)?.0.weight))
 }
 
+/// A tree of the search space: its nodes from the root, breadth first, and the unit making each.
+struct Tree {
+    nodes: Vec<NodeId>,
+    chosen: HashMap<NodeId, UnitId>,
+}
+
 /// When Knuth's algorithm finished each node (its value final) and completed each unit (its inputs final).
 #[derive(Default)]
 struct Finished {
@@ -191,14 +218,13 @@ struct Finished {
 
 /// The tree: from the root, breadth first, each node made by a unit already in the tree when one makes it
 /// (a unit with two outputs the tree needs counts once) and was complete before the node was final (so no
-/// cycle), else by its best unit. Returns the nodes in that order and the unit making each.
-fn choose(
-    kb: &KnowledgeBase,
-    space: &HashMap<UnitId, Vec<NodeId>>,
-    best: &HashMap<NodeId, (Value, UnitId)>,
-    finished: &Finished,
-    root: NodeId,
-) -> (Vec<NodeId>, HashMap<NodeId, UnitId>) {
+/// cycle), else by its best unit.
+fn choose(kb: &KnowledgeBase, lightest: &Lightest, root: NodeId) -> Tree {
+    let Lightest {
+        space,
+        best,
+        finished,
+    } = lightest;
     let mut nodes = vec![root];
     let mut chosen: HashMap<NodeId, UnitId> = HashMap::default();
     let mut in_tree: Vec<UnitId> = Vec::new();
@@ -222,7 +248,7 @@ fn choose(
             }
         }
     }
-    (nodes, chosen)
+    Tree { nodes, chosen }
 }
 
 /// The chosen units, each after the units making its inputs (post-order from the root).
@@ -291,10 +317,50 @@ fn expansion(
     }
 }
 
+/// The best tree making `root`: the lightest derivation's where no tree of the space can share a unit,
+/// else the exact search's, and whether it is known to be the best.
+fn best_tree(
+    kb: &KnowledgeBase,
+    lightest: &Lightest,
+    root: NodeId,
+    weight: &dyn Fn(UnitId) -> f64,
+) -> (Tree, bool) {
+    let start = choose(kb, lightest, root);
+    if !can_share(kb, &lightest.space, root) {
+        return (start, true);
+    }
+    let value = |u: UnitId| unit_value(&lightest.space, &lightest.best, weight, u);
+    let mut makers: HashMap<NodeId, Vec<UnitId>> = HashMap::default();
+    for &n in lightest.best.keys() {
+        let mut units: Vec<(f64, UnitId)> = kb.producers[n]
+            .iter()
+            .filter_map(|&u| Some((value(u)?, u)))
+            .collect();
+        units.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        makers.insert(n, units.into_iter().map(|(_, u)| u).collect());
+    }
+    let space = exact::Space {
+        kb,
+        needs: &lightest.space,
+        weight: lightest.space.keys().map(|&u| (u, weight(u))).collect(),
+        makers,
+    };
+    let found = exact::search(&space, root, start);
+    (found.tree, found.exact)
+}
+
+/// A retrieved tree's value by a mode's measure: its units' summed weights, then their number.
+fn measure(r: &Retrieved, weight: &dyn Fn(UnitId) -> f64) -> Value {
+    Value {
+        weight: r.units.iter().map(|&u| weight(u)).sum(),
+        units: r.units.len() as u32,
+    }
+}
+
 /// The reference task tree in `mode`, or `None` for the heuristic's tree: in the heuristic mode, when
 /// every way of making `root` runs into a cycle, and when the heuristic's tree is better by the mode's own
-/// measure (the lightest derivation counts a node that two units of the tree take once for each; `notes`
-/// says so).
+/// measure (after the exact search ran out of budget, or where Algorithm 2 takes from the kitchen a node
+/// the search makes; `notes` says so).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn retrieve_in_mode(
     kb: &KnowledgeBase,
@@ -320,24 +386,45 @@ pub(crate) fn retrieve_in_mode(
             _ => 1.0,
         }
     };
-    let off = &Recorder::OFF;
-    let Some(lightest) = retrieve_lightest(kb, index, scorer, root, &weight, why, off) else {
+    let Some(lightest) = lightest(kb, index, root, &weight) else {
         notes.push(format!(
             "every tree of retrieval mode {why} runs into a cycle: the heuristic's tree instead"
         ));
         return None;
     };
-    let heuristic = retrieve(kb, index, scorer, root, prefer);
-    let measure = |r: &Retrieved| Value {
-        weight: r.units.iter().map(|&u| weight(u)).sum(),
-        units: r.units.len() as u32,
+    let (tree, exact) = best_tree(kb, &lightest, root, &weight);
+    if !exact {
+        notes.push(format!(
+            "retrieval mode {why}: the search for the best tree stopped after {} choices; \
+             the best tree found is kept and may not be the best",
+            exact::BUDGET
+        ));
+    }
+    let retrieved = Retrieved {
+        units: execution_order(&lightest.space, &tree.chosen, root),
+        chosen: tree.chosen,
+        blocked: Vec::new(),
     };
-    let (h, l) = (measure(&heuristic), measure(&lightest));
-    if h.weight < l.weight - 1e-9 || (h.weight <= l.weight + 1e-9 && h.units < l.units) {
+    let heuristic = retrieve(kb, index, scorer, root, prefer);
+    if exact::better(measure(&heuristic, &weight), measure(&retrieved, &weight)) {
         notes.push(format!(
             "retrieval mode {why}: the paper's heuristic finds a better tree by this mode's measure \
-             here (the lightest derivation counts a node two units take twice), and it is kept"));
+             here (it takes a node two of its units need from the kitchen, as a starting item of the \
+             first one's recipe, or the search ran out of budget), and it is kept"
+        ));
         return None;
     }
-    retrieve_lightest(kb, index, scorer, root, &weight, why, trace)
+    let trace_why = match exact {
+        true => why.to_string(),
+        false => format!("{why} (the best tree found: the search budget ran out)"),
+    };
+    trace.record(|t| {
+        let value = |u: UnitId| unit_value(&lightest.space, &lightest.best, &weight, u);
+        for &n in &tree.nodes {
+            let chosen = retrieved.chosen[&n];
+            let e = expansion(kb, scorer, &lightest.space, n, chosen, &value, &trace_why);
+            t.retrieval.push(e);
+        }
+    });
+    Some(retrieved)
 }
