@@ -12,8 +12,8 @@
 //! The search stops after `BUDGET` choices and keeps the best tree found.
 
 use super::{Tree, Value};
-use crate::kb::KnowledgeBase;
-use crate::model::{NodeId, UnitId};
+use crate::foon::kb::KnowledgeBase;
+use crate::foon::model::{NodeId, UnitId};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 /// How many choices of a unit the search makes at most before it keeps the best tree found.
