@@ -1,5 +1,5 @@
 // The plan as the app receives it from the WASM module: its shared nodes are written once and then by
-// number (wasm/core/src/plan_json.rs), and src/planner/index.ts puts them back. What comes out must be
+// number (wasm/core/src/contract/json.rs), and src/planner/index.ts puts them back. What comes out must be
 // the documented plan format, exactly as serde writes it for the `json` export, on the real dev queries.
 import { beforeAll, describe, expect, it } from "vitest";
 import { FoonPlanner, type Plan, type PlanRequest } from "../../src/planner/index";
