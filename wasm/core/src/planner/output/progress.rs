@@ -299,16 +299,13 @@ pub(super) fn walk<'t>(
         });
         let Some((pos, u, out)) = next else {
             // FOON lists a food in a bowl both as a node of its own and among the bowl's contents:
-            // when no unit takes the node, the units take the bowl
-            if let Some(v) = vessel_holding(tree, uses, at, label).filter(|v| !seen.contains(v)) {
-                seen.push(v);
-                at = v;
-                continue;
-            }
-            // FOON takes the vessel up again as another node of it (the pot the garlic was fried in, later
-            // the rice's): the later node listing the food goes on
-            if let Some(v) = vessel_again(tree, uses, at, label, from).filter(|v| !seen.contains(v))
-            {
+            // when no unit takes the node, the units take the bowl; and FOON takes a vessel up again as
+            // another node of it (the pot the garlic was fried in, later the rice's): that node goes on
+            let unseen = |v: &SlotId| !seen.contains(v);
+            let vessel = vessel_holding(tree, uses, at, label)
+                .filter(unseen)
+                .or_else(|| vessel_again(tree, uses, at, label, from).filter(unseen));
+            if let Some(v) = vessel {
                 seen.push(v);
                 at = v;
                 continue;
@@ -577,17 +574,7 @@ pub(super) fn with_vessel_cooking(before: &SmolStr, v: &ObjectNode) -> SmolStr {
 /// and some unit uses it: the first used of those.
 pub(super) fn vessel_holding(tree: &Tree, uses: &Uses, at: SlotId, label: &str) -> Option<SlotId> {
     let container = tree.slots[at].node.container()?;
-    uses.live
-        .iter()
-        .map(|&(x, _)| x)
-        .filter(|&x| {
-            let slot = &tree.slots[x];
-            slot.utensil
-                && slot.node.label == container
-                && uses.first_use[x] != usize::MAX
-                && slot.node.contents().any(|i| i == label)
-        })
-        .min_by_key(|&x| uses.first_use[x])
+    first_vessel_listing(tree, uses, container, label, 0, at)
 }
 
 /// A later node of vessel `at` (first used at or after position `from`) that lists `label` among its
@@ -597,14 +584,27 @@ fn vessel_again(tree: &Tree, uses: &Uses, at: SlotId, label: &str, from: usize) 
     if !vessel.utensil || !vessel.node.contents().any(|i| i == label) {
         return None;
     }
+    first_vessel_listing(tree, uses, &vessel.node.label, label, from, at)
+}
+
+/// The first used node of the vessel named `vessel`, other than `not`, first used at or after position
+/// `from`, that lists `label` among its contents.
+fn first_vessel_listing(
+    tree: &Tree,
+    uses: &Uses,
+    vessel: &str,
+    label: &str,
+    from: usize,
+    not: SlotId,
+) -> Option<SlotId> {
     uses.live
         .iter()
         .map(|&(x, _)| x)
         .filter(|&x| {
             let slot = &tree.slots[x];
-            x != at
+            x != not
                 && slot.utensil
-                && slot.node.label == vessel.node.label
+                && slot.node.label == vessel
                 && uses.first_use[x] != usize::MAX
                 && uses.first_use[x] >= from
                 && slot.node.contents().any(|i| i == label)
