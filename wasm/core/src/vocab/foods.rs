@@ -172,11 +172,19 @@ fn cares() -> &'static HashMap<String, Care> {
 
 /// The food's own row, else its taxonomy category's.
 fn care_of(food: &str) -> Option<&'static Care> {
-    let cares = cares();
-    cares.get(food).or_else(|| {
-        let taxonomy = Taxonomy::builtin();
-        cares.get(&taxonomy.category(taxonomy.lookup(food)?).name)
-    })
+    cares().get(food).or_else(|| category_care(food))
+}
+
+/// The row of the food's taxonomy category.
+fn category_care(food: &str) -> Option<&'static Care> {
+    let taxonomy = Taxonomy::builtin();
+    cares().get(&taxonomy.category(taxonomy.lookup(food)?).name)
+}
+
+/// Whether the food's own row or its category's has a flag (`wet`, `heat`): a category's flag holds for
+/// its foods with rows of their own (an onion is peeled, and like every allium cooked with the dish).
+fn flagged(food: &str, flag: fn(&Care) -> bool) -> bool {
+    cares().get(food).is_some_and(flag) || category_care(food).is_some_and(flag)
 }
 
 /// Whether the food knowledge knows `food` (its taxonomy category).
@@ -211,7 +219,7 @@ pub fn must_cook(food: &str) -> bool {
 /// Whether `food` joins a dish that is cooked before the cooking, not after it (stock, wine, a bay leaf,
 /// onion, carrot): it gives its taste or softens in the heat.
 pub fn joins_before_heat(food: &str) -> bool {
-    care_of(food).is_some_and(|c| c.heat)
+    flagged(food, |c| c.heat)
 }
 
 /// The state a cook brings `food` to when a query names only its category ("whole veg" onion: chopped).
@@ -322,7 +330,7 @@ pub fn cooks(motion: &str) -> bool {
 /// Whether `motion` cooks `food`: any heat does, but a food cooked only with water (rice, dry pasta) is
 /// cooked by a motion with water or by a plain "cook" (FOON's pot of rice), not fried raw.
 pub fn cooks_food(food: &str, motion: &str) -> bool {
-    if !care_of(food).is_some_and(|c| c.wet) {
+    if !flagged(food, |c| c.wet) {
         return cooks(motion);
     }
     motion.trim_end_matches('*').trim() == "cook"
