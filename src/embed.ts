@@ -14,7 +14,7 @@ for (const widget of document.querySelectorAll("foon-planner")) {
   widget.addEventListener("plan", (event) => {
     const plan = event.detail.plan;
     widget.dataset.planned = String(plan.units.length);
-    write(`#${widget.id} plan: ${plan.units.length} functional units from “${plan.goal.label}”`);
+    write(`#${widget.id} plan: ${plan.units.length} functional units from “${plan.goal.reference}”`);
   });
   widget.addEventListener("select", (event) => write(`#${widget.id} select: ${event.detail.step ?? "nothing"}`));
   widget.addEventListener("error", (event) => write(`#${widget.id} error: ${event.detail.error.message}`));
@@ -37,7 +37,7 @@ mountButton?.addEventListener("click", () => {
     target,
     { dishType: "pizza", ingredients: "sliced mushroom, grated mozzarella, tomato sauce", view: "steps", theme: "light" },
     {
-      onPlan: ({ plan }) => write(`#mounted plan: ${plan.units.length} functional units for ${plan.query.type} from “${plan.goal.label}”`),
+      onPlan: ({ plan }) => write(`#mounted plan: ${plan.units.length} functional units for ${plan.query.type} from “${plan.goal.reference}”`),
       onError: ({ error }) => write(`#mounted error: ${error.message}`),
     },
   );

@@ -172,7 +172,10 @@ export interface Plan {
   notes: string[];
   modified: boolean;
   goal: {
+    /** The dish the plan makes, named for the query. */
     label: string;
+    /** The reference goal node Algorithm 1 picked, as the knowledge base names it. */
+    reference: string;
     states: string[];
     ingredients: string[];
     subgraph: string;

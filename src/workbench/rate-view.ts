@@ -181,7 +181,7 @@ export class RateView {
       const why = record !== undefined && !record.ok ? `${record.error.code}: ${record.error.message}` : "the plan is not available";
       section.append(el("p", { class: "no-plan", text: `No plan (${why}). Rate its ingredients 0.` }));
     } else if (!blind) {
-      section.append(el("p", { class: "goal", text: `Reference: ${plan.goal.label} from ${plan.goal.subgraph} (score ${plan.goal.score.toFixed(2)})` }));
+      section.append(el("p", { class: "goal", text: `Reference: ${plan.goal.reference} from ${plan.goal.subgraph} (score ${plan.goal.score.toFixed(2)})` }));
       const violations = record?.ok === true ? record.metrics.violations : [];
       if (violations.length > 0) section.append(el("ul", { class: "violations" }, ...violations.map((v) => el("li", { text: v }))));
     }

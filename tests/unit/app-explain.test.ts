@@ -38,7 +38,7 @@ describe("explain steps", () => {
         "pruning",
         "final",
       ]);
-      expect(steps[0]!.caption).toContain(plan.goal.label);
+      expect(steps[0]!.caption).toContain(plan.goal.reference);
       // a reference borrowed from a kin dish type says so, and leads the candidates
       expect(trace.goal_selection.candidates[0]!.subgraph).toBe(plan.goal.subgraph);
       if (trace.goal_selection.kin_class !== null) expect(steps[0]!.caption).toContain("a dish made the same way");

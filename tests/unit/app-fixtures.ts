@@ -12,7 +12,7 @@ export function fixturePlan(): Plan {
     dish_class: { index: 15, name: "salad" },
     notes: [],
     modified: true,
-    goal: { label: "salsa", states: ["contains {chili pepper,tomato}", "in [bowl]", "mixed"], ingredients: ["jalapeno", "tomato"], subgraph: "s48-pico_de_gallo.txt", score: 0.5, dish_class: 7 },
+    goal: { label: "salsa", reference: "salsa", states: ["contains {chili pepper,tomato}", "in [bowl]", "mixed"], ingredients: ["jalapeno", "tomato"], subgraph: "s48-pico_de_gallo.txt", score: 0.5, dish_class: 7 },
     units: [
       { inputs: [node("knife", ["clean"]), node("tomato", ["whole"])], motion: "dice", outputs: [node("tomato", ["diced"])], origin: "reference", sources: ["s48"] },
       { inputs: [node("knife", ["clean"]), node("chili pepper", ["whole"])], motion: "chop", outputs: [node("chili pepper", ["chopped"])], origin: "grafted", sources: [] },

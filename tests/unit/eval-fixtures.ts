@@ -42,7 +42,7 @@ export function plan(units: PlanUnit[] = cleanUnits(), query: Partial<Query> = {
     dish_class: { index: 0, name: q.type },
     notes: [],
     modified: true,
-    goal: { label: "salad", states: ["in [bowl]", "mixed"], ingredients: ["salt", "tomato"], subgraph: "test.txt", score: 1, dish_class: 0 },
+    goal: { label: "salad", reference: "salad", states: ["in [bowl]", "mixed"], ingredients: ["salt", "tomato"], subgraph: "test.txt", score: 1, dish_class: 0 },
     units,
     ingredients: ingredients ?? q.ingredients.map((i) => outcome(i.object, i.state)),
     removed: [],

@@ -117,7 +117,7 @@ function goalStep(trace: Trace, plan: Plan, graph: SearchGraph): ExplainStep {
   const why = goalReason(g);
   return {
     phase: "goal",
-    caption: `Algorithm 1 compares the query's ingredients with ${among}: the reference goal node is “${plan.goal.label}” from ${plan.goal.subgraph} (score ${num(plan.goal.score)}), because ${why}.`,
+    caption: `Algorithm 1 compares the query's ingredients with ${among}: the reference goal node is “${plan.goal.reference}” from ${plan.goal.subgraph} (score ${num(plan.goal.score)}), because ${why}.`,
     section: SECTION.goal,
     graph: graph.snapshot(),
     focus,

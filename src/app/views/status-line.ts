@@ -24,7 +24,7 @@ function textOf(state: AppState): string {
   if (state.kb === null) return "Loading the planner and the knowledge base…";
   if (state.planning) return "Planning…";
   if (state.plan === null) return "Add ingredients to plan a task tree.";
-  return `Task tree for ${state.plan.query.type || "any dish"}: ${plural(state.plan.units.length, "functional unit")} from “${state.plan.goal.label}”.${timing(state)}`;
+  return `Task tree for ${state.plan.query.type || "any dish"}: ${plural(state.plan.units.length, "functional unit")} from “${state.plan.goal.reference}”.${timing(state)}`;
 }
 
 export function mountStatusLine(status: HTMLElement, store: Store, schedule: DrawSchedule): () => void {

@@ -133,7 +133,10 @@ pub struct DishClassRef {
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct GoalInfo {
+    /// The dish the plan makes, named for the query (see `planner/modify/name.rs`).
     pub label: SmolStr,
+    /// The reference goal node Algorithm 1 picked, as the knowledge base names it.
+    pub reference: SmolStr,
     /// States rendered as FOON text: `sliced`, `in [bowl]`, `contains {a,b}`.
     pub states: Vec<SmolStr>,
     /// The reference goal's ingredient list.

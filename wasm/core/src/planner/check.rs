@@ -174,6 +174,7 @@ mod tests {
             modified: true,
             goal: crate::contract::plan::GoalInfo {
                 label: goal.label.clone(),
+                reference: goal.label.clone(),
                 states: goal.states.clone(),
                 ingredients: Vec::new(),
                 subgraph: String::new(),

@@ -1,6 +1,7 @@
 //! Section III-C: modification of the reference task tree for the query's ingredients. The driver is
 //! here; each step has its file: `equivalent`, `cases` (Table I), `restate` (cases 3 and 4 in the tree),
-//! `branch` (case 2 copies, case 4 from FOON), `attach`, `finish` and `prune`.
+//! `branch` (case 2 copies, case 4 from FOON), `attach`, `finish`, `prune` and `name` (the dish and its
+//! mixtures named for what they hold).
 
 use super::alg2_retrieve::{retrieve, retrieve_within, Retrieved};
 use super::index::PlannerIndex;
@@ -16,7 +17,7 @@ use crate::vocab::foods;
 use crate::vocab::states::{
     akin, category, food_state_category, has_food_state, is_food_state, kind, state_text, Category,
 };
-use crate::vocab::taxonomy::{dish_class_name, is_transfer_motion, is_utensil};
+use crate::vocab::taxonomy::{dish_class_name, dish_class_of, is_transfer_motion, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use smol_str::SmolStr;
 use std::borrow::Cow;
@@ -28,6 +29,7 @@ mod branch;
 mod cases;
 mod equivalent;
 mod finish;
+mod name;
 mod prune;
 mod restate;
 
@@ -36,6 +38,7 @@ use branch::*;
 use cases::*;
 use equivalent::*;
 use finish::*;
+use name::*;
 use prune::*;
 use restate::*;
 
@@ -147,6 +150,7 @@ pub(crate) fn modify<'kb>(
         d.bring_pending(ctx, tree, query);
         d.finish_planned(ctx, tree);
         cook_dish(ctx, tree, notes);
+        name_for_query(ctx, tree, query, notes);
     } else {
         notes.push("modification off: the reference task tree as retrieved".to_string());
     }

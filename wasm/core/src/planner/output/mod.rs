@@ -92,6 +92,7 @@ pub(crate) fn build(p: Parts) -> Plan {
         modified: p.modified,
         goal: GoalInfo {
             label: goal_node.label.as_str().into(),
+            reference: kb_goal.label.as_str().into(),
             states: goal_node.states.iter().map(State::text).collect(),
             ingredients: if p.goal.ingredients.is_empty() {
                 kb_goal.ingredients()
