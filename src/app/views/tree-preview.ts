@@ -40,7 +40,9 @@ export function treeLegend(): HTMLElement {
  */
 export function mountTreePreview(host: HTMLElement, source: StateSource, onFirstPlan: () => void): void {
   const picture = el("div", { class: "cy tree-preview", role: "img", "aria-label": "Task tree graph (the Steps list below is the same plan as text)" });
-  host.replaceChildren(el("div", { class: "view-head" }, el("h2", { text: "Task tree" })), treeLegend(), picture);
+  // the interactive view's parts in the same places, so that nothing moves when it takes over
+  const caption = el("p", { class: "muted small tree-caption", text: "Loading the interactive graph…" });
+  host.replaceChildren(el("div", { class: "view-head" }, el("h2", { text: "Task tree" })), treeLegend(), picture, caption);
   let told = false;
   const draw = (plan: Plan | null): void => {
     if (plan === null) {
