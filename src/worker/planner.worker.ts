@@ -25,7 +25,10 @@ initPlanner().catch(() => undefined);
 const prefetched = new Map<string, Promise<Response>>();
 
 async function filesOf(source: KnowledgeBaseSource): Promise<{ name: string; files: { name: string; bytes: Uint8Array }[] }> {
-  if (source.kind === "files") return { name: source.files.map((f) => f.name).join(", "), files: source.files };
+  if (source.kind === "files") {
+    prefetched.clear(); // the page restored the user's own files: what it fetched in case it did not is not needed
+    return { name: source.files.map((f) => f.name).join(", "), files: source.files };
+  }
   const early = prefetched.get(source.url);
   prefetched.delete(source.url);
   const response = await (early ?? fetch(source.url));
