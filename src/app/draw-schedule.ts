@@ -14,7 +14,7 @@ export interface StateSource {
 }
 
 /** Runs `work` once the page is idle (at most `timeout` ms later), else soon. */
-function whenIdle(work: () => void, timeout = 200): void {
+export function whenIdle(work: () => void, timeout = 200): void {
   if (typeof requestIdleCallback === "function") requestIdleCallback(work, { timeout });
   else setTimeout(work, 0);
 }

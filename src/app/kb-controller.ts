@@ -49,6 +49,9 @@ export class KbController {
   /** On start: the user's saved knowledge base if there is one, else the bundled one. */
   async start(): Promise<void> {
     if (this.sources.persistence !== undefined) {
+      // reading the browser's storage takes 100-200 ms on a first visit: the bundled files download meanwhile
+      // (wasted only on a visit that restores the user's own files)
+      this.planner.prefetch(this.url, this.sources.embeddingsUrl);
       this.persistence = await this.sources.persistence;
       if (this.destroyed) return;
       this.stopWatching = this.persistence.onRemoteChange((saved) => void this.applySaved(saved));

@@ -3,7 +3,7 @@
 // views chosen for this place. Views draw through the schedule (those off screen later); the task tree
 // and the Algorithm view load their code on their own.
 
-import type { DrawSchedule, StateSource } from "./draw-schedule";
+import { whenIdle, type DrawSchedule, type StateSource } from "./draw-schedule";
 import { el, watchNearScreen } from "./dom";
 import type { Selection } from "./model/tree";
 import type { AppQuery } from "./query";
@@ -17,6 +17,7 @@ import { mountReferenceView } from "./views/reference-view";
 import { mountStatusLine } from "./views/status-line";
 import { mountStepsView } from "./views/steps-view";
 import { mountSubstitutionsView } from "./views/substitutions-view";
+import { mountTreePreview } from "./views/tree-preview";
 import type { TreeViewHandle } from "./views/tree-view";
 
 export type ViewName = "query" | "tree" | "progress" | "steps" | "substitutions" | "reference" | "explain" | "export" | "kb";
@@ -122,12 +123,18 @@ function mountResults(results: HTMLElement, place: (name: ViewName, parent: HTML
   if (tools.childElementCount > 0) results.append(tools);
 }
 
-/** Cytoscape is most of the page's script: loaded in parallel with the planner, not before it. */
+/**
+ * Cytoscape is most of the page's script: the first plan is drawn as a still picture, and the interactive
+ * view loads when the page is next idle after it (neither its download nor its first drawing delay the plan).
+ */
 function loadTreeView({ host, source }: Placed, mounted: Mounted, select: (s: Selection) => void): void {
-  host.append(el("p", { class: "muted", text: "Loading the graph view…" }));
-  void import("./views/tree-view").then(({ mountTreeView }) => {
-    if (!mounted.destroyed) mounted.tree = mountTreeView(host, source, { select });
-  });
+  mountTreePreview(host, source, () =>
+    whenIdle(() => {
+      void import("./views/tree-view").then(({ mountTreeView }) => {
+        if (!mounted.destroyed) mounted.tree = mountTreeView(host, source, { select });
+      });
+    }),
+  );
 }
 
 /**
@@ -136,15 +143,27 @@ function loadTreeView({ host, source }: Placed, mounted: Mounted, select: (s: Se
  */
 function loadExplainView({ host, source }: Placed, mounted: Mounted, actions: ViewActions): void {
   host.append(el("p", { class: "muted", text: "Loading the Algorithm view…" }));
-  let loading = false;
-  const stop = watchNearScreen(host, (near) => {
-    if (near && !loading) {
-      loading = true;
-      void import("./views/explain-view").then(({ mountExplainView }) => {
-        if (!mounted.destroyed) mounted.explain = mountExplainView(host, source);
+  // before the first plan the page is short and this view near the screen: where it is counts once the
+  // plan is drawn above it (else the first plan would be made with the trace, and Cytoscape loaded for it)
+  let watching = false;
+  const watch = (): void => {
+    if (watching || source.state.plan === null) return;
+    watching = true;
+    whenIdle(() => {
+      if (mounted.destroyed) return;
+      let loading = false;
+      const stop = watchNearScreen(host, (near) => {
+        if (near && !loading) {
+          loading = true;
+          void import("./views/explain-view").then(({ mountExplainView }) => {
+            if (!mounted.destroyed) mounted.explain = mountExplainView(host, source);
+          });
+        }
+        actions.wantTrace(near);
       });
-    }
-    actions.wantTrace(near);
-  });
-  mounted.cleanups.push(stop);
+      mounted.cleanups.push(stop);
+    });
+  };
+  watch();
+  source.subscribe(watch); // the view, once loaded, takes the subscription over
 }

@@ -9,6 +9,8 @@ import plannerWorkerUrl from "./planner.worker.ts?worker&url";
 /** What a planner worker (or a fake one in tests) must offer the app. */
 export interface PlannerService {
   loadUrl(url: string, embeddingsUrl?: string): Promise<LoadedKnowledgeBase>;
+  /** Starts downloading what `loadUrl(url, embeddingsUrl)` would, before it is certain to be called. */
+  prefetch(url: string, embeddingsUrl?: string): void;
   loadFiles(files: KnowledgeBaseFile[], embeddingsUrl?: string): Promise<LoadedKnowledgeBase>;
   /** Resolves `null` when a newer plan request superseded this one. */
   plan(request: PlanRequest): Promise<{ plan: Plan; ms: number } | null>;
@@ -187,6 +189,11 @@ export class WorkerPlanner implements PlannerService {
 
   loadFiles(files: KnowledgeBaseFile[], embeddingsUrl?: string): Promise<LoadedKnowledgeBase> {
     return this.load({ kind: "files", files }, embeddingsUrl);
+  }
+
+  prefetch(url: string, embeddingsUrl?: string): void {
+    // nothing answers it: it only starts the worker's downloads
+    this.worker.postMessage({ type: "prefetch", id: this.nextId++, kbUrl: url, embeddingsUrl } satisfies WorkerRequest);
   }
 
   async plan(request: PlanRequest): Promise<{ plan: Plan; ms: number } | null> {

@@ -17,9 +17,21 @@ function reply(message: WorkerResponse): void {
   scope.postMessage(message);
 }
 
+// The module is fetched and compiled from the worker's start, while the page still decides what to load;
+// a failure here is reported by the load that awaits the same promise.
+initPlanner().catch(() => undefined);
+
+/** Knowledge-base downloads started by a prefetch, each taken by the next load of its URL. */
+const prefetched = new Map<string, Promise<Response>>();
+
 async function filesOf(source: KnowledgeBaseSource): Promise<{ name: string; files: { name: string; bytes: Uint8Array }[] }> {
-  if (source.kind === "files") return { name: source.files.map((f) => f.name).join(", "), files: source.files };
-  const response = await fetch(source.url);
+  if (source.kind === "files") {
+    prefetched.clear(); // the page restored the user's own files: what it fetched in case it did not is not needed
+    return { name: source.files.map((f) => f.name).join(", "), files: source.files };
+  }
+  const early = prefetched.get(source.url);
+  prefetched.delete(source.url);
+  const response = await (early ?? fetch(source.url));
   if (!response.ok) throw new PlannerError({ code: "internal", message: `${source.url}: HTTP ${response.status}` });
   const name = new URL(source.url).pathname.split("/").pop() ?? "knowledge base";
   // hosts with a page fallback answer a missing file with their index page: say so, not "unknown line"
@@ -90,6 +102,14 @@ scope.onmessage = (event: MessageEvent<WorkerRequest>): void => {
   switch (message.type) {
     case "load":
       load(message.id, message.source, message.embeddingsUrl).catch((e: unknown) => reply({ type: "error", id: message.id, error: toPlannerError(e).toJSON() }));
+      break;
+    case "prefetch":
+      if (!prefetched.has(message.kbUrl)) {
+        const download = fetch(message.kbUrl);
+        download.catch(() => undefined); // a failure is the load's to report, if one comes
+        prefetched.set(message.kbUrl, download);
+      }
+      void embeddingsOf(message.embeddingsUrl);
       break;
     case "plan":
       {

@@ -7,6 +7,8 @@ export type KnowledgeBaseSource = { kind: "url"; url: string } | { kind: "files"
 export type WorkerRequest =
   /** `embeddingsUrl`: the food embedding table; without it the planner matches names exactly. */
   | { type: "load"; id: number; source: KnowledgeBaseSource; embeddingsUrl?: string }
+  /** Fetch these now for a load to come (no answer): the page is still deciding which knowledge base to load. */
+  | { type: "prefetch"; id: number; kbUrl: string; embeddingsUrl?: string }
   | { type: "plan"; id: number; request: PlanRequest }
   | { type: "export"; id: number; request: PlanRequest; format: ExportFormat };
 

@@ -48,6 +48,24 @@ async function motionNodesOnScreen(page: Page): Promise<{ id: string; x: number;
 }
 
 describe("planner page", () => {
+  it("draws the first plan as a still task tree before Cytoscape is fetched, then the interactive one with the same nodes", async () => {
+    const { context, page, errors } = await fresh();
+    const fetched: string[] = [];
+    page.on("request", (r) => fetched.push(new URL(r.url()).pathname));
+    await page.goto(`${inject("baseUrl")}${SOUP}`);
+    await page.waitForFunction(() => performance.getEntriesByName("foon:first-plan").length > 0);
+    const atFirstPlan = [...fetched];
+    const still = page.locator(".panel-tree .tree-preview svg");
+    const stillNodes = (await still.locator("g.object").count()) + (await still.locator("g.motion").count());
+    expect(stillNodes).toBeGreaterThan(3);
+    expect(atFirstPlan.some((path) => path.includes("/tree-view-"))).toBe(false);
+    await page.locator(".cy canvas").first().waitFor();
+    expect(Number(await page.locator(".cy").getAttribute("data-nodes"))).toBe(stillNodes);
+    expect(await page.locator(".tree-preview").count()).toBe(0);
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
   it("plans a query typed in, and shows it in the URL, the task tree, the progress lines, the steps and the substitutions", async () => {
     const { context, page, errors } = await fresh();
     await page.goto(inject("baseUrl"));

@@ -6,15 +6,13 @@
 import cytoscape, { type CollectionReturnValue, type Core, type ElementDefinition, type StylesheetJson } from "cytoscape";
 import type { Plan } from "../../planner/types";
 import { el } from "../dom";
-import { graphToSvg, type PlacedNode } from "../export/svg";
+import { graphToSvg } from "../export/svg";
 import { layoutTree } from "../model/layout";
 import { planToGraph, selectNode, type Selection, type TreeGraph } from "../model/tree";
 import type { StateSource } from "../draw-schedule";
 import type { AppState } from "../store";
 import { readColors, type GraphColors } from "../theme-colors";
-
-const OBJECT_SIZE = 26;
-const MOTION_SIZE = 22;
+import { MAX_FIT_ZOOM, MOTION_SIZE, OBJECT_SIZE, placeNodes, treeLegend, treeTitle } from "./tree-preview";
 
 export interface TreeViewHandle {
   png(): Promise<Blob>;
@@ -107,17 +105,9 @@ export function mountTreeView(host: HTMLElement, store: StateSource, actions: Tr
   const zoomIn = el("button", { type: "button", "aria-label": "Zoom in", title: "Zoom in", text: "+" });
   const zoomOut = el("button", { type: "button", "aria-label": "Zoom out", title: "Zoom out", text: "−" });
   const caption = el("p", { class: "muted small tree-caption", "aria-live": "polite" });
-  const legend = el(
-    "ul",
-    { class: "legend", "aria-label": "Legend" },
-    el("li", {}, el("span", { class: "swatch object", "aria-hidden": "true" }), "object node"),
-    el("li", {}, el("span", { class: "swatch motion", "aria-hidden": "true" }), "motion node"),
-    el("li", {}, el("span", { class: "swatch marked", "aria-hidden": "true" }), "added, renamed or grafted by modification"),
-    el("li", {}, el("span", { class: "swatch goal", "aria-hidden": "true" }), "goal node"),
-  );
   host.replaceChildren(
     el("div", { class: "view-head" }, el("h2", { text: "Task tree" }), el("div", { class: "toolbar", role: "toolbar", "aria-label": "Graph" }, fit, zoomIn, zoomOut)),
-    legend,
+    treeLegend(),
     canvas,
     caption,
   );
@@ -135,11 +125,11 @@ export function mountTreeView(host: HTMLElement, store: StateSource, actions: Tr
   let plan: Plan | null = null;
 
   cy.on("tap", "node", (event) => actions.select(selectNode(graph, String(event.target.id()))));
-  // fit the whole tree, but never blow a small one up past 1.5x (its labels would be huge)
+  // fit the whole tree, but never blow a small one up past MAX_FIT_ZOOM
   const fitTree = (): void => {
     cy.fit(undefined, 20);
-    if (cy.zoom() > 1.5) {
-      cy.zoom(1.5);
+    if (cy.zoom() > MAX_FIT_ZOOM) {
+      cy.zoom(MAX_FIT_ZOOM);
       cy.center();
     }
   };
@@ -187,14 +177,8 @@ export function mountTreeView(host: HTMLElement, store: StateSource, actions: Tr
 
   return {
     png: async () => cy.png({ output: "blob-promise", full: true, scale: 2, bg: colors.background }),
-    svg: () => {
-      const placed: PlacedNode[] = graph.nodes.map((n) => {
-        const p = cy.getElementById(n.id).position();
-        return { ...n, x: p.x, y: p.y, size: n.kind === "object" ? (n.goal ? OBJECT_SIZE + 8 : OBJECT_SIZE) : MOTION_SIZE };
-      });
-      const title = plan === null ? "foon-planner task tree" : `Task tree: ${plan.goal.label} (${plan.query.type || "any dish"})`;
-      return graphToSvg(placed, graph.edges, colors, title);
-    },
+    // where the nodes are now: the user may have dragged them
+    svg: () => graphToSvg(placeNodes(graph, (id) => cy.getElementById(id).position()), graph.edges, colors, treeTitle(plan)),
     restyle: () => {
       colors = readColors(host);
       cy.style(stylesheet(colors));
