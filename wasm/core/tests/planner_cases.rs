@@ -2333,10 +2333,19 @@ S\tin\t[muffin pan]
     assert_eq!(line.end_product, "cake");
     assert!(
         line.state.iter().any(|s| s.physical_state == "in batter")
-            && !line.state.iter().any(|s| s.physical_state.contains("muffin")),
+            && !line
+                .state
+                .iter()
+                .any(|s| s.physical_state.contains("muffin")),
         "{line:#?}"
     );
-    assert!(p.notes.iter().any(|n| n.contains("the dish is called 'cake'")), "{:?}", p.notes);
+    assert!(
+        p.notes
+            .iter()
+            .any(|n| n.contains("the dish is called 'cake'")),
+        "{:?}",
+        p.notes
+    );
     let last = line.state.last().unwrap();
     assert_eq!(
         (last.physical_state.as_str(), last.location.as_str()),

@@ -1704,3 +1704,206 @@ fn salt_in_a_pot_that_is_boiled_is_not_called_cooked_but_the_chicken_is() {
     assert!(cooked("chicken breast"), "{:#?}", p.progress_lines);
     assert!(!cooked("salt"), "{:#?}", p.progress_lines);
 }
+
+/// A broccoli salad (class 15): FOON's "skim" runs a knife under the stem's skin, then the stem is
+/// chopped and tossed in a bowl.
+const BROCCOLI_SALAD: &str = "//
+O\tbroccoli\t1
+S\tuncooked
+S\twhole
+S\ton\t[cutting board]
+O\tknife\t1
+M\tskim\t<Assumed>
+O\tbroccoli\t0
+S\tuncooked
+S\twhole
+S\tpeeled
+S\ton\t[cutting board]
+//
+O\tbroccoli\t0
+S\tuncooked
+S\twhole
+S\tpeeled
+S\ton\t[cutting board]
+O\tknife\t1
+M\tchop\t<Assumed>
+O\tbroccoli\t0
+S\tchopped
+S\ton\t[cutting board]
+//
+O\tbroccoli\t0
+S\tchopped
+S\ton\t[cutting board]
+O\tbowl\t0
+S\tempty
+M\tpick-and-place\t<Assumed>
+O\tsalad\t1\t15
+S\tcontains\t{broccoli}
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn a_motion_foon_names_otherwise_takes_the_cooks_word() {
+    let files = [("broccoli.txt", BROCCOLI_SALAD)];
+    let p = plan_of(
+        &files,
+        &ExactMatch,
+        &query("salad", &[("broccoli", "chopped")]),
+    );
+    // the stem is peeled, as a cook says, not "skimmed"
+    assert_eq!(
+        line_motions(&p, "broccoli"),
+        ["peel", "chop", "pick-and-place"]
+    );
+    assert!(
+        p.steps.iter().any(|s| s.starts_with("Peel the broccoli")),
+        "{:?}",
+        p.steps
+    );
+}
+
+/// Rice (class 4) boiled in a pot with ground pepper sprinkled in.
+const PEPPER_RICE: &str = "//
+O\trice\t1
+S\tuncooked
+S\tin\t[bowl]
+O\tpot\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{rice}
+O\trice\t1
+S\tuncooked
+S\tin\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{rice}
+O\tpepper\t1
+S\tground
+S\tin\t[shaker]
+M\tsprinkle\t<Assumed>
+O\tpot\t0
+S\tcontains\t{pepper,rice}
+O\tpepper\t1
+S\tground
+S\tin\t[pot]
+//
+O\tpot\t0
+S\tcontains\t{pepper,rice}
+O\tstove\t0
+S\ton
+M\tboil\t<Assumed>
+O\tpot\t0
+S\tcontains\t{pepper,rice}
+S\tcooked
+//
+O\tpot\t0
+S\tcontains\t{pepper,rice}
+S\tcooked
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\trice\t1\t4
+S\tcontains\t{pepper}
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn a_name_read_as_a_spice_does_not_show_the_pots_cooking() {
+    let files = [("rice.txt", PEPPER_RICE)];
+    let q = query("rice", &[("rice", "uncooked"), ("pepper", "ground")]);
+    let p = plan_of(&files, &ExactMatch, &q);
+    let states = |food: &str| -> Vec<String> {
+        let line = p
+            .progress_lines
+            .iter()
+            .find(|l| l.ingredient == food)
+            .unwrap();
+        line.state
+            .iter()
+            .map(|s| s.physical_state.to_string())
+            .collect()
+    };
+    // "pepper — ground" is black pepper: ground, never "partly cooked" in the boiling pot
+    assert!(
+        states("pepper").iter().all(|s| !s.contains("cooked")),
+        "{:?}",
+        states("pepper")
+    );
+    assert!(
+        states("rice")
+            .iter()
+            .any(|s| s.contains("cooked") && !s.contains("uncooked")),
+        "{:?}",
+        states("rice")
+    );
+}
+
+/// Ramen (class 14): noodles into the broth, an egg cracked into the pot and poached beside them, all
+/// ladled into a bowl.
+const POACHED_EGG_RAMEN: &str = "//
+O\tpot\t0
+S\tcontains\t{broth}
+S\ton\t[stove]
+O\tnoodle\t1
+S\tuncooked
+S\tin\t[packet]
+M\tpour\t<Assumed>
+O\tpot\t0
+S\tcontains\t{broth,noodle}
+S\ton\t[stove]
+//
+O\tpot\t0
+S\tcontains\t{broth,noodle}
+S\ton\t[stove]
+O\tegg\t1
+S\tuncracked
+M\tcrack\t<Assumed>
+O\tpot\t0
+S\tcontains\t{broth,egg white and yolk,noodle}
+S\ton\t[stove]
+//
+O\tpot\t0
+S\tcontains\t{broth,egg white and yolk,noodle}
+S\ton\t[stove]
+M\tcook\t<Assumed>
+O\tegg white and yolk\t1
+S\tboiled
+S\tin\t[pot]
+O\tpot\t0
+S\tcontains\t{broth,egg white and yolk,noodle}
+S\tcooked
+S\ton\t[stove]
+//
+O\tpot\t0
+S\tcontains\t{broth,egg white and yolk,noodle}
+S\tcooked
+S\ton\t[stove]
+O\tbowl\t0
+S\tempty
+M\tscoop and pour\t<Assumed>
+O\tramen\t1\t14
+S\tcontains\t{broth,egg white and yolk,noodle}
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn a_food_poached_beside_the_ingredient_does_not_take_it_in() {
+    let files = [("ramen.txt", POACHED_EGG_RAMEN)];
+    let q = query("noodle", &[("noodle", "uncooked"), ("egg", "whole")]);
+    let p = plan_of(&files, &ExactMatch, &q);
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "noodle")
+        .unwrap();
+    // the noodles stay in the pot while the egg poaches beside them, then go into the ramen
+    assert!(
+        line.state.iter().all(|s| !s.physical_state.contains("egg")),
+        "{line:#?}"
+    );
+    assert_eq!(line.end_product, "ramen", "{line:#?}");
+}

@@ -2,8 +2,9 @@
 //! taxonomy), the motions a food of that form cannot take or join a dish by (`data/food_forms.tsv`),
 //! which foods must be cooked and how a cook prepares one named only by its category
 //! (`data/food_care.tsv`), the motions that cook (`data/heat_motions.txt`) and those that leave a food in
-//! a state of their own (`data/motion_states.tsv`), and which food an ambiguous name means in a given
-//! state (`data/food_readings.tsv`).
+//! a state of their own (`data/motion_states.tsv`), the cook's word for a motion FOON names otherwise
+//! (`data/motion_words.tsv`), and which food an ambiguous name means in a given state
+//! (`data/food_readings.tsv`).
 
 use crate::contract::plan::Query;
 use crate::foon::label::{normalize_label, normalize_word};
@@ -16,6 +17,7 @@ const CARE_TSV: &str = include_str!("../../data/food_care.tsv");
 const HEAT_TXT: &str = include_str!("../../data/heat_motions.txt");
 const READINGS_TSV: &str = include_str!("../../data/food_readings.tsv");
 const MOTION_STATES_TSV: &str = include_str!("../../data/motion_states.tsv");
+const MOTION_WORDS_TSV: &str = include_str!("../../data/motion_words.tsv");
 
 /// A physical form and the motion words it cannot take.
 #[derive(Debug)]
@@ -350,6 +352,21 @@ pub fn leaves_in(motion: &str) -> Option<&'static str> {
     table.get(motion.trim_end_matches('*').trim()).copied()
 }
 
+/// The cook's word for `motion` where it gives a food the state `state` (`data/motion_words.tsv`: a
+/// broccoli stem peeled by FOON's "skim" is peeled), if FOON names that motion otherwise.
+pub fn cooks_word(motion: &str, state: &str) -> Option<&'static str> {
+    static WORDS: OnceLock<HashMap<(&'static str, &'static str), &'static str>> = OnceLock::new();
+    let table = WORDS.get_or_init(|| {
+        crate::vocab::taxonomy::data_lines(MOTION_WORDS_TSV)
+            .filter_map(|l| {
+                let mut parts = l.split('\t').map(str::trim);
+                Some(((parts.next()?, parts.next()?), parts.next()?))
+            })
+            .collect()
+    });
+    table.get(&(motion, state)).copied()
+}
+
 /// (name, asked state) -> the food meant, in normal form.
 fn readings() -> &'static HashMap<(String, String), String> {
     static READINGS: OnceLock<HashMap<(String, String), String>> = OnceLock::new();
@@ -546,6 +563,8 @@ mod tests {
         assert!(paste.never_in.iter().any(|s| s == "powder"));
         assert_eq!(paste.state_when_none.as_deref(), Some("paste"));
         assert_eq!(form_of("cheddar").unwrap().state_when_none, None);
+        assert_eq!(cooks_word("skim", "peeled"), Some("peel"));
+        assert_eq!(cooks_word("skim", "skimmed"), None);
         assert!(!shows_cooking("salt") && !shows_cooking("olive oil"));
         assert!(shows_cooking("carrot") && shows_cooking("flour") && shows_cooking("rice"));
     }

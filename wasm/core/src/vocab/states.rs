@@ -239,14 +239,16 @@ pub(crate) fn state_text(node: &ObjectNode) -> SmolStr {
 }
 
 /// Whether the state `s` of `node` was undone by another of its states (a node keeps the states it was
-/// given on the way): "unpeeled" beside "peeled", "uncooked" or "raw" beside a cooked state, "softened"
-/// beside "melted", the piece it was bought as ("whole", "block", "clove") once it is cut, what was
-/// trimmed off ("peeled") once it is grated, ground, juiced or mixed.
+/// given on the way): "unpeeled" beside "peeled", "uncooked", "raw" or "partly cooked" beside a cooked
+/// state, "softened" beside "melted", the piece it was bought as ("whole", "block", "clove") once it is
+/// cut, what was trimmed off ("peeled") once it is grated, ground, juiced or mixed.
 fn undone(node: &ObjectNode, s: &str) -> bool {
     let any = |f: &dyn Fn(&str) -> bool| node.physical_states().any(f);
     let un = s.strip_prefix("un").is_some_and(|done| any(&|t| t == done));
     un || match s {
         "uncooked" | "raw" => any(&|t| category(t) == Category::Cooked),
+        // canned beans "cooked" are not also "partly cooked" by the pot they sit in
+        "partly cooked" => any(&|t| t != s && category(t) == Category::Cooked),
         "softened" => any(&|t| t == "melted"),
         _ => match category(s) {
             Category::Whole => any(&|t| {
@@ -292,6 +294,14 @@ mod tests {
             ObjectNode::new("rice", states.iter().map(|s| State::plain(s)).collect())
         };
         assert_eq!(state_text(&node(&["uncooked", "cooked"])), "cooked");
+        assert_eq!(
+            state_text(&node(&["cooked", "partly cooked", "soaked"])),
+            "cooked, soaked"
+        );
+        assert_eq!(
+            state_text(&node(&["partly cooked", "soaked"])),
+            "partly cooked, soaked"
+        );
         assert_eq!(
             state_text(&node(&["halved", "peeled", "unpeeled"])),
             "halved, peeled"

@@ -151,6 +151,7 @@ pub(crate) fn modify<'kb>(
         d.finish_planned(ctx, tree);
         cook_dish(ctx, tree, notes);
         name_for_query(ctx, tree, query, notes);
+        name_motions(tree);
     } else {
         notes.push("modification off: the reference task tree as retrieved".to_string());
     }

@@ -1,6 +1,7 @@
 //! Naming: after modification, the dish and the mixtures on the way to it are named for what they hold
 //! and for the dish asked. A reference's "apple cake" made without apples for a bread is "bread"; its
-//! "cake batter" is "batter"; an "egg mixture" the egg never joins is a "mixture".
+//! "cake batter" is "batter"; an "egg mixture" the egg never joins is a "mixture". A motion FOON names
+//! otherwise takes the cook's word for what it does (a stem "skimmed" peeled is peeled).
 
 use super::*;
 use crate::foon::label::singular;
@@ -70,6 +71,29 @@ pub(super) fn name_for_query(
                 "the dish is called '{to}': the reference task tree made '{from}', a name the asked \
                  dish and ingredients do not bear out"
             ));
+        }
+    }
+}
+
+/// Gives a unit the cook's word for its motion (`foods::cooks_word`) where it gives a food the state
+/// that word is for.
+pub(super) fn name_motions(tree: &mut Tree) {
+    for u in 0..tree.units.len() {
+        let unit = &tree.units[u];
+        let had = |label: &str, state: &str| {
+            unit.inputs.iter().any(|i| {
+                let n = &tree.slots[i.0].node;
+                n.label == label && n.physical_states().any(|s| s == state)
+            })
+        };
+        let word = unit.outputs.iter().find_map(|o| {
+            let n = &tree.slots[o.0].node;
+            n.physical_states()
+                .filter(|s| !had(&n.label, s))
+                .find_map(|s| foods::cooks_word(&unit.motion, s))
+        });
+        if let Some(word) = word {
+            tree.units[u].motion = Cow::Borrowed(word);
         }
     }
 }
@@ -174,6 +198,7 @@ impl Namer {
     /// the foods it holds ("blueberry muffin" asked as a cake: "blueberry cake"). `None`: it stays.
     fn dish(&self, label: &str, held: &HashSet<&str>) -> Option<String> {
         let words: Vec<&str> = label.split(' ').collect();
+        let held = &with_compounds(&words, held);
         let (head, modifiers) = words.split_last()?;
         // "butter cream" holding butter keeps its name; "black bean" holding no bean does not
         let head_gone = !self.keeps(head, held) && !words.iter().any(|w| held.contains(w));
@@ -221,6 +246,20 @@ impl Namer {
         let to = join_words(&kept, head);
         (to != label).then_some(to)
     }
+}
+
+/// `held` and the other word of a two-word food the name holds one word of: a cake of "chip" (as
+/// recipe data shortens chocolate chips) keeps its "chocolate chip".
+fn with_compounds<'a>(words: &[&'a str], held: &HashSet<&'a str>) -> HashSet<&'a str> {
+    let mut with = held.clone();
+    for pair in words.windows(2) {
+        if pair.iter().any(|w| held.contains(w) && is_food_word(w))
+            && foods::kind(&pair.join(" ")).is_some()
+        {
+            with.extend(pair.iter().copied());
+        }
+    }
+    with
 }
 
 fn join_words(modifiers: &[String], head: &str) -> String {

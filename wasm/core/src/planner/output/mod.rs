@@ -74,12 +74,19 @@ pub(crate) fn build(p: Parts) -> Plan {
     let mut progress_lines = Vec::with_capacity(p.outcomes.len());
     let mut done: Vec<&str> = Vec::with_capacity(p.outcomes.len());
     let mut slots = Vec::new();
+    // "pepper — ground" is a spice, whatever the tree's other peppers are
+    let readings = foods::query_readings(&p.query);
     for o in &p.outcomes {
         if o.status != Status::Planned || done.contains(&o.object.as_str()) {
             continue;
         }
         done.push(&o.object);
-        if let Some(line) = progress_line(order, &uses, &o.object, &mut slots, &mut relations) {
+        let food = readings
+            .get(o.object.as_str())
+            .copied()
+            .unwrap_or(&o.object);
+        let line = progress_line(order, &uses, (&o.object, food), &mut slots, &mut relations);
+        if let Some(line) = line {
             progress_lines.push(line);
         }
     }

@@ -61,11 +61,12 @@ pub(super) fn location(n: &ObjectNode) -> SmolStr {
 /// The ingredient's states and places from its starting node, the motions between them, and the dish:
 /// once it has gone into a food (flour into the batter), the line follows that food on, to the goal
 /// (the batter poured into the pan and baked into the muffin). `slots`: a buffer reused from line to
-/// line (the slots a walk passes through, then the vessels `product_of` follows).
+/// line (the slots a walk passes through, then the vessels `product_of` follows). `food`: what the
+/// label stands for (`foods::query_readings`: black pepper for "pepper — ground").
 pub(super) fn progress_line<'t>(
     order: &[TUnitId],
     uses: &Uses,
-    label: &str,
+    (label, food): (&str, &str),
     slots: &mut Vec<SlotId>,
     relations: &mut Relations<'t>,
 ) -> Option<ProgressLine> {
@@ -84,7 +85,7 @@ pub(super) fn progress_line<'t>(
     }
     let mut first = None;
     for start in starts {
-        let line = line_from(order, uses, label, start, slots, relations);
+        let line = line_from(order, uses, (label, food), start, slots, relations);
         if reaches_dish(&line, &relations.tree.slots[relations.tree.goal].node.label) {
             return Some(line);
         }
@@ -106,10 +107,10 @@ pub(crate) fn reaches_dish(line: &ProgressLine, goal: &str) -> bool {
 }
 
 /// `progress_line` from the starting slot `start`.
-pub(super) fn line_from<'t>(
+fn line_from<'t>(
     order: &[TUnitId],
     uses: &Uses,
-    label: &str,
+    (label, food): (&str, &str),
     start: SlotId,
     slots: &mut Vec<SlotId>,
     relations: &mut Relations<'t>,
@@ -152,7 +153,7 @@ pub(super) fn line_from<'t>(
         }
         motions.extend(walked.motions);
     }
-    if !foods::shows_cooking(label) {
+    if !foods::shows_cooking(food) {
         unseen_cooking(&mut states);
     }
     carry_states(&mut states);
@@ -392,13 +393,24 @@ pub(super) fn walk<'t>(
                 // the vessel; the food itself taken in by another goes with that one
                 let in_vessel = tree.slots[at].utensil;
                 let dish = || outputs.iter().find(|o| o.0 == tree.goal);
-                let entered = dish().or_else(|| lists(true)).or_else(fresh).or_else(|| {
-                    if in_vessel {
-                        lists(false).or_else(grew)
-                    } else {
-                        grew().or_else(|| lists(false))
-                    }
-                });
+                // a new food beside the vessel that still holds it (an egg poached in the broth): it
+                // stays in the vessel when a food is made of the vessel's contents later
+                let beside = || {
+                    let vessel = lists(false).filter(|_| in_vessel)?;
+                    let mut buffer = Vec::new();
+                    product_of(tree, order, pos, vessel.0, label, &mut buffer).map(|_| vessel)
+                };
+                let entered = dish()
+                    .or_else(|| lists(true))
+                    .or_else(beside)
+                    .or_else(fresh)
+                    .or_else(|| {
+                        if in_vessel {
+                            lists(false).or_else(grew)
+                        } else {
+                            grew().or_else(|| lists(false))
+                        }
+                    });
                 match entered {
                     Some(&(o, _)) => {
                         let n = &tree.slots[o].node;
