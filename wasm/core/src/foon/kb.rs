@@ -126,7 +126,7 @@ impl KnowledgeBase {
         }
         let mut producers = vec![Vec::new(); nodes.len()];
         let mut consumers = vec![Vec::new(); nodes.len()];
-        for (id, u) in units.iter().enumerate() {
+        for (id, u) in UnitId::all(units.len()).zip(&units) {
             for n in u.output_nodes() {
                 producers[n].push(id);
             }
@@ -134,9 +134,8 @@ impl KnowledgeBase {
                 consumers[n].push(id);
             }
         }
-        let kitchen = nodes
-            .iter()
-            .enumerate()
+        let kitchen = NodeId::all(nodes.len())
+            .zip(&nodes)
             .map(|(i, n)| producers[i].is_empty() || is_raw(n))
             .collect();
 
@@ -193,11 +192,21 @@ impl KnowledgeBase {
         self.node_index.get(node).copied()
     }
 
+    /// Every object node with its id.
+    pub fn each_node(&self) -> impl Iterator<Item = (NodeId, &ObjectNode)> {
+        NodeId::all(self.nodes.len()).zip(&self.nodes)
+    }
+
+    /// Every functional unit with its id.
+    pub fn each_unit(&self) -> impl Iterator<Item = (UnitId, &FunctionalUnit)> {
+        UnitId::all(self.units.len()).zip(&self.units)
+    }
+
     /// The units of each subgraph, ascending (one pass: asking per subgraph would scan every unit for
     /// every file, which is quadratic in a large universal FOON).
     pub fn units_by_subgraph(&self) -> HashMap<&str, Vec<UnitId>> {
         let mut out: HashMap<&str, Vec<UnitId>> = HashMap::new();
-        for (u, files) in self.provenance.iter().enumerate() {
+        for (u, files) in UnitId::all(self.provenance.len()).zip(&self.provenance) {
             for f in files.iter() {
                 out.entry(f.as_str()).or_default().push(u);
             }
@@ -251,8 +260,7 @@ fn numbered_nodes(subgraphs: &[Subgraph]) -> (Vec<ObjectNode>, FxHashMap<ObjectN
     let node_index: FxHashMap<ObjectNode, NodeId> = nodes
         .iter()
         .cloned()
-        .enumerate()
-        .map(|(i, n)| (n, i))
+        .zip(NodeId::all(nodes.len()))
         .collect();
     (nodes, node_index)
 }

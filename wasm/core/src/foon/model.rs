@@ -204,10 +204,64 @@ impl std::fmt::Display for ObjectNode {
     }
 }
 
-/// Index of an object node in a knowledge base.
-pub type NodeId = usize;
-/// Index of a functional unit in a knowledge base.
-pub type UnitId = usize;
+/// Defines an id type: the position of one item in the knowledge base's list of such items, which
+/// indexes any list kept in step with it (`kb.nodes[id]`, `kb.producers[id]`, `seen[id]`).
+macro_rules! id_type {
+    ($(#[$doc:meta])* $name:ident) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+        #[serde(transparent)]
+        pub struct $name(pub usize);
+
+        impl $name {
+            /// Every id of a list of `len` items.
+            pub fn all(len: usize) -> impl DoubleEndedIterator<Item = $name> + Clone {
+                (0..len).map($name)
+            }
+        }
+
+        impl std::fmt::Display for $name {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                self.0.fmt(f)
+            }
+        }
+
+        impl<T> std::ops::Index<$name> for [T] {
+            type Output = T;
+            fn index(&self, id: $name) -> &T {
+                &self[id.0]
+            }
+        }
+
+        impl<T> std::ops::IndexMut<$name> for [T] {
+            fn index_mut(&mut self, id: $name) -> &mut T {
+                &mut self[id.0]
+            }
+        }
+
+        impl<T> std::ops::Index<$name> for Vec<T> {
+            type Output = T;
+            fn index(&self, id: $name) -> &T {
+                &self[id.0]
+            }
+        }
+
+        impl<T> std::ops::IndexMut<$name> for Vec<T> {
+            fn index_mut(&mut self, id: $name) -> &mut T {
+                &mut self[id.0]
+            }
+        }
+    };
+}
+
+id_type!(
+    /// An object node of a knowledge base: its place in `KnowledgeBase::nodes`.
+    NodeId
+);
+id_type!(
+    /// A functional unit of a knowledge base: its place in `KnowledgeBase::units`.
+    UnitId
+);
 
 /// An object node as used by one functional unit: `moves` is FOON's motion flag
 /// (1 = the object is manipulated or changes, 0 = it is only present).

@@ -75,7 +75,7 @@ impl Search {
     /// without the walk.
     #[inline]
     fn depends_on(&mut self, kb: &KnowledgeBase, from: NodeId, target: NodeId) -> bool {
-        from == target || (self.made.contains(from) && self.walk_to(kb, from, target))
+        from == target || (self.made.contains(from.0) && self.walk_to(kb, from, target))
     }
 
     /// `depends_on`'s walk from a made node, through made nodes only (the others lead nowhere).
@@ -91,7 +91,7 @@ impl Search {
                 if i == target {
                     return true;
                 }
-                if self.made.contains(i) {
+                if self.made.contains(i.0) {
                     self.stack.push(i);
                 }
             }
@@ -109,28 +109,28 @@ impl Search {
         // iterative DFS over made nodes: (node, its unit once its inputs are pushed)
         let stack = &mut self.order_stack;
         stack.clear();
-        if self.made.contains(root) {
+        if self.made.contains(root.0) {
             stack.push((root, None));
         }
         while let Some((node, expanded)) = stack.pop() {
             if let Some(u) = expanded {
-                if !self.done.put(u) {
+                if !self.done.put(u.0) {
                     order.push(u);
                 }
                 continue;
             }
             let u = self.chosen[&node];
-            if self.reached.put(node) || self.done.contains(u) {
+            if self.reached.put(node.0) || self.done.contains(u.0) {
                 continue;
             }
             stack.push((node, Some(u)));
             self.inputs.clear();
             let made = &self.made;
             self.inputs
-                .extend(kb.units[u].input_nodes().filter(|&n| made.contains(n)));
+                .extend(kb.units[u].input_nodes().filter(|&n| made.contains(n.0)));
             self.inputs.sort_unstable();
             for &n in self.inputs.iter().rev() {
-                if !self.reached.contains(n) {
+                if !self.reached.contains(n.0) {
                     stack.push((n, None));
                 }
             }
@@ -300,10 +300,10 @@ fn search(
         }
         s.queue.clear();
         s.queue.push_back((root, None));
-        s.visited.insert(root);
+        s.visited.insert(root.0);
         let mut blocked = Vec::new();
         while let Some((node, parent)) = s.queue.pop_front() {
-            if node != root && kb.kitchen.get(node).copied().unwrap_or(true) {
+            if node != root && kb.kitchen.get(node.0).copied().unwrap_or(true) {
                 trace.record(|t| t.retrieval.push(taken(kb, node, Outcome::Kitchen)));
                 continue;
             }
@@ -312,7 +312,7 @@ fn search(
                 trace.record(|t| t.retrieval.push(taken(kb, node, Outcome::RecipeStart)));
                 continue;
             }
-            let Some(producers) = kb.producers.get(node) else {
+            let Some(producers) = kb.producers.get(node.0) else {
                 continue;
             };
             if producers.is_empty() {
@@ -340,7 +340,7 @@ fn search(
                 }
                 let mut candidate = Candidate {
                     unit: u,
-                    reused: s.in_tree.contains(u),
+                    reused: s.in_tree.contains(u.0),
                     same_recipe,
                     detour: None,
                     g: None,
@@ -393,13 +393,13 @@ fn search(
                 return None;
             }
             s.chosen.insert(node, u);
-            s.made.insert(node);
-            s.in_tree.insert(u);
+            s.made.insert(node.0);
+            s.in_tree.insert(u.0);
             s.inputs.clear();
             s.inputs.extend(kb.units[u].input_nodes());
             s.inputs.sort_unstable();
             for &n in &s.inputs {
-                if !s.visited.put(n) {
+                if !s.visited.put(n.0) {
                     s.queue.push_back((n, Some(u)));
                 }
             }
