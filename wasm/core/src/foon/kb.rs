@@ -94,22 +94,7 @@ type GoalMarkOf = (String, NodeId, Option<u32>);
 impl KnowledgeBase {
     /// Merges subgraphs into one universal FOON.
     pub fn merge(subgraphs: &[Subgraph]) -> Result<KnowledgeBase> {
-        let units_before_merge: usize = subgraphs.iter().map(|g| g.units.len()).sum();
-        if units_before_merge > limits::MAX_UNITS {
-            return Err(FoonError::new(
-                ErrorCode::TooLarge,
-                format!(
-                    "the knowledge base has {units_before_merge} functional units over all files; the limit is {}",
-                    limits::MAX_UNITS
-                ),
-            ));
-        }
-        if units_before_merge == 0 {
-            return Err(FoonError::new(
-                ErrorCode::EmptyKnowledgeBase,
-                "the knowledge base has no functional units (no FOON files, or only empty ones)",
-            ));
-        }
+        let units_before_merge = unit_count(subgraphs)?;
         let (nodes, node_index) = numbered_nodes(subgraphs);
         let (merged, goal_marks) = merged_units(subgraphs, &node_index);
         let mut units = Vec::with_capacity(merged.len());
@@ -124,16 +109,7 @@ impl KnowledgeBase {
             });
             provenance.push(files.into_iter().collect());
         }
-        let mut producers = vec![Vec::new(); nodes.len()];
-        let mut consumers = vec![Vec::new(); nodes.len()];
-        for (id, u) in UnitId::all(units.len()).zip(&units) {
-            for n in u.output_nodes() {
-                producers[n].push(id);
-            }
-            for n in u.input_nodes() {
-                consumers[n].push(id);
-            }
-        }
+        let (producers, consumers) = producers_and_consumers(nodes.len(), &units);
         let kitchen = NodeId::all(nodes.len())
             .zip(&nodes)
             .map(|(i, n)| producers[i].is_empty() || is_raw(n))
@@ -243,6 +219,45 @@ impl KnowledgeBase {
             .filter(|l| !is_utensil(l))
             .collect()
     }
+}
+
+/// The number of units of all subgraphs before merging: an error when there are none, or too many.
+fn unit_count(subgraphs: &[Subgraph]) -> Result<usize> {
+    let count: usize = subgraphs.iter().map(|g| g.units.len()).sum();
+    if count > limits::MAX_UNITS {
+        return Err(FoonError::new(
+            ErrorCode::TooLarge,
+            format!(
+                "the knowledge base has {count} functional units over all files; the limit is {}",
+                limits::MAX_UNITS
+            ),
+        ));
+    }
+    if count == 0 {
+        return Err(FoonError::new(
+            ErrorCode::EmptyKnowledgeBase,
+            "the knowledge base has no functional units (no FOON files, or only empty ones)",
+        ));
+    }
+    Ok(count)
+}
+
+/// Per node, the units making it and the units taking it.
+fn producers_and_consumers(
+    nodes: usize,
+    units: &[FunctionalUnit],
+) -> (Vec<Vec<UnitId>>, Vec<Vec<UnitId>>) {
+    let mut producers = vec![Vec::new(); nodes];
+    let mut consumers = vec![Vec::new(); nodes];
+    for (id, u) in UnitId::all(units.len()).zip(units) {
+        for n in u.output_nodes() {
+            producers[n].push(id);
+        }
+        for n in u.input_nodes() {
+            consumers[n].push(id);
+        }
+    }
+    (producers, consumers)
 }
 
 /// The distinct object nodes of all subgraphs, numbered in sorted order so that ids do not depend on

@@ -132,28 +132,13 @@ pub(crate) fn dedup_slots(uses: &mut Vec<(SlotId, bool)>) {
 }
 
 /// What a unit does, in values (see `Tree::values`): its motion's id, its inputs' values sorted, a
-/// separator, its outputs' values sorted. Units with equal keys are the same step of a plan. Written
-/// at the start of `free`, which keeps the rest (the keys of a round share one buffer).
-fn value_key<'b>(
-    unit: &TUnit,
-    motion: usize,
-    value: &[usize],
-    free: &mut &'b mut [usize],
-) -> &'b [usize] {
-    let outs = unit.inputs.len() + 2;
-    let (key, rest) = std::mem::take(free).split_at_mut(outs + unit.outputs.len());
-    *free = rest;
-    key[0] = motion;
-    for (k, i) in key[1..].iter_mut().zip(&unit.inputs) {
-        *k = value[i.0];
-    }
-    key[1..outs - 1].sort_unstable();
-    key[outs - 1] = usize::MAX;
-    for (k, o) in key[outs..].iter_mut().zip(&unit.outputs) {
-        *k = value[o.0];
-    }
-    key[outs..].sort_unstable();
-    key
+/// separator, its outputs' values sorted. Units with equal keys are the same step of a plan.
+fn value_key(unit: &TUnit, motion: usize, value: &[usize]) -> Vec<usize> {
+    let mut ins: Vec<usize> = unit.inputs.iter().map(|i| value[i.0]).collect();
+    let mut outs: Vec<usize> = unit.outputs.iter().map(|o| value[o.0]).collect();
+    ins.sort_unstable();
+    outs.sort_unstable();
+    [&[motion][..], &ins, &[usize::MAX], &outs].concat()
 }
 
 /// Whether what `node` holds goes on into `theirs`, made by a unit taking it: a food made from a food
@@ -636,86 +621,8 @@ impl<'kb> Tree<'kb> {
             if changed {
                 order = self.order();
             }
-            // position of the last unit using each slot (inputs as they are at the start of the round)
-            let mut last_use: Vec<Option<usize>> = vec![None; self.slots.len()];
-            for (pos, &u) in order.iter().enumerate() {
-                for i in &self.units[u].inputs {
-                    last_use[i.0] = Some(pos);
-                }
-            }
             let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
-            // room for every key of the round (inputs only get fewer in it)
-            let room = order
-                .iter()
-                .map(|&u| self.units[u].inputs.len() + self.units[u].outputs.len() + 2)
-                .sum();
-            let mut keys = vec![0; room];
-            let mut free = keys.as_mut_slice();
-            let mut first: HashMap<&[usize], TUnitId> =
-                HashMap::with_capacity_and_hasher(order.len(), Default::default());
-            for (pos, &u) in order.iter().enumerate() {
-                {
-                    let unit = &mut self.units[u];
-                    for i in unit.inputs.iter_mut() {
-                        while let Some(&a) = alias.get(&i.0) {
-                            if a == i.0 {
-                                break;
-                            }
-                            i.0 = a;
-                        }
-                    }
-                    dedup_slots(&mut unit.inputs);
-                }
-                let unit = &self.units[u];
-                let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
-                let key = value_key(unit, motion[u], &value, &mut free);
-                if !makes_goal {
-                    if let Some(&f) = first.get(&key) {
-                        let theirs = self.units[f].outputs.clone();
-                        for &(o, _) in &self.units[u].outputs {
-                            if let Some(&(t, _)) = theirs.iter().find(|t| value[t.0] == value[o]) {
-                                if t != o {
-                                    alias.insert(o, t);
-                                }
-                            }
-                        }
-                        self.units[u].alive = false;
-                        changed = true;
-                        continue;
-                    }
-                }
-                // new products a later unit uses (or the goal)
-                let ins = &key[1..=unit.inputs.len()];
-                let useful = unit.outputs.iter().any(|&(o, _)| {
-                    !ins.contains(&value[o])
-                        && (o == self.goal || last_use[o].is_some_and(|l| l > pos))
-                });
-                first.insert(key, u);
-                if makes_goal && !useful {
-                    // the goal's last unit changes nothing: the goal is its equal input
-                    if let Some(&(i, _)) =
-                        unit.inputs.iter().find(|i| value[i.0] == value[self.goal])
-                    {
-                        if self.producer[i].is_some() {
-                            self.goal = i;
-                            self.units[u].alive = false;
-                            changed = true;
-                            break;
-                        }
-                    }
-                }
-                if !useful && !makes_goal {
-                    for &(o, _) in &unit.outputs {
-                        if let Some(&(i, _)) = unit.inputs.iter().find(|i| value[i.0] == value[o]) {
-                            if i != o {
-                                alias.insert(o, i);
-                            }
-                        }
-                    }
-                    self.units[u].alive = false;
-                    changed = true;
-                }
-            }
+            changed |= self.drop_round(&order, &value, &motion, &mut alias);
             if !changed {
                 // as after a round that changed something, the units the goal does not need go
                 self.keep_only(&order);
@@ -739,6 +646,87 @@ impl<'kb> Tree<'kb> {
             self.keep_only(&order);
         }
         (value, order)
+    }
+
+    /// One round of `drop_redundant_units` over `order`: drops the units equal to an earlier one or
+    /// making nothing new, recording in `alias` the slot standing for each output of a dropped unit.
+    /// Whether it dropped any.
+    fn drop_round(
+        &mut self,
+        order: &[TUnitId],
+        value: &[usize],
+        motion: &[usize],
+        alias: &mut HashMap<SlotId, SlotId>,
+    ) -> bool {
+        let mut changed = false;
+        // position of the last unit using each slot (inputs as they are at the start of the round)
+        let mut last_use: Vec<Option<usize>> = vec![None; self.slots.len()];
+        for (pos, &u) in order.iter().enumerate() {
+            for i in &self.units[u].inputs {
+                last_use[i.0] = Some(pos);
+            }
+        }
+        let mut first: HashMap<Vec<usize>, TUnitId> = HashMap::default();
+        for (pos, &u) in order.iter().enumerate() {
+            {
+                let unit = &mut self.units[u];
+                for i in unit.inputs.iter_mut() {
+                    while let Some(&a) = alias.get(&i.0) {
+                        if a == i.0 {
+                            break;
+                        }
+                        i.0 = a;
+                    }
+                }
+                dedup_slots(&mut unit.inputs);
+            }
+            let unit = &self.units[u];
+            let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
+            let key = value_key(unit, motion[u], value);
+            if !makes_goal {
+                if let Some(&f) = first.get(&key) {
+                    let theirs = self.units[f].outputs.clone();
+                    for &(o, _) in &self.units[u].outputs {
+                        if let Some(&(t, _)) = theirs.iter().find(|t| value[t.0] == value[o]) {
+                            if t != o {
+                                alias.insert(o, t);
+                            }
+                        }
+                    }
+                    self.units[u].alive = false;
+                    changed = true;
+                    continue;
+                }
+            }
+            // new products a later unit uses (or the goal)
+            let ins = &key[1..=unit.inputs.len()];
+            let useful = unit.outputs.iter().any(|&(o, _)| {
+                !ins.contains(&value[o]) && (o == self.goal || last_use[o].is_some_and(|l| l > pos))
+            });
+            if makes_goal && !useful {
+                // the goal's last unit changes nothing: the goal is its equal input
+                if let Some(&(i, _)) = unit.inputs.iter().find(|i| value[i.0] == value[self.goal]) {
+                    if self.producer[i].is_some() {
+                        self.goal = i;
+                        self.units[u].alive = false;
+                        return true;
+                    }
+                }
+            }
+            if !useful && !makes_goal {
+                for &(o, _) in &unit.outputs {
+                    if let Some(&(i, _)) = unit.inputs.iter().find(|i| value[i.0] == value[o]) {
+                        if i != o {
+                            alias.insert(o, i);
+                        }
+                    }
+                }
+                self.units[u].alive = false;
+                changed = true;
+            }
+            first.insert(key, u);
+        }
+        changed
     }
 
     /// An id per unit, equal for units with the same motion.

@@ -183,6 +183,49 @@ fn outputs_of_removed(
     labels
 }
 
+/// Per unit, before pruning: whether it handled an ingredient, and whether something it moved did.
+fn handled_before(tree: &Tree, order: &[TUnitId]) -> Vec<(bool, bool)> {
+    let none_gone = vec![false; tree.slots.len()];
+    let mut before = vec![(false, false); tree.units.len()];
+    for &u in order {
+        let inputs = &tree.units[u].inputs;
+        before[u] = (
+            handles_any(tree, inputs, &none_gone),
+            inputs
+                .iter()
+                .any(|&(x, m)| m && handles(tree, x, &none_gone)),
+        );
+    }
+    before
+}
+
+/// Whether a unit, with its uses as they are after pruning (`inputs`, `outputs`) and what it handled
+/// before (`handled_before`), is left doing nothing.
+fn does_nothing(
+    tree: &Tree,
+    (had_food, moved_food): (bool, bool),
+    inputs: &[(SlotId, bool)],
+    outputs: &[(SlotId, bool)],
+    gone: &[bool],
+) -> bool {
+    let lost_all = had_food && !handles_any(tree, inputs, gone);
+    // nothing new comes out: every output is one of the inputs as they are now
+    let no_op = outputs.iter().all(|o| {
+        inputs
+            .iter()
+            .any(|i| i.0 == o.0 || tree.slots[i.0].node == tree.slots[o.0].node)
+    });
+    // a unit whose moved things all lost their food (an empty bowl poured into the pot, the egg
+    // cracked into the broth) acts on nothing, and gives back only things of the names it took
+    let label = |x: SlotId| tree.slots[x].node.label.as_str();
+    let moves_nothing = moved_food
+        && !inputs.iter().any(|&(x, m)| m && handles(tree, x, gone))
+        && outputs
+            .iter()
+            .all(|o| inputs.iter().any(|i| label(i.0) == label(o.0)));
+    lost_all || no_op || moves_nothing || outputs.is_empty()
+}
+
 /// Removes every starting ingredient not asked for (`keep`: planned so far; `requested`: the query's
 /// names, some still to be brought in), with the units that only served it; containers that held it
 /// pass on unchanged, and it leaves every `contains {…}` list. Returns the removed labels.
@@ -208,17 +251,9 @@ pub(super) fn prune(
         return Vec::new();
     }
     let going: HashSet<&str> = pruned.iter().map(String::as_str).collect();
+    let before = handled_before(tree, &order);
     // per slot, whether it is pruned
     let mut gone = vec![false; tree.slots.len()];
-    // per unit, whether it handled an ingredient before pruning
-    let mut had = vec![false; tree.units.len()];
-    // per unit, whether something it moved did
-    let mut moved_food = vec![false; tree.units.len()];
-    for &u in &order {
-        let inputs = &tree.units[u].inputs;
-        had[u] = handles_any(tree, inputs, &gone);
-        moved_food[u] = inputs.iter().any(|&(x, m)| m && handles(tree, x, &gone));
-    }
     // the dish's own name stays in the lists of its side, where it means the dish
     drop_contents(tree, &|x, item| {
         going.contains(item) || (namesake && item == dish && !dish_side[x])
@@ -256,22 +291,7 @@ pub(super) fn prune(
         outputs.clear();
         outputs.extend(tree.units[u].outputs.iter().filter(|o| !gone[o.0]));
         let makes_goal = outputs.iter().any(|o| o.0 == goal);
-        let lost_all = had[u] && !handles_any(tree, &inputs, &gone);
-        // nothing new comes out: every output is one of the inputs as they are now
-        let no_op = outputs.iter().all(|o| {
-            inputs
-                .iter()
-                .any(|i| i.0 == o.0 || tree.slots[i.0].node == tree.slots[o.0].node)
-        });
-        // a unit whose moved things all lost their food (an empty bowl poured into the pot, the egg
-        // cracked into the broth) acts on nothing, and gives back only things of the names it took
-        let label = |x: SlotId| tree.slots[x].node.label.as_str();
-        let moves_nothing = moved_food[u]
-            && !inputs.iter().any(|&(x, m)| m && handles(tree, x, &gone))
-            && outputs
-                .iter()
-                .all(|o| inputs.iter().any(|i| label(i.0) == label(o.0)));
-        if (lost_all || no_op || moves_nothing || outputs.is_empty()) && !makes_goal {
+        if !makes_goal && does_nothing(tree, before[u], &inputs, &outputs, &gone) {
             tree.units[u].alive = false;
             let gone_with = outputs_of_removed(tree, &inputs, &outputs, &mut alias, &mut gone);
             let unlisted = |l: &String| !keep.contains(l.as_str()) && !going.contains(l.as_str());
@@ -295,16 +315,15 @@ pub(super) fn prune(
         dedup_slots(&mut unit.inputs);
         unit.outputs.clone_from(&outputs);
     }
-    // the goal may have been passed through a removed unit
-    // labels made only by removed units leave the lists of contents as well (the slots still live are
-    // listed only when there are such labels)
+    // labels made only by removed units leave the lists of contents as well
+    with_units.retain(|l| {
+        !tree
+            .live_slots()
+            .any(|x| !gone[x] && tree.slots[x].node.label == *l)
+    });
     if !with_units.is_empty() {
-        let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
-        with_units.retain(|l| !still.iter().any(|&x| tree.slots[x].node.label == *l));
-        if !with_units.is_empty() {
-            drop_contents(tree, &|_, item| with_units.contains(item));
-            pruned.extend(with_units);
-        }
+        drop_contents(tree, &|_, item| with_units.contains(item));
+        pruned.extend(with_units);
     }
     if namesake {
         pruned.insert(dish.to_string());
