@@ -30,6 +30,7 @@ pub(crate) struct Retrieved {
 
 /// The search's tables, kept by the thread and cleared for each retrieval: case 4 retrieves for many
 /// candidates.
+#[derive(Default)]
 pub(crate) struct Search {
     /// The unit chosen to make each node, handed to the result when the search completes.
     chosen: HashMap<NodeId, UnitId>,
@@ -48,25 +49,6 @@ pub(crate) struct Search {
     done: FixedBitSet,
     reached: FixedBitSet,
     order_stack: Vec<(NodeId, Option<UnitId>)>,
-}
-
-impl Default for Search {
-    /// Sized for a typical recipe's tree, so that the tables do not grow step by step.
-    fn default() -> Self {
-        Search {
-            chosen: HashMap::default(),
-            made: FixedBitSet::new(),
-            in_tree: FixedBitSet::new(),
-            visited: FixedBitSet::new(),
-            queue: VecDeque::new(),
-            inputs: Vec::new(),
-            stack: Vec::new(),
-            seen: HashSet::default(),
-            done: FixedBitSet::new(),
-            reached: FixedBitSet::new(),
-            order_stack: Vec::new(),
-        }
-    }
 }
 
 impl Search {

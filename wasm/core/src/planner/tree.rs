@@ -209,9 +209,7 @@ impl<'kb> Tree<'kb> {
     /// A tree from a retrieval result whose root is the goal.
     pub fn from_retrieved(kb: &'kb KnowledgeBase, r: &Retrieved, root: NodeId) -> Tree<'kb> {
         let mut t = Tree::default();
-        // a unit has a few objects: sized so that the tables do not grow step by step
-        let mut slot_of: HashMap<NodeId, SlotId> =
-            HashMap::with_capacity_and_hasher(4 * r.units.len() + 1, Default::default());
+        let mut slot_of: HashMap<NodeId, SlotId> = HashMap::default();
         t.goal = t.kb_slot(kb, root, &mut slot_of);
         t.add_retrieved(kb, r, &mut slot_of, Origin::Reference);
         t
@@ -244,25 +242,14 @@ impl<'kb> Tree<'kb> {
         slot_of: &mut HashMap<NodeId, SlotId>,
         origin: Origin,
     ) {
-        // at most one new slot per object of a unit: the tables grow once, not step by step
-        let objects: usize = r
-            .units
-            .iter()
-            .map(|&u| kb.units[u].inputs.len() + kb.units[u].outputs.len())
-            .sum();
-        self.slots.reserve(objects);
-        self.producer.reserve(objects);
-        self.units.reserve(r.units.len());
         for &u in &r.units {
             let unit = &kb.units[u];
             let tu = self.units.len();
-            // room for one more: a new ingredient joins one of these units (`modify::finish_branch`)
-            let mut inputs = Vec::with_capacity(unit.inputs.len() + 1);
-            inputs.extend(
-                unit.inputs
-                    .iter()
-                    .map(|o| (self.kb_slot(kb, o.node, slot_of), o.moves)),
-            );
+            let inputs = unit
+                .inputs
+                .iter()
+                .map(|o| (self.kb_slot(kb, o.node, slot_of), o.moves))
+                .collect();
             let outputs = unit
                 .outputs
                 .iter()
@@ -439,16 +426,12 @@ impl<'kb> Tree<'kb> {
     /// Ingredient labels in the tree (not utensils, not the goal's own label), sorted and unique.
     pub fn ingredient_labels(&self) -> Vec<&str> {
         let goal = self.slots[self.goal].node.label.as_str();
-        // sized once (the slots bound it): a filtered list would grow step by step
-        let mut labels: Vec<&str> = Vec::with_capacity(self.slots.len());
-        labels.extend(
-            self.live_slots()
-                .filter(|&s| !self.slots[s].utensil)
-                .map(|s| self.slots[s].node.label.as_str())
-                .filter(|&l| l != goal),
-        );
-        // an ingredient's slots often follow each other: fewer names to sort
-        labels.dedup();
+        let mut labels: Vec<&str> = self
+            .live_slots()
+            .filter(|&s| !self.slots[s].utensil)
+            .map(|s| self.slots[s].node.label.as_str())
+            .filter(|&l| l != goal)
+            .collect();
         labels.sort_unstable();
         labels.dedup();
         labels

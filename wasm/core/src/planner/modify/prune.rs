@@ -276,20 +276,20 @@ pub(super) fn prune(
         }
         s
     };
-    // a unit's uses as they are now, in buffers: a kept unit's lists shrink into their own room
-    let mut inputs: Vec<(SlotId, bool)> = Vec::new();
-    let mut outputs: Vec<(SlotId, bool)> = Vec::new();
     for &u in &order {
-        inputs.clear();
-        inputs.extend(
-            tree.units[u]
-                .inputs
-                .iter()
-                .map(|&(x, m)| (resolve(&alias, x), m))
-                .filter(|i| !gone[i.0]),
-        );
-        outputs.clear();
-        outputs.extend(tree.units[u].outputs.iter().filter(|o| !gone[o.0]));
+        // the unit's uses as they are now
+        let mut inputs: Vec<(SlotId, bool)> = tree.units[u]
+            .inputs
+            .iter()
+            .map(|&(x, m)| (resolve(&alias, x), m))
+            .filter(|i| !gone[i.0])
+            .collect();
+        let outputs: Vec<(SlotId, bool)> = tree.units[u]
+            .outputs
+            .iter()
+            .copied()
+            .filter(|o| !gone[o.0])
+            .collect();
         let makes_goal = outputs.iter().any(|o| o.0 == goal);
         if !makes_goal && does_nothing(tree, before[u], &inputs, &outputs, &gone) {
             tree.units[u].alive = false;
@@ -310,10 +310,10 @@ pub(super) fn prune(
             }
             continue;
         }
+        dedup_slots(&mut inputs);
         let unit = &mut tree.units[u];
-        unit.inputs.clone_from(&inputs);
-        dedup_slots(&mut unit.inputs);
-        unit.outputs.clone_from(&outputs);
+        unit.inputs = inputs;
+        unit.outputs = outputs;
     }
     // labels made only by removed units leave the lists of contents as well
     with_units.retain(|l| {

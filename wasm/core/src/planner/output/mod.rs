@@ -11,7 +11,7 @@ use crate::foon::model::{ObjectNode, State, StateArg};
 use crate::vocab::foods;
 use crate::vocab::states::{category, kind, state_text, Category};
 use crate::vocab::taxonomy::{is_mixing_motion, PUT_MOTIONS};
-use smol_str::{SmolStr, SmolStrBuilder};
+use smol_str::{format_smolstr, SmolStr};
 use std::sync::Arc;
 
 mod progress;

@@ -38,14 +38,9 @@ impl<'t> Uses<'t> {
     }
 }
 
-/// "in bowl": two words, in a string of exactly their size (`concat` and `join` take a slower,
-/// general path for these few short pieces).
+/// "in bowl": two words.
 pub(super) fn spaced(first: &str, second: &str) -> SmolStr {
-    let mut out = SmolStrBuilder::with_capacity(first.len() + 1 + second.len());
-    out.push_str(first);
-    out.push_str(" ");
-    out.push_str(second);
-    out.finish()
+    format_smolstr!("{first} {second}")
 }
 
 pub(super) fn location(n: &ObjectNode) -> SmolStr {

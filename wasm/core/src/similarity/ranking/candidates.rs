@@ -1,7 +1,7 @@
 //! Candidate sets: the profiles of a knowledge base's labels laid out for ranking, and what lets a
 //! ranking skip most of them.
 
-use super::profile::{cosine_of, Class, Profile, Traits};
+use super::profile::{Class, Profile, Traits};
 use super::{squash, EmbeddingSimilarity};
 use crate::similarity::cones::{dot, Cones};
 use crate::similarity::Prepared;
@@ -135,36 +135,21 @@ impl CandidateSet {
     }
 }
 
-/// What a ranking reads of candidate i (in range): from a candidate set's arrays, or from a list of
-/// profiles (a one-off ranking of a few names, where laying them out would cost more than the scan).
-pub(super) trait Scanned {
-    fn count(&self) -> usize;
-    fn profile(&self, i: usize) -> &Profile;
-    fn composite(&self, i: usize) -> bool;
-    fn utensil(&self, i: usize) -> bool;
-    fn may_match(&self, sim: &EmbeddingSimilarity, q: &Profile, i: usize) -> bool;
-    fn cosine(&self, q: &Profile, i: usize) -> f32;
-    fn class(&self, i: usize) -> Class;
-    fn traits(&self, i: usize) -> Traits<'_>;
-}
-
-impl Scanned for CandidateSet {
-    fn count(&self) -> usize {
-        self.len()
-    }
-    fn profile(&self, i: usize) -> &Profile {
+/// What a ranking reads of candidate i (in range).
+impl CandidateSet {
+    pub(super) fn profile(&self, i: usize) -> &Profile {
         &self.profiles[i]
     }
-    fn composite(&self, i: usize) -> bool {
+    pub(super) fn composite(&self, i: usize) -> bool {
         self.composite[i]
     }
-    fn utensil(&self, i: usize) -> bool {
+    pub(super) fn utensil(&self, i: usize) -> bool {
         self.utensil[i]
     }
-    fn class(&self, i: usize) -> Class {
+    pub(super) fn class(&self, i: usize) -> Class {
         self.class[i]
     }
-    fn traits(&self, i: usize) -> Traits<'_> {
+    pub(super) fn traits(&self, i: usize) -> Traits<'_> {
         Traits {
             class: self.class[i],
             stems: &self.stems[self.stem_at[i] as usize..self.stem_at[i + 1] as usize],
@@ -172,46 +157,18 @@ impl Scanned for CandidateSet {
     }
     /// Whether candidate i can be an exact match for `q`, from hashes alone: false is certain, true
     /// must be confirmed with `is_exact(q, candidate)`.
-    fn may_match(&self, sim: &EmbeddingSimilarity, q: &Profile, i: usize) -> bool {
+    pub(super) fn may_match(&self, sim: &EmbeddingSimilarity, q: &Profile, i: usize) -> bool {
         let h = &self.hashes[i];
         sim.exact_rule(q, |x| x.hash == h[0], |x| x.hash == h[2])
     }
     /// `cosine_of(q, candidate i)`, from the laid-out vectors.
-    fn cosine(&self, q: &Profile, i: usize) -> f32 {
+    pub(super) fn cosine(&self, q: &Profile, i: usize) -> f32 {
         match &q.vector {
             Some(a) if self.has_vector[i] => {
                 dot(a, &self.vectors[i * self.dims..(i + 1) * self.dims])
             }
             _ => 0.0,
         }
-    }
-}
-
-impl Scanned for [Arc<Profile>] {
-    fn count(&self) -> usize {
-        self.len()
-    }
-    fn profile(&self, i: usize) -> &Profile {
-        &self[i]
-    }
-    fn composite(&self, i: usize) -> bool {
-        self[i].composite
-    }
-    fn utensil(&self, i: usize) -> bool {
-        self[i].utensil
-    }
-    /// A profile's hashed strings compare by hash first: `is_exact` alone decides.
-    fn may_match(&self, _: &EmbeddingSimilarity, _: &Profile, _: usize) -> bool {
-        true
-    }
-    fn cosine(&self, q: &Profile, i: usize) -> f32 {
-        cosine_of(q, &self[i])
-    }
-    fn class(&self, i: usize) -> Class {
-        self[i].class()
-    }
-    fn traits(&self, i: usize) -> Traits<'_> {
-        self[i].traits()
     }
 }
 

@@ -24,7 +24,7 @@ use crate::memo::Memo;
 use crate::similarity::table::EmbeddingTable;
 use crate::similarity::{PairMemory, Prepared, Similarity};
 use crate::vocab::food_taxonomy::{aliases, Taxonomy};
-use candidates::{PreparedName, Scanned, SetProfiles, SetSearch};
+use candidates::{CandidateSet, PreparedName, SetProfiles, SetSearch};
 use profile::{cosine_of, unit, Class, Hashed, Profile, Traits};
 use rustc_hash::FxHashMap as HashMap;
 use serde::Serialize;
@@ -303,7 +303,8 @@ impl EmbeddingSimilarity {
             .iter()
             .map(|c| self.profile(c.as_ref()))
             .collect();
-        self.rank_among(query, candidates, profiles.as_slice(), top, None)
+        let set = CandidateSet::new(profiles, self.table.dims());
+        self.rank_among(query, candidates, &set, top, None)
     }
 
     /// The `top` best of `candidates` (with their profiles in `set`, same order), best first, ties by
@@ -315,7 +316,7 @@ impl EmbeddingSimilarity {
         &self,
         query: &str,
         candidates: &'c [S],
-        set: &(impl Scanned + ?Sized),
+        set: &CandidateSet,
         top: usize,
         search: Option<&SetSearch>,
     ) -> Vec<(String, f32)> {
@@ -390,7 +391,7 @@ impl EmbeddingSimilarity {
                 }
             }
         } else {
-            for i in 0..set.count() {
+            for i in 0..set.len() {
                 consider(i, true, f32::INFINITY, &mut best);
             }
         }
@@ -414,18 +415,7 @@ fn squash(score: f32) -> f32 {
         return 1.0;
     }
     let v = 0.99 / (1.0 + (-(score - 0.6) * 5.0).exp());
-    round_half_up(v * 1000.0) / 1000.0
-}
-
-/// `x.round()` for `x >= 0` (halves away from zero), from `trunc`: `round` is a libm call in WASM,
-/// `trunc` one instruction, and a goal selection squashes tens of thousands of scores.
-fn round_half_up(x: f32) -> f32 {
-    let whole = x.trunc();
-    if x - whole >= 0.5 {
-        whole + 1.0
-    } else {
-        whole
-    }
+    (v * 1000.0).round() / 1000.0
 }
 
 impl Similarity for EmbeddingSimilarity {
@@ -450,7 +440,7 @@ impl Similarity for EmbeddingSimilarity {
         self.ranked
             .get_or_insert_with((query.to_string(), set, top), || {
                 let profiles = self.set_profiles(set, candidates);
-                self.rank_among(query, candidates, &*profiles, top, Some(profiles.search()))
+                self.rank_among(query, candidates, &profiles, top, Some(profiles.search()))
                     .into()
             })
     }
@@ -555,25 +545,6 @@ mod tests {
             aliases().get("cool whip").map(String::as_str),
             Some("whipped topping")
         );
-    }
-
-    #[test]
-    fn rounding_half_up_is_rounding_for_every_squashed_value() {
-        // 0 to 1000 in steps of 1/4096, and every f32 around each half-way point, where the two could
-        // differ
-        let mut x = 0.0f32;
-        while x <= 1000.0 {
-            assert_eq!(round_half_up(x).to_bits(), x.round().to_bits(), "{x}");
-            x += 1.0 / 4096.0;
-        }
-        for k in 0..1000 {
-            let half = k as f32 + 0.5;
-            let mut y = f32::from_bits(half.to_bits() - 64);
-            while y <= f32::from_bits(half.to_bits() + 64) {
-                assert_eq!(round_half_up(y).to_bits(), y.round().to_bits(), "{y}");
-                y = f32::from_bits(y.to_bits() + 1);
-            }
-        }
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! A name's profile: everything the substitution score needs about one name, computed once per name.
 
-use super::words::{COMPOSITE_GROUPS, DESCRIPTORS, UTENSIL_GROUP};
+use super::words::{is_descriptor, COMPOSITE_GROUPS, UTENSIL_GROUP};
 use super::{EmbeddingSimilarity, MAX_CACHED_NAME};
 use crate::foon::label::normalize_label;
 use crate::similarity::cones::dot;
@@ -148,7 +148,7 @@ impl EmbeddingSimilarity {
         if !listed_whole {
             let described: Vec<(String, Arc<WordStems>)> = kept
                 .iter()
-                .filter(|(w, _)| !DESCRIPTORS.contains(&w.as_str()))
+                .filter(|(w, _)| !is_descriptor(w))
                 .cloned()
                 .collect();
             if !described.is_empty() {
