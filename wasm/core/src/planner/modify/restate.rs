@@ -389,9 +389,7 @@ pub(super) fn add_state_unit<'kb>(
     motion: &str,
 ) -> SlotId {
     let made = tree.add_slot(Cow::Owned(made));
-    // room for the utensil: the list does not grow for it
-    let mut inputs = Vec::new();
-    inputs.push((from, true));
+    let mut inputs = vec![(from, true)];
     if let Some(t) = ctx.index.utensil_for(motion) {
         inputs.push((utensil_slot(ctx.kb, tree, t), false));
     }
@@ -431,20 +429,14 @@ pub(super) fn rank_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)
         std::cmp::Reverse<NodeId>,
     );
     let mut ranked: Vec<(Key, NodeId)> = Vec::new();
-    // a node's food states and their categories, one buffer for all nodes
-    let mut food: Vec<&str> = Vec::new();
-    let mut cats: Vec<Category> = Vec::new();
     for &n in ctx.index.nodes_of(eq) {
         let node = &ctx.kb.nodes[n];
-        food.clear();
-        cats.clear();
-        for state in node.physical_states() {
-            let k = category(state);
-            if k != Category::Other {
-                food.push(state);
-                cats.push(k);
-            }
-        }
+        // the node's food states and their categories
+        let (food, cats): (Vec<&str>, Vec<Category>) = node
+            .physical_states()
+            .map(|state| (state, category(state)))
+            .filter(|&(_, k)| k != Category::Other)
+            .unzip();
         let exact = food.contains(&s);
         let kin = food.iter().any(|f| akin(f, s));
         let cat = c != Category::Other && cats.contains(&c);

@@ -73,13 +73,12 @@ pub(crate) fn build(p: Parts) -> Plan {
     let uses = Uses::new(tree, order);
     let mut progress_lines = Vec::with_capacity(p.outcomes.len());
     let mut done: Vec<&str> = Vec::with_capacity(p.outcomes.len());
-    let mut slots = Vec::new();
     for o in &p.outcomes {
         if o.status != Status::Planned || done.contains(&o.object.as_str()) {
             continue;
         }
         done.push(&o.object);
-        if let Some(line) = progress_line(order, &uses, &o.object, &mut slots, &mut relations) {
+        if let Some(line) = progress_line(order, &uses, &o.object, &mut relations) {
             progress_lines.push(line);
         }
     }

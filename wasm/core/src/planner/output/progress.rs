@@ -55,13 +55,11 @@ pub(super) fn location(n: &ObjectNode) -> SmolStr {
 
 /// The ingredient's states and places from its starting node, the motions between them, and the dish:
 /// once it has gone into a food (flour into the batter), the line follows that food on, to the goal
-/// (the batter poured into the pan and baked into the muffin). `slots`: a buffer reused from line to
-/// line (the slots a walk passes through, then the vessels `product_of` follows).
+/// (the batter poured into the pan and baked into the muffin).
 pub(super) fn progress_line<'t>(
     order: &[TUnitId],
     uses: &Uses,
     label: &str,
-    slots: &mut Vec<SlotId>,
     relations: &mut Relations<'t>,
 ) -> Option<ProgressLine> {
     // the slots no unit makes, first used first (else its first slot): the line follows the first that
@@ -79,7 +77,7 @@ pub(super) fn progress_line<'t>(
     }
     let mut first = None;
     for start in starts {
-        let line = line_from(order, uses, label, start, slots, relations);
+        let line = line_from(order, uses, label, start, relations);
         if reaches_dish(&line, &relations.tree.slots[relations.tree.goal].node.label) {
             return Some(line);
         }
@@ -106,11 +104,10 @@ pub(super) fn line_from<'t>(
     uses: &Uses,
     label: &str,
     start: SlotId,
-    slots: &mut Vec<SlotId>,
     relations: &mut Relations<'t>,
 ) -> ProgressLine {
     let tree = relations.tree;
-    let mut walked = walk(order, uses, label, start, 0, slots, relations);
+    let mut walked = walk(order, uses, label, start, 0, relations);
     let mut states = walked.states;
     let mut motions = walked.motions;
     let goal = tree.slots[tree.goal].node.label.as_str();
@@ -134,7 +131,7 @@ pub(super) fn line_from<'t>(
         // those of its parts (the white it was cracked into)
         let itself = product == label;
         let part = walked.opened;
-        walked = walk(order, uses, product, x, pos + 1, slots, relations);
+        walked = walk(order, uses, product, x, pos + 1, relations);
         if itself {
             states.pop();
         }
@@ -249,18 +246,15 @@ pub(super) fn walk<'t>(
     label: &str,
     start: SlotId,
     from: usize,
-    seen: &mut Vec<SlotId>,
     relations: &mut Relations<'t>,
 ) -> Walked {
     let tree = relations.tree;
-    seen.clear();
-    seen.push(start);
     let mut w = Walker {
         tree,
         order,
         uses,
         label,
-        seen,
+        seen: vec![start],
         at: start,
         from,
         last_step: None,
@@ -311,7 +305,8 @@ struct Walker<'a, 't> {
     order: &'a [TUnitId],
     uses: &'a Uses<'a>,
     label: &'a str,
-    seen: &'a mut Vec<SlotId>,
+    /// The slots it passed through.
+    seen: Vec<SlotId>,
     at: SlotId,
     from: usize,
     /// The last unit that moved it, and its position.
@@ -385,7 +380,7 @@ impl<'t> Walker<'_, 't> {
                 let n = &tree.slots[x].node;
                 n.contents().any(|i| i == label) || container == Some(n.label.as_str())
             })
-            .and_then(|x| product_of(tree, order, pos, x, label, self.seen));
+            .and_then(|x| product_of(tree, order, pos, x, label));
         self.walked.into = into;
         // the food made of the vessel's contents: the line says so
         if let Some((at, x)) = into {
@@ -485,7 +480,7 @@ impl<'t> Walker<'_, 't> {
             self.from = pos + 1;
             return true;
         }
-        self.walked.into = product_of(tree, self.order, pos, o, self.label, self.seen);
+        self.walked.into = product_of(tree, self.order, pos, o, self.label);
         false
     }
 
@@ -669,14 +664,13 @@ fn first_vessel_listing(
 
 /// The product an ingredient goes into (section IV-A): the first food node listing it among its
 /// contents, following the vessel it was put in (flour in the bowl → the batter mixed in that bowl).
-/// `vessels`: a buffer for the vessels holding it. Returns the product's position in the order and slot.
+/// Returns the product's position in the order and slot.
 pub(super) fn product_of(
     tree: &Tree,
     order: &[TUnitId],
     pos: usize,
     entered: SlotId,
     label: &str,
-    vessels: &mut Vec<SlotId>,
 ) -> Option<(usize, SlotId)> {
     let lists = |x: SlotId| tree.slots[x].node.contents().any(|i| i == label);
     let food = |x: SlotId| !tree.slots[x].utensil;
@@ -684,8 +678,7 @@ pub(super) fn product_of(
         return Some((pos, entered));
     }
     // a vessel holding it: the first food made from that vessel's contents
-    vessels.clear();
-    vessels.push(entered);
+    let mut vessels = vec![entered];
     let mut beside = None;
     for (at, &u) in order.iter().enumerate().skip(pos + 1) {
         let unit = &tree.units[u];
