@@ -199,6 +199,30 @@ fn handled_before(tree: &Tree, order: &[TUnitId]) -> Vec<(bool, bool)> {
     before
 }
 
+/// The inputs and outputs of unit `u` as they are now: slots that stand for others (`alias`) replaced,
+/// slots `gone` left out.
+fn uses_now(tree: &Tree, u: TUnitId, alias: &HashMap<SlotId, SlotId>, gone: &[bool]) -> Uses {
+    let resolve = |mut s: SlotId| {
+        for _ in 0..10_000 {
+            match alias.get(&s) {
+                Some(&t) => s = t,
+                None => break,
+            }
+        }
+        s
+    };
+    let unit = &tree.units[u];
+    let inputs = unit.inputs.iter().map(|&(x, m)| (resolve(x), m));
+    let outputs = unit.outputs.iter().copied();
+    (
+        inputs.filter(|i| !gone[i.0]).collect(),
+        outputs.filter(|o| !gone[o.0]).collect(),
+    )
+}
+
+/// A unit's inputs and outputs.
+type Uses = (Vec<(SlotId, bool)>, Vec<(SlotId, bool)>);
+
 /// Whether a unit, with its uses as they are after pruning (`inputs`, `outputs`) and what it handled
 /// before (`handled_before`), is left doing nothing.
 fn does_nothing(
@@ -267,29 +291,8 @@ pub(super) fn prune(
     // labels that go with the units removed below, beyond those already dropped from the contents
     let mut with_units: BTreeSet<String> = BTreeSet::new();
     let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
-    let resolve = |alias: &HashMap<SlotId, SlotId>, mut s: SlotId| {
-        for _ in 0..10_000 {
-            match alias.get(&s) {
-                Some(&t) => s = t,
-                None => break,
-            }
-        }
-        s
-    };
     for &u in &order {
-        // the unit's uses as they are now
-        let mut inputs: Vec<(SlotId, bool)> = tree.units[u]
-            .inputs
-            .iter()
-            .map(|&(x, m)| (resolve(&alias, x), m))
-            .filter(|i| !gone[i.0])
-            .collect();
-        let outputs: Vec<(SlotId, bool)> = tree.units[u]
-            .outputs
-            .iter()
-            .copied()
-            .filter(|o| !gone[o.0])
-            .collect();
+        let (mut inputs, outputs) = uses_now(tree, u, &alias, &gone);
         let makes_goal = outputs.iter().any(|o| o.0 == goal);
         if !makes_goal && does_nothing(tree, before[u], &inputs, &outputs, &gone) {
             tree.units[u].alive = false;

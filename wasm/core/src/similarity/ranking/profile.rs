@@ -119,16 +119,12 @@ impl EmbeddingSimilarity {
 
     pub(super) fn compute_profile(&self, name: &str) -> Profile {
         let name = normalize_label(name);
-        let canonical = if self.options.aliases {
-            self.aliases
-                .get(&name)
-                .cloned()
-                .unwrap_or_else(|| name.clone())
-        } else {
-            name.clone()
+        let canonical = match self.aliases.get(&name) {
+            Some(alias) if self.options.aliases => alias.clone(),
+            _ => name.clone(),
         };
         // the words of the canonical name with their stems (`stem_key`) as the table resolved them
-        let mut kept: Vec<(String, Arc<WordStems>)> = words(&canonical)
+        let words: Vec<(String, Arc<WordStems>)> = words(&canonical)
             .into_iter()
             .filter(|w| !is_stop_word(w))
             .map(|w| {
@@ -136,37 +132,13 @@ impl EmbeddingSimilarity {
                 (w, stems)
             })
             .collect();
-        let whole_key: Vec<String> = kept.iter().map(|(_, r)| r.stem.clone()).collect();
+        let whole_key: Vec<String> = words.iter().map(|(_, r)| r.stem.clone()).collect();
         let key = if canonical == name {
             whole_key.clone()
         } else {
             stem_key(&name)
         };
-        // "pecan half", "chard leaf": the ingredient is what the form word is of, unless the whole
-        // phrase is a listed name ("bay leaf", "garlic powder").
-        let listed_whole = self.taxonomy.lists(&whole_key);
-        if !listed_whole {
-            let described: Vec<(String, Arc<WordStems>)> = kept
-                .iter()
-                .filter(|(w, _)| !is_descriptor(w))
-                .cloned()
-                .collect();
-            if !described.is_empty() {
-                kept = described;
-            }
-        }
-        let whole = self.taxonomy.lookup_key(&whole_key);
-        while kept.len() > 1 && kept.last().is_some_and(|(_, r)| is_form_stem(&r.stem)) {
-            let shorter: Vec<String> = kept[..kept.len() - 1]
-                .iter()
-                .map(|(_, r)| r.stem.clone())
-                .collect();
-            // keep "garlic powder" whole (a spice, not an allium); drop "half" of "pecan half"
-            if listed_whole && self.taxonomy.lookup_key(&shorter) != whole {
-                break;
-            }
-            kept.pop();
-        }
+        let kept = self.ingredient_words(words, &whole_key);
         // Stems as the table resolves them, so that a plural cut short ("watercres") finds its listing.
         let canonical_key: Vec<String> = kept
             .iter()
@@ -181,13 +153,9 @@ impl EmbeddingSimilarity {
             .embed_words(&kept, self.options.head_weight)
             .vector
             .map(unit);
-        let mut category = self.taxonomy.lookup_key(&canonical_key);
-        let listed = category.is_some();
-        if category.is_none() {
-            if let Some(v) = &vector {
-                category = self.infer_category(v);
-            }
-        }
+        let listed_category = self.taxonomy.lookup_key(&canonical_key);
+        let listed = listed_category.is_some();
+        let category = listed_category.or_else(|| self.infer_category(vector.as_ref()?));
         let group = category.map(|c| self.group_of(c));
         let composite = self.is_composite(&name, listed, category);
         let utensil =
@@ -208,6 +176,33 @@ impl EmbeddingSimilarity {
             composite,
             utensil,
         }
+    }
+
+    /// The words of a name (`whole_key`: their stems) that say which ingredient it is: "pecan half",
+    /// "chard leaf" are what the form word is of, and "fresh dill" is dill, unless the whole phrase is a
+    /// listed name ("bay leaf", "garlic powder").
+    fn ingredient_words(
+        &self,
+        mut kept: Vec<(String, Arc<WordStems>)>,
+        whole_key: &[String],
+    ) -> Vec<(String, Arc<WordStems>)> {
+        let listed_whole = self.taxonomy.lists(whole_key);
+        if !listed_whole && kept.iter().any(|(w, _)| !is_descriptor(w)) {
+            kept.retain(|(w, _)| !is_descriptor(w));
+        }
+        let whole = self.taxonomy.lookup_key(whole_key);
+        while kept.len() > 1 && kept.last().is_some_and(|(_, r)| is_form_stem(&r.stem)) {
+            let shorter: Vec<String> = kept[..kept.len() - 1]
+                .iter()
+                .map(|(_, r)| r.stem.clone())
+                .collect();
+            // keep "garlic powder" whole (a spice, not an allium); drop "half" of "pecan half"
+            if listed_whole && self.taxonomy.lookup_key(&shorter) != whole {
+                break;
+            }
+            kept.pop();
+        }
+        kept
     }
 
     /// Index of a category's group among the taxonomy's groups (first seen first).
