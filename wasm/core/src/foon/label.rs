@@ -40,29 +40,8 @@ const IRREGULAR: &[(&str, &str)] = &[
 
 /// Lower case, trimmed, inner white space and underscores folded to single spaces.
 pub fn fold(text: &str) -> String {
-    if is_folded(text) {
-        return text.to_string(); // the common case: a reader folds every label of every line
-    }
     let lowered = text.to_lowercase().replace('_', " ");
     lowered.split_whitespace().collect::<Vec<_>>().join(" ")
-}
-
-/// Whether `fold` would return the text unchanged: ASCII without capitals or underscores, words
-/// separated by single spaces.
-fn is_folded(text: &str) -> bool {
-    let bytes = text.as_bytes();
-    let mut last = b' ';
-    for &b in bytes {
-        if !b.is_ascii() || b.is_ascii_uppercase() || b == b'_' {
-            return false;
-        }
-        // a vertical tab is white space to `split_whitespace` and `trim`, but not to `is_ascii_whitespace`
-        if (b.is_ascii_whitespace() || b == 0x0b) && (b != b' ' || last == b' ') {
-            return false;
-        }
-        last = b;
-    }
-    last != b' ' || bytes.is_empty()
 }
 
 /// Singular form of one English word; never invents a non-word for the exceptions above

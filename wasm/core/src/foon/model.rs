@@ -136,19 +136,6 @@ impl ObjectNode {
         self.ingredients::<&str>().len()
     }
 
-    /// The object's contents as its one `contains` list (sorted and unique), empty when it has none;
-    /// `None` when it has several (see `contents`).
-    pub fn contents_list(&self) -> Option<&[SmolStr]> {
-        let mut lists = self.states.iter().filter_map(|s| match &s.arg {
-            Some(StateArg::Ingredients(list)) if s.name == "contains" => Some(list.as_slice()),
-            _ => None,
-        });
-        match (lists.next(), lists.next()) {
-            (first, None) => Some(first.unwrap_or_default()),
-            _ => None,
-        }
-    }
-
     pub fn has_state(&self, name: &str) -> bool {
         self.states.iter().any(|s| s.name == name)
     }

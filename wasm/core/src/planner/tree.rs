@@ -59,7 +59,6 @@ pub(crate) struct Tree<'kb> {
 /// every list is (the reader makes them so); an emptied `contains` list becomes `empty`, and states
 /// stay sorted and unique.
 pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<SmolStr>)) {
-    let mut emptied = false;
     node.states.retain_mut(|s| {
         let Some(StateArg::Ingredients(list)) = &mut s.arg else {
             return true;
@@ -71,25 +70,12 @@ pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<Sm
         }
         if s.name == "contains" {
             *s = State::plain("empty");
-            emptied = true;
             return true;
         }
         false
     });
-    // an edit seldom reorders states: only among states of one name, unless a list became `empty`
-    // (states of different names stay in order, so only their names are compared); sorted and made
-    // unique only then
-    let sorted = if emptied {
-        node.states.is_sorted_by(|a, b| a < b)
-    } else {
-        node.states
-            .windows(2)
-            .all(|w| w[0].name != w[1].name || w[0] < w[1])
-    };
-    if !sorted {
-        node.states.sort();
-        node.states.dedup();
-    }
+    node.states.sort();
+    node.states.dedup();
 }
 
 /// Starts a node's `contains` list, in place of `empty`, with one item (for a node holding nothing).
@@ -150,24 +136,9 @@ fn passes_on(node: &Slot, theirs: &Slot) -> bool {
         return true;
     }
     let (node, theirs) = (&node.node, &theirs.node);
-    // the contents compared last: the dearest test, and only when it decides
-    let Some(all) = theirs.contents_list() else {
-        return theirs.holds_something()
-            && (theirs.label == node.label
-                || node.contents().all(|x| theirs.contents().any(|c| c == x)));
-    };
-    // one `contains` list, as nearly every node has: it holds something when the list does
-    !all.is_empty() && (theirs.label == node.label || lists_all(node, all))
-}
-
-/// Whether `all` (a `contains` list, sorted) has every item of `node`'s contents: one pass over both when
-/// `node` has one list, as nearly every node does.
-fn lists_all(node: &ObjectNode, all: &[SmolStr]) -> bool {
-    let Some(mine) = node.contents_list() else {
-        return node.contents().all(|x| all.iter().any(|c| c == x));
-    };
-    let mut rest = all.iter();
-    mine.iter().all(|x| rest.any(|c| c == x))
+    theirs.holds_something()
+        && (theirs.label == node.label
+            || node.contents().all(|x| theirs.contents().any(|c| c == x)))
 }
 
 /// Keeps in a slot's lists of contents only the items `keep` accepts (see `edit_contents`). A node
