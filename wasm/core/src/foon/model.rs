@@ -135,10 +135,6 @@ impl ObjectNode {
     pub fn ingredient_count(&self) -> usize {
         self.ingredients::<&str>().len()
     }
-
-    pub fn has_state(&self, name: &str) -> bool {
-        self.states.iter().any(|s| s.name == name)
-    }
 }
 
 impl std::fmt::Display for ObjectNode {

@@ -321,9 +321,7 @@ impl EmbeddingSimilarity {
         search: Option<&SetSearch>,
     ) -> Vec<(String, f32)> {
         let q = self.profile(query);
-        let keep_composites = !self.options.filter_composites || q.composite;
         let max_bonus = self.max_bonus();
-        let max_words = self.options.same_head.max(0.0) + self.options.shared_word.max(0.0);
         let better = |a: &(&str, f32), b: &(&str, f32)| {
             b.1.total_cmp(&a.1).then_with(|| a.0.cmp(b.0)) == std::cmp::Ordering::Less
         };
@@ -332,37 +330,15 @@ impl EmbeddingSimilarity {
         let cannot_place = |best: &[(&str, f32)], most: f32| {
             best.len() == top && best.last().is_some_and(|w| most + 1e-3 < w.1)
         };
-        // `may_be_exact`: false once every candidate that may be an exact match was considered (a second
-        // look at one changes nothing: it placed, or `top` exact matches outrank it); `most_cosine`: the
-        // most candidate i's cosine can be
         let consider =
             |i: usize, may_be_exact: bool, most_cosine: f32, best: &mut Vec<(&'c str, f32)>| {
                 let Some(cand) = candidates.get(i).map(AsRef::as_ref) else {
                     return;
                 };
-                // the hashes rule most candidates out without reading their profiles
-                let exact =
-                    may_be_exact && set.may_match(self, &q, i) && self.is_exact(&q, set.profile(i));
-                if !exact
-                    && (!q.is_known()
-                        || (!keep_composites && set.composite(i))
-                        || (self.options.filter_composites && set.utensil(i)))
-                {
+                let place = |most| cannot_place(best, most);
+                let Some(score) = self.ranked_score(&q, set, i, may_be_exact, most_cosine, place)
+                else {
                     return;
-                }
-                let score = if exact {
-                    f32::INFINITY
-                } else {
-                    // many candidates cannot place whatever their cosine and words: neither is read
-                    let most = self.category_bonus(q.class(), set.class(i)) + max_words;
-                    if cannot_place(best, most_cosine + most) {
-                        return;
-                    }
-                    let cosine = set.cosine(&q, i);
-                    if cannot_place(best, cosine + most) {
-                        return;
-                    }
-                    self.graded(q.traits(), set.traits(i), cosine)
                 };
                 let item = (cand, score);
                 if best.len() == top && best.last().is_none_or(|w| !better(&item, w)) {
@@ -398,6 +374,44 @@ impl EmbeddingSimilarity {
         best.into_iter()
             .map(|(l, s)| (l.to_string(), squash(s)))
             .collect()
+    }
+
+    /// Candidate i's score for `q` in a ranking; `None` when it is left out, or when `cannot_place` the
+    /// most its score can be. `may_be_exact`: false once every candidate that may be an exact match was
+    /// considered (a second look at one changes nothing: it placed, or `top` exact matches outrank it);
+    /// `most_cosine`: the most its cosine can be.
+    fn ranked_score(
+        &self,
+        q: &Profile,
+        set: &CandidateSet,
+        i: usize,
+        may_be_exact: bool,
+        most_cosine: f32,
+        cannot_place: impl Fn(f32) -> bool,
+    ) -> Option<f32> {
+        // the hashes rule most candidates out without reading their profiles
+        if may_be_exact && set.may_match(self, q, i) && self.is_exact(q, set.profile(i)) {
+            return Some(f32::INFINITY);
+        }
+        let o = &self.options;
+        let keep_composites = !o.filter_composites || q.composite;
+        if !q.is_known()
+            || (!keep_composites && set.composite(i))
+            || (o.filter_composites && set.utensil(i))
+        {
+            return None;
+        }
+        // many candidates cannot place whatever their cosine and words: neither is read
+        let max_words = o.same_head.max(0.0) + o.shared_word.max(0.0);
+        let most = self.category_bonus(q.class(), set.class(i)) + max_words;
+        if cannot_place(most_cosine + most) {
+            return None;
+        }
+        let cosine = set.cosine(q, i);
+        if cannot_place(cosine + most) {
+            return None;
+        }
+        Some(self.graded(q.traits(), set.traits(i), cosine))
     }
 
     /// `Similarity::similarity` on profiles.
