@@ -15,19 +15,19 @@ fn as_files(files: &[(String, String)]) -> Vec<(String, Vec<u8>)> {
 }
 
 fn assert_indexes_agree(kb: &KnowledgeBase) {
-    for n in 0..kb.nodes.len() {
+    for (n, node) in kb.each_node() {
         for &u in &kb.producers[n] {
             assert!(kb.units[u].output_nodes().any(|m| m == n));
         }
         for &u in &kb.consumers[n] {
             assert!(kb.units[u].input_nodes().any(|m| m == n));
         }
-        assert_eq!(kb.node_id(&kb.nodes[n]), Some(n));
+        assert_eq!(kb.node_id(node), Some(n));
         if kb.producers[n].is_empty() {
             assert!(kb.kitchen[n], "a node nothing makes must be in the kitchen");
         }
     }
-    for (u, unit) in kb.units.iter().enumerate() {
+    for (u, unit) in kb.each_unit() {
         assert!(unit.input_nodes().all(|n| kb.consumers[n].contains(&u)));
         assert!(unit.output_nodes().all(|n| kb.producers[n].contains(&u)));
         assert!(!kb.provenance[u].is_empty());

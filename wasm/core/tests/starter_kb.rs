@@ -6,7 +6,7 @@
 mod common;
 use common::{load, read_dir};
 use foon_core::foon::read::{parse_bytes, Subgraph};
-use foon_core::{KnowledgeBase, NodeId, ObjectNode, StateArg};
+use foon_core::{KnowledgeBase, NodeId, ObjectNode, StateArg, UnitId};
 use std::collections::{BTreeMap, BTreeSet, HashSet};
 use std::path::PathBuf;
 
@@ -274,7 +274,7 @@ fn files_are_closed_and_kitchen_items_are_never_produced() {
 }
 
 /// Forward chaining from the kitchen over the given units; returns every node that can be made.
-fn reachable(kb: &KnowledgeBase, units: &[usize]) -> Vec<bool> {
+fn reachable(kb: &KnowledgeBase, units: &[UnitId]) -> Vec<bool> {
     let mut have: Vec<bool> = kb.kitchen.clone();
     loop {
         let mut changed = false;
@@ -298,7 +298,7 @@ fn reachable(kb: &KnowledgeBase, units: &[usize]) -> Vec<bool> {
 #[test]
 fn every_goal_is_retrievable_from_kitchen_items() {
     let kb = starter_kb();
-    let all: Vec<usize> = (0..kb.units.len()).collect();
+    let all: Vec<UnitId> = UnitId::all(kb.units.len()).collect();
     let everywhere = reachable(&kb, &all);
     for g in &kb.goals {
         assert!(
@@ -333,7 +333,7 @@ fn the_merged_starter_kb_has_no_cycles() {
     }
     // iterative three-colour depth-first search
     let mut colour = vec![0u8; kb.nodes.len()];
-    for start in 0..kb.nodes.len() {
+    for start in NodeId::all(kb.nodes.len()) {
         if colour[start] != 0 {
             continue;
         }

@@ -75,7 +75,7 @@ fn check_subgraph(g: &Subgraph) {
 
 fn check_kb(kb: &KnowledgeBase) {
     assert!(!kb.units.is_empty());
-    for (id, u) in kb.units.iter().enumerate() {
+    for (id, u) in kb.each_unit() {
         for n in u.input_nodes() {
             assert!(kb.consumers[n].contains(&id));
         }

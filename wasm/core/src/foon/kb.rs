@@ -94,22 +94,7 @@ type GoalMarkOf = (String, NodeId, Option<u32>);
 impl KnowledgeBase {
     /// Merges subgraphs into one universal FOON.
     pub fn merge(subgraphs: &[Subgraph]) -> Result<KnowledgeBase> {
-        let units_before_merge: usize = subgraphs.iter().map(|g| g.units.len()).sum();
-        if units_before_merge > limits::MAX_UNITS {
-            return Err(FoonError::new(
-                ErrorCode::TooLarge,
-                format!(
-                    "the knowledge base has {units_before_merge} functional units over all files; the limit is {}",
-                    limits::MAX_UNITS
-                ),
-            ));
-        }
-        if units_before_merge == 0 {
-            return Err(FoonError::new(
-                ErrorCode::EmptyKnowledgeBase,
-                "the knowledge base has no functional units (no FOON files, or only empty ones)",
-            ));
-        }
+        let units_before_merge = unit_count(subgraphs)?;
         let (nodes, node_index) = numbered_nodes(subgraphs);
         let (merged, goal_marks) = merged_units(subgraphs, &node_index);
         let mut units = Vec::with_capacity(merged.len());
@@ -124,19 +109,9 @@ impl KnowledgeBase {
             });
             provenance.push(files.into_iter().collect());
         }
-        let mut producers = vec![Vec::new(); nodes.len()];
-        let mut consumers = vec![Vec::new(); nodes.len()];
-        for (id, u) in units.iter().enumerate() {
-            for n in u.output_nodes() {
-                producers[n].push(id);
-            }
-            for n in u.input_nodes() {
-                consumers[n].push(id);
-            }
-        }
-        let kitchen = nodes
-            .iter()
-            .enumerate()
+        let (producers, consumers) = producers_and_consumers(nodes.len(), &units);
+        let kitchen = NodeId::all(nodes.len())
+            .zip(&nodes)
             .map(|(i, n)| producers[i].is_empty() || is_raw(n))
             .collect();
 
@@ -193,11 +168,21 @@ impl KnowledgeBase {
         self.node_index.get(node).copied()
     }
 
+    /// Every object node with its id.
+    pub fn each_node(&self) -> impl Iterator<Item = (NodeId, &ObjectNode)> {
+        NodeId::all(self.nodes.len()).zip(&self.nodes)
+    }
+
+    /// Every functional unit with its id.
+    pub fn each_unit(&self) -> impl Iterator<Item = (UnitId, &FunctionalUnit)> {
+        UnitId::all(self.units.len()).zip(&self.units)
+    }
+
     /// The units of each subgraph, ascending (one pass: asking per subgraph would scan every unit for
     /// every file, which is quadratic in a large universal FOON).
     pub fn units_by_subgraph(&self) -> HashMap<&str, Vec<UnitId>> {
         let mut out: HashMap<&str, Vec<UnitId>> = HashMap::new();
-        for (u, files) in self.provenance.iter().enumerate() {
+        for (u, files) in UnitId::all(self.provenance.len()).zip(&self.provenance) {
             for f in files.iter() {
                 out.entry(f.as_str()).or_default().push(u);
             }
@@ -236,6 +221,45 @@ impl KnowledgeBase {
     }
 }
 
+/// The number of units of all subgraphs before merging: an error when there are none, or too many.
+fn unit_count(subgraphs: &[Subgraph]) -> Result<usize> {
+    let count: usize = subgraphs.iter().map(|g| g.units.len()).sum();
+    if count > limits::MAX_UNITS {
+        return Err(FoonError::new(
+            ErrorCode::TooLarge,
+            format!(
+                "the knowledge base has {count} functional units over all files; the limit is {}",
+                limits::MAX_UNITS
+            ),
+        ));
+    }
+    if count == 0 {
+        return Err(FoonError::new(
+            ErrorCode::EmptyKnowledgeBase,
+            "the knowledge base has no functional units (no FOON files, or only empty ones)",
+        ));
+    }
+    Ok(count)
+}
+
+/// Per node, the units making it and the units taking it.
+fn producers_and_consumers(
+    nodes: usize,
+    units: &[FunctionalUnit],
+) -> (Vec<Vec<UnitId>>, Vec<Vec<UnitId>>) {
+    let mut producers = vec![Vec::new(); nodes];
+    let mut consumers = vec![Vec::new(); nodes];
+    for (id, u) in UnitId::all(units.len()).zip(units) {
+        for n in u.output_nodes() {
+            producers[n].push(id);
+        }
+        for n in u.input_nodes() {
+            consumers[n].push(id);
+        }
+    }
+    (producers, consumers)
+}
+
 /// The distinct object nodes of all subgraphs, numbered in sorted order so that ids do not depend on
 /// file order, and each node's number.
 fn numbered_nodes(subgraphs: &[Subgraph]) -> (Vec<ObjectNode>, FxHashMap<ObjectNode, NodeId>) {
@@ -251,8 +275,7 @@ fn numbered_nodes(subgraphs: &[Subgraph]) -> (Vec<ObjectNode>, FxHashMap<ObjectN
     let node_index: FxHashMap<ObjectNode, NodeId> = nodes
         .iter()
         .cloned()
-        .enumerate()
-        .map(|(i, n)| (n, i))
+        .zip(NodeId::all(nodes.len()))
         .collect();
     (nodes, node_index)
 }

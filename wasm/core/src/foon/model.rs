@@ -1,7 +1,7 @@
 //! FOON's building blocks: object nodes (a label in a set of states), motion nodes, functional units.
 
 use serde::Serialize;
-use smol_str::{SmolStr, SmolStrBuilder};
+use smol_str::{format_smolstr, SmolStr};
 
 /// What a state says about its object beyond its name: where it is, or what it holds.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
@@ -41,49 +41,22 @@ impl State {
 }
 
 impl State {
-    /// The state as FOON writes it, `in [bowl]` or `contains {egg,milk}` (built without `fmt`: plans
-    /// render every state of every node).
+    /// The state as FOON writes it, `in [bowl]` or `contains {egg,milk}`.
     pub fn text(&self) -> SmolStr {
-        let arg_len = match &self.arg {
-            // a plain state is its name: shared, not rebuilt
-            None => return self.name.clone(),
-            Some(StateArg::Container(c)) => c.len() + 3,
-            Some(StateArg::Ingredients(list)) => {
-                3 + list.iter().map(SmolStr::len).sum::<usize>() + list.len().saturating_sub(1)
-            }
-        };
-        let mut out = SmolStrBuilder::with_capacity(self.name.len() + arg_len);
-        let _ = self.write_to(&mut out);
-        out.finish()
-    }
-
-    /// Writes `text` piece by piece (a builder never fails to take them).
-    fn write_to(&self, out: &mut impl std::fmt::Write) -> std::fmt::Result {
-        out.write_str(&self.name)?;
-        match &self.arg {
-            None => Ok(()),
-            Some(StateArg::Container(c)) => {
-                out.write_str(" [")?;
-                out.write_str(c)?;
-                out.write_char(']')
-            }
-            Some(StateArg::Ingredients(list)) => {
-                out.write_str(" {")?;
-                for (i, x) in list.iter().enumerate() {
-                    if i > 0 {
-                        out.write_char(',')?;
-                    }
-                    out.write_str(x)?;
-                }
-                out.write_char('}')
-            }
+        match self.arg {
+            None => self.name.clone(),
+            Some(_) => format_smolstr!("{self}"),
         }
     }
 }
 
 impl std::fmt::Display for State {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        self.write_to(f)
+        f.write_str(&self.name)?;
+        match self.arg_text() {
+            Some(arg) => write!(f, " {arg}"),
+            None => Ok(()),
+        }
     }
 }
 
@@ -151,41 +124,16 @@ impl ObjectNode {
 
     /// Ingredients the object holds (`contains {…}`), sorted and unique, as `String`s or the plan's
     /// `SmolStr`s.
-    pub fn ingredients<S: for<'a> From<&'a str> + Ord>(&self) -> Vec<S> {
-        // owned from the start rather than copied from a sorted list of borrowed names
+    pub fn ingredients<'a, S: From<&'a str> + Ord>(&'a self) -> Vec<S> {
         let mut out: Vec<S> = self.contents().map(S::from).collect();
         out.sort_unstable();
         out.dedup();
         out
     }
 
-    /// How many ingredients `ingredients` lists: without making the list when the object has one
-    /// `contains` list (sorted and unique, as every list is), as nearly every object does.
+    /// How many ingredients `ingredients` lists.
     pub fn ingredient_count(&self) -> usize {
-        if let Some(list) = self.contents_list() {
-            return list.len();
-        }
-        let mut all: Vec<&str> = self.contents().collect();
-        all.sort_unstable();
-        all.dedup();
-        all.len()
-    }
-
-    /// The object's contents as its one `contains` list (sorted and unique), empty when it has none;
-    /// `None` when it has several (see `contents`).
-    pub fn contents_list(&self) -> Option<&[SmolStr]> {
-        let mut lists = self.states.iter().filter_map(|s| match &s.arg {
-            Some(StateArg::Ingredients(list)) if s.name == "contains" => Some(list.as_slice()),
-            _ => None,
-        });
-        match (lists.next(), lists.next()) {
-            (first, None) => Some(first.unwrap_or_default()),
-            _ => None,
-        }
-    }
-
-    pub fn has_state(&self, name: &str) -> bool {
-        self.states.iter().any(|s| s.name == name)
+        self.ingredients::<&str>().len()
     }
 }
 
@@ -204,10 +152,64 @@ impl std::fmt::Display for ObjectNode {
     }
 }
 
-/// Index of an object node in a knowledge base.
-pub type NodeId = usize;
-/// Index of a functional unit in a knowledge base.
-pub type UnitId = usize;
+/// Defines an id type: the position of one item in the knowledge base's list of such items, which
+/// indexes any list kept in step with it (`kb.nodes[id]`, `kb.producers[id]`, `seen[id]`).
+macro_rules! id_type {
+    ($(#[$doc:meta])* $name:ident) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+        #[serde(transparent)]
+        pub struct $name(pub usize);
+
+        impl $name {
+            /// Every id of a list of `len` items.
+            pub fn all(len: usize) -> impl DoubleEndedIterator<Item = $name> + Clone {
+                (0..len).map($name)
+            }
+        }
+
+        impl std::fmt::Display for $name {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                self.0.fmt(f)
+            }
+        }
+
+        impl<T> std::ops::Index<$name> for [T] {
+            type Output = T;
+            fn index(&self, id: $name) -> &T {
+                &self[id.0]
+            }
+        }
+
+        impl<T> std::ops::IndexMut<$name> for [T] {
+            fn index_mut(&mut self, id: $name) -> &mut T {
+                &mut self[id.0]
+            }
+        }
+
+        impl<T> std::ops::Index<$name> for Vec<T> {
+            type Output = T;
+            fn index(&self, id: $name) -> &T {
+                &self[id.0]
+            }
+        }
+
+        impl<T> std::ops::IndexMut<$name> for Vec<T> {
+            fn index_mut(&mut self, id: $name) -> &mut T {
+                &mut self[id.0]
+            }
+        }
+    };
+}
+
+id_type!(
+    /// An object node of a knowledge base: its place in `KnowledgeBase::nodes`.
+    NodeId
+);
+id_type!(
+    /// A functional unit of a knowledge base: its place in `KnowledgeBase::units`.
+    UnitId
+);
 
 /// An object node as used by one functional unit: `moves` is FOON's motion flag
 /// (1 = the object is manipulated or changes, 0 = it is only present).

@@ -364,6 +364,12 @@ fn lines(text: &str) -> impl Iterator<Item = &str> {
     })
 }
 
+fn too_long(file: &str, line: usize, bytes: usize) -> FoonError {
+    let limit = limits::MAX_LINE_BYTES;
+    let message = format!("line is {bytes} bytes long; the limit is {limit}");
+    FoonError::at(ErrorCode::TooLarge, file, line, 1, message)
+}
+
 fn too_many_units(file: &str, line: usize) -> FoonError {
     FoonError::at(
         ErrorCode::TooLarge,
@@ -433,17 +439,7 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
             return Err(too_many_units(name, line_no - 1));
         }
         if raw.len() > limits::MAX_LINE_BYTES {
-            return Err(FoonError::at(
-                ErrorCode::TooLarge,
-                name,
-                line_no,
-                1,
-                format!(
-                    "line is {} bytes long; the limit is {}",
-                    raw.len(),
-                    limits::MAX_LINE_BYTES
-                ),
-            ));
+            return Err(too_long(name, line_no, raw.len()));
         }
         let line = raw.trim_end_matches(['\r', ' ', '\t']);
         let trimmed = line.trim_start();

@@ -4,7 +4,7 @@
 
 use crate::foon::bundle::FILE_MARK;
 use crate::foon::kb::KnowledgeBase;
-use crate::foon::model::{ObjectNode, State, StateArg};
+use crate::foon::model::{NodeId, ObjectNode, State, StateArg};
 use crate::foon::read::{GoalMark, ParsedObject, Subgraph};
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -76,7 +76,7 @@ pub fn subgraph_text(g: &Subgraph) -> String {
 /// A knowledge base as a bundle: one part per subgraph with the (merged) units it contributed and its goal
 /// marks. Motion times are not kept by the knowledge base, so they are not written.
 pub fn kb_bundle(kb: &KnowledgeBase) -> String {
-    let mut goals: BTreeMap<(&str, usize), Option<u32>> = BTreeMap::new();
+    let mut goals: BTreeMap<(&str, NodeId), Option<u32>> = BTreeMap::new();
     for g in &kb.goals {
         goals.insert((g.subgraph.as_str(), g.node), g.dish_class);
     }
@@ -91,7 +91,7 @@ pub fn kb_bundle(kb: &KnowledgeBase) -> String {
             any = true;
             let unit = &kb.units[u];
             out.push_str("//\n");
-            let object = |out: &mut String, node: usize, moves: bool| {
+            let object = |out: &mut String, node: NodeId, moves: bool| {
                 let goal = goals
                     .get(&(name, node))
                     .map(|&dish_class| GoalMark { dish_class });

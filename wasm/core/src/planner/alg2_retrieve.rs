@@ -30,6 +30,7 @@ pub(crate) struct Retrieved {
 
 /// The search's tables, kept by the thread and cleared for each retrieval: case 4 retrieves for many
 /// candidates.
+#[derive(Default)]
 pub(crate) struct Search {
     /// The unit chosen to make each node, handed to the result when the search completes.
     chosen: HashMap<NodeId, UnitId>,
@@ -50,32 +51,13 @@ pub(crate) struct Search {
     order_stack: Vec<(NodeId, Option<UnitId>)>,
 }
 
-impl Default for Search {
-    /// Sized for a typical recipe's tree, so that the tables do not grow step by step.
-    fn default() -> Self {
-        Search {
-            chosen: HashMap::default(),
-            made: FixedBitSet::new(),
-            in_tree: FixedBitSet::new(),
-            visited: FixedBitSet::new(),
-            queue: VecDeque::new(),
-            inputs: Vec::new(),
-            stack: Vec::new(),
-            seen: HashSet::default(),
-            done: FixedBitSet::new(),
-            reached: FixedBitSet::new(),
-            order_stack: Vec::new(),
-        }
-    }
-}
-
 impl Search {
     /// Whether `target` can be reached from `from` following chosen producers (node → unit → inputs).
     /// Inlined: the search asks it of every input of every candidate unit, and most are answered
     /// without the walk.
     #[inline]
     fn depends_on(&mut self, kb: &KnowledgeBase, from: NodeId, target: NodeId) -> bool {
-        from == target || (self.made.contains(from) && self.walk_to(kb, from, target))
+        from == target || (self.made.contains(from.0) && self.walk_to(kb, from, target))
     }
 
     /// `depends_on`'s walk from a made node, through made nodes only (the others lead nowhere).
@@ -91,7 +73,7 @@ impl Search {
                 if i == target {
                     return true;
                 }
-                if self.made.contains(i) {
+                if self.made.contains(i.0) {
                     self.stack.push(i);
                 }
             }
@@ -109,28 +91,28 @@ impl Search {
         // iterative DFS over made nodes: (node, its unit once its inputs are pushed)
         let stack = &mut self.order_stack;
         stack.clear();
-        if self.made.contains(root) {
+        if self.made.contains(root.0) {
             stack.push((root, None));
         }
         while let Some((node, expanded)) = stack.pop() {
             if let Some(u) = expanded {
-                if !self.done.put(u) {
+                if !self.done.put(u.0) {
                     order.push(u);
                 }
                 continue;
             }
             let u = self.chosen[&node];
-            if self.reached.put(node) || self.done.contains(u) {
+            if self.reached.put(node.0) || self.done.contains(u.0) {
                 continue;
             }
             stack.push((node, Some(u)));
             self.inputs.clear();
             let made = &self.made;
             self.inputs
-                .extend(kb.units[u].input_nodes().filter(|&n| made.contains(n)));
+                .extend(kb.units[u].input_nodes().filter(|&n| made.contains(n.0)));
             self.inputs.sort_unstable();
             for &n in self.inputs.iter().rev() {
-                if !self.reached.contains(n) {
+                if !self.reached.contains(n.0) {
                     stack.push((n, None));
                 }
             }
@@ -288,22 +270,10 @@ fn search(
             Some(s) => s,
             None => own.insert(Search::default()),
         };
-        s.chosen.clear();
-        // the last complete retrieval took the table
-        for (set, len) in [
-            (&mut s.made, kb.nodes.len()),
-            (&mut s.in_tree, kb.units.len()),
-            (&mut s.visited, kb.nodes.len()),
-        ] {
-            set.clear();
-            set.grow(len);
-        }
-        s.queue.clear();
-        s.queue.push_back((root, None));
-        s.visited.insert(root);
+        s.start(kb, root);
         let mut blocked = Vec::new();
         while let Some((node, parent)) = s.queue.pop_front() {
-            if node != root && kb.kitchen.get(node).copied().unwrap_or(true) {
+            if node != root && kb.kitchen.get(node.0).copied().unwrap_or(true) {
                 trace.record(|t| t.retrieval.push(taken(kb, node, Outcome::Kitchen)));
                 continue;
             }
@@ -312,97 +282,44 @@ fn search(
                 trace.record(|t| t.retrieval.push(taken(kb, node, Outcome::RecipeStart)));
                 continue;
             }
-            let Some(producers) = kb.producers.get(node) else {
-                continue;
-            };
-            if producers.is_empty() {
+            if kb.producers.get(node.0).is_none_or(Vec::is_empty) {
                 continue;
             }
-            let mut best: Option<Candidate> = None;
-            let mut cyclic = false;
-            let mut cyclic_in_recipe = false;
-            // the candidates as weighed, when recording (cyclic ones without a place in the contest)
-            let mut weighed: Vec<(Option<Candidate>, UnitId)> = Vec::new();
-            for &u in producers {
-                let unit = &kb.units[u];
-                if unit.input_nodes().any(|n| n == node) {
-                    continue; // the unit needs what it makes: it only passes the object on
-                }
-                let same_recipe = match parent {
-                    Some(p) => index.share_recipe(u, p),
-                    None => prefer.is_some_and(|p| index.sources(u).contains(&p)),
-                };
-                if unit.input_nodes().any(|n| s.depends_on(kb, n, node)) {
-                    cyclic = true;
-                    cyclic_in_recipe |= same_recipe;
-                    trace.record(|_| weighed.push((None, u)));
-                    continue; // would close a cycle
-                }
-                let mut candidate = Candidate {
-                    unit: u,
-                    reused: s.in_tree.contains(u),
-                    same_recipe,
-                    detour: None,
-                    g: None,
-                };
-                trace.record(|_| weighed.push((Some(candidate.clone()), u)));
-                let better = match best.as_mut() {
-                    None => true,
-                    Some(b) => candidate.decide(b, node, kb, index, scorer).0 == Ordering::Greater,
-                };
-                if better {
-                    best = Some(candidate);
-                }
-            }
+            let ctx = (kb, index, scorer);
+            let contest = s.contest(ctx, node, parent, prefer, trace);
+            let expansion =
+                |outcome, chosen| weigh(kb, scorer, node, outcome, contest.weighed, chosen);
             let Some(Candidate {
                 unit: u,
                 same_recipe,
                 ..
-            }) = best
+            }) = contest.best
             else {
-                if cyclic && !cyclic_in_recipe {
+                if contest.cyclic && !contest.cyclic_in_recipe {
                     blocked.push(node);
                 }
-                let outcome = if cyclic_in_recipe {
+                let outcome = if contest.cyclic_in_recipe {
                     Outcome::HadFromStart
                 } else {
                     Outcome::Cycle
                 };
-                trace.record(|t| {
-                    t.retrieval
-                        .push(weigh(kb, scorer, node, outcome, weighed, None))
-                });
+                trace.record(|t| t.retrieval.push(expansion(outcome, None)));
                 continue;
             };
-            if cyclic_in_recipe && !same_recipe {
+            if contest.cyclic_in_recipe && !same_recipe {
                 // the recipe only makes it again later (a lid put back): it had it from the start, and
                 // another recipe's way of making it would bring that recipe along
-                let outcome = Outcome::HadFromStart;
-                trace.record(|t| {
-                    t.retrieval
-                        .push(weigh(kb, scorer, node, outcome, weighed, None))
-                });
+                trace.record(|t| t.retrieval.push(expansion(Outcome::HadFromStart, None)));
                 continue;
             }
             trace.record(|t| {
-                let chosen = Some((u, index));
-                let e = weigh(kb, scorer, node, Outcome::Expanded, weighed, chosen);
-                t.retrieval.push(e);
+                t.retrieval
+                    .push(expansion(Outcome::Expanded, Some((u, index))))
             });
             if !allowed(u) {
                 return None;
             }
-            s.chosen.insert(node, u);
-            s.made.insert(node);
-            s.in_tree.insert(u);
-            s.inputs.clear();
-            s.inputs.extend(kb.units[u].input_nodes());
-            s.inputs.sort_unstable();
-            for &n in &s.inputs {
-                if !s.visited.put(n) {
-                    s.queue.push_back((n, Some(u)));
-                }
-            }
+            s.expand(kb, node, u);
         }
         let units = s.execution_order(kb, root);
         Some(Retrieved {
@@ -411,6 +328,99 @@ fn search(
             blocked,
         })
     })
+}
+
+/// The units making a node, weighed against each other (`Search::contest`).
+struct Contest {
+    best: Option<Candidate>,
+    /// Some unit would close a cycle; one of the recipe that needs the node would.
+    cyclic: bool,
+    cyclic_in_recipe: bool,
+    /// The candidates as weighed, when recording (cyclic ones without a place in the contest).
+    weighed: Vec<(Option<Candidate>, UnitId)>,
+}
+
+impl Search {
+    /// Cleared for a retrieval from `root` (the last complete retrieval took the table `chosen`).
+    fn start(&mut self, kb: &KnowledgeBase, root: NodeId) {
+        self.chosen.clear();
+        for (set, len) in [
+            (&mut self.made, kb.nodes.len()),
+            (&mut self.in_tree, kb.units.len()),
+            (&mut self.visited, kb.nodes.len()),
+        ] {
+            set.clear();
+            set.grow(len);
+        }
+        self.queue.clear();
+        self.queue.push_back((root, None));
+        self.visited.insert(root.0);
+    }
+
+    /// The best of the units making `node`, needed by unit `parent` (`None` for the root, where units
+    /// of subgraph `prefer` count as the recipe's).
+    fn contest(
+        &mut self,
+        (kb, index, scorer): (&KnowledgeBase, &PlannerIndex, &Scorer),
+        node: NodeId,
+        parent: Option<UnitId>,
+        prefer: Option<u32>,
+        trace: &Recorder,
+    ) -> Contest {
+        let mut c = Contest {
+            best: None,
+            cyclic: false,
+            cyclic_in_recipe: false,
+            weighed: Vec::new(),
+        };
+        for &u in &kb.producers[node] {
+            let unit = &kb.units[u];
+            if unit.input_nodes().any(|n| n == node) {
+                continue; // the unit needs what it makes: it only passes the object on
+            }
+            let same_recipe = match parent {
+                Some(p) => index.share_recipe(u, p),
+                None => prefer.is_some_and(|p| index.sources(u).contains(&p)),
+            };
+            if unit.input_nodes().any(|n| self.depends_on(kb, n, node)) {
+                c.cyclic = true;
+                c.cyclic_in_recipe |= same_recipe;
+                trace.record(|_| c.weighed.push((None, u)));
+                continue; // would close a cycle
+            }
+            let mut candidate = Candidate {
+                unit: u,
+                reused: self.in_tree.contains(u.0),
+                same_recipe,
+                detour: None,
+                g: None,
+            };
+            trace.record(|_| c.weighed.push((Some(candidate.clone()), u)));
+            let better = match c.best.as_mut() {
+                None => true,
+                Some(b) => candidate.decide(b, node, kb, index, scorer).0 == Ordering::Greater,
+            };
+            if better {
+                c.best = Some(candidate);
+            }
+        }
+        c
+    }
+
+    /// Unit `u` makes `node`: its inputs are searched next, in id order.
+    fn expand(&mut self, kb: &KnowledgeBase, node: NodeId, u: UnitId) {
+        self.chosen.insert(node, u);
+        self.made.insert(node.0);
+        self.in_tree.insert(u.0);
+        self.inputs.clear();
+        self.inputs.extend(kb.units[u].input_nodes());
+        self.inputs.sort_unstable();
+        for &n in &self.inputs {
+            if !self.visited.put(n.0) {
+                self.queue.push_back((n, Some(u)));
+            }
+        }
+    }
 }
 
 /// The record of a node the search took as it is, without looking for a unit.

@@ -3,7 +3,7 @@
 
 use super::transitions::Transitions;
 use crate::foon::kb::KnowledgeBase;
-use crate::foon::model::{FunctionalUnit, NodeId, StateArg};
+use crate::foon::model::{FunctionalUnit, NodeId, StateArg, UnitId};
 use crate::vocab::food_taxonomy::Taxonomy;
 use crate::vocab::states::{category, has_food_state, is_food_state, node_category, Category};
 use crate::vocab::taxonomy::{is_transfer_motion, is_utensil};
@@ -148,7 +148,7 @@ fn subgraph_ids(kb: &KnowledgeBase) -> (HashMap<String, u32>, Vec<Vec<u32>>) {
 /// Per node, the subgraphs (sorted) in which some unit makes it rather than passing it on.
 fn made_in(kb: &KnowledgeBase, unit_sources: &[Vec<u32>]) -> Vec<Vec<u32>> {
     let mut made_in: Vec<Vec<u32>> = vec![Vec::new(); kb.nodes.len()];
-    for (uid, u) in kb.units.iter().enumerate() {
+    for (uid, u) in kb.each_unit() {
         for o in u.output_nodes() {
             if !u.input_nodes().any(|i| i == o) {
                 made_in[o].extend_from_slice(&unit_sources[uid]);
@@ -176,7 +176,7 @@ fn state_counts(
     }
     let mut label_state: HashMap<&str, HashMap<(&str, Option<u32>), u32>> = HashMap::default();
     let mut state_freq: HashMap<(&str, Option<u32>), u32> = HashMap::default();
-    for (uid, u) in kb.units.iter().enumerate() {
+    for (uid, u) in kb.each_unit() {
         let classes: BTreeSet<Option<u32>> = kb.provenance[uid]
             .iter()
             .map(|s| subgraph_class.get(s.as_str()).copied().flatten())
@@ -358,7 +358,7 @@ fn goal_classes(
         .zip(ingredients)
         .enumerate()
         .filter(|(_, (g, _))| {
-            kb.producers.get(g.node).is_some_and(|p| !p.is_empty())
+            kb.producers.get(g.node.0).is_some_and(|p| !p.is_empty())
                 && !is_utensil(&kb.nodes[g.node].label)
         })
         .map(|(i, (_, ids))| (i, ids))
@@ -462,7 +462,7 @@ fn heated_vessels(kb: &KnowledgeBase) -> HashSet<SmolStr> {
 impl PlannerIndex {
     pub fn new(kb: &KnowledgeBase) -> PlannerIndex {
         let mut by_label: HashMap<SmolStr, Vec<NodeId>> = HashMap::default();
-        for (id, n) in kb.nodes.iter().enumerate() {
+        for (id, n) in kb.each_node() {
             by_label.entry(n.label.clone()).or_default().push(id);
         }
         let ingredient_labels: Vec<String> = kb
@@ -506,20 +506,20 @@ impl PlannerIndex {
 
     /// Whether node `n` is a starting item of one of the recipes unit `u` comes from (that recipe
     /// never makes it): retrieval takes it from the kitchen there, as the recipe did.
-    pub(crate) fn starts_in_recipe_of(&self, u: usize, n: NodeId) -> bool {
-        let made = self.made_in.get(n).map(Vec::as_slice).unwrap_or(&[]);
+    pub(crate) fn starts_in_recipe_of(&self, u: UnitId, n: NodeId) -> bool {
+        let made = self.made_in.get(n.0).map(Vec::as_slice).unwrap_or(&[]);
         self.sources(u)
             .iter()
             .any(|s| made.binary_search(s).is_err())
     }
 
     /// The ids of the subgraphs unit `u` occurs in, sorted.
-    pub(crate) fn sources(&self, u: usize) -> &[u32] {
-        self.unit_sources.get(u).map(Vec::as_slice).unwrap_or(&[])
+    pub(crate) fn sources(&self, u: UnitId) -> &[u32] {
+        self.unit_sources.get(u.0).map(Vec::as_slice).unwrap_or(&[])
     }
 
     /// Whether units `u` and `v` occur in a common subgraph.
-    pub(crate) fn share_recipe(&self, u: usize, v: usize) -> bool {
+    pub(crate) fn share_recipe(&self, u: UnitId, v: UnitId) -> bool {
         let theirs = self.sources(v);
         self.sources(u)
             .iter()
@@ -543,9 +543,9 @@ impl PlannerIndex {
         self.label_names.len()
     }
 
-    pub(crate) fn unit_ingredients(&self, u: usize) -> &[u32] {
+    pub(crate) fn unit_ingredients(&self, u: UnitId) -> &[u32] {
         self.unit_ingredients
-            .get(u)
+            .get(u.0)
             .map(Vec::as_slice)
             .unwrap_or(&[])
     }

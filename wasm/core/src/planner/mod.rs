@@ -57,13 +57,9 @@ pub fn plan(
     let motions = request.robot.as_ref().map(Motions::new).transpose()?;
     let scorer = score::Scorer::new(similarity, index, &labels);
     let trace = explain::Recorder::new(request.explain);
+    let no_goal = "the knowledge base has no goal node with a functional unit that makes it";
     let chosen = alg1_goal::select(kb, index, &scorer, class, &mut notes, &query, &trace)
-        .ok_or_else(|| {
-            FoonError::new(
-                ErrorCode::NoGoal,
-                "the knowledge base has no goal node with a functional unit that makes it",
-            )
-        })?;
+        .ok_or_else(|| FoonError::new(ErrorCode::NoGoal, no_goal))?;
     let goal_subgraph = index.subgraph_id(&chosen.goal.subgraph);
     let root = (chosen.goal.node, goal_subgraph);
     let mode = request.robot.as_ref().map(|o| o.mode).zip(motions.as_ref());
@@ -95,11 +91,9 @@ pub fn plan(
         );
     }
     trace.record(|t| t.outcomes(&outcomes, |o| index.is_label(o)));
-    let dish_class = class.and_then(|c| {
-        dish_class_name(c).map(|name| DishClassRef {
-            index: c,
-            name: name.to_string(),
-        })
+    let dish_class = class.and_then(|index| {
+        let name = dish_class_name(index)?.to_string();
+        Some(DishClassRef { index, name })
     });
     let mut plan = output::build(output::Parts {
         kb,

@@ -67,7 +67,7 @@ fn search_space(
     let mut queue = VecDeque::from([root]);
     seen.insert(root);
     while let Some(node) = queue.pop_front() {
-        for &u in kb.producers.get(node).map_or(&[][..], Vec::as_slice) {
+        for &u in kb.producers.get(node.0).map_or(&[][..], Vec::as_slice) {
             let unit = &kb.units[u];
             if space.contains_key(&u) || unit.input_nodes().any(|n| n == node) {
                 continue;

@@ -11,11 +11,10 @@
 //! is dropped. Duplicated units and units whose products nobody uses are dropped.
 
 use super::check::available_at_start;
-use super::tree::{TUnitId, Tree};
+use super::tree::{SlotId, TUnitId, Tree};
 use crate::contract::plan::{IngredientOutcome, PlanNode, Status};
 use rustc_hash::FxHashSet as HashSet;
 use std::collections::BinaryHeap;
-use std::ops::Range;
 use std::sync::Arc;
 
 type Value = usize;
@@ -58,59 +57,48 @@ fn plan_nodes(tree: &Tree, value: &[usize]) -> (Vec<Option<Arc<PlanNode>>>, Valu
 }
 
 /// Per unit: its input values (with repeats, sorted), output values (sorted) and the values it makes
-/// (outputs that are not inputs, sorted, unique), as ranges of one buffer. A shape changes only where a
-/// round of `schedule` edits its unit, so it is found once rather than every round.
-struct Shapes {
-    of_unit: Vec<[Range<usize>; 3]>,
-    buf: Vec<Value>,
-}
+/// (outputs that are not inputs, sorted, unique). A shape changes only where a round of `schedule` edits
+/// its unit, so it is found once rather than every round.
+struct Shapes(Vec<[Vec<Value>; 3]>);
 
 impl Shapes {
     fn new(tree: &Tree, v: &Values, units: &[TUnitId]) -> Shapes {
-        let mut shapes = Shapes {
-            of_unit: vec![[0..0, 0..0, 0..0]; tree.units.len()],
-            buf: Vec::with_capacity(8 * units.len()),
-        };
+        let mut shapes = Shapes(vec![Default::default(); tree.units.len()]);
         for &u in units {
             shapes.update(tree, v, u);
         }
         shapes
     }
 
-    /// (Re)computes the unit's shape (a replaced one stays unused in the buffer).
+    /// (Re)computes the unit's shape.
     fn update(&mut self, tree: &Tree, v: &Values, u: TUnitId) {
         let unit = &tree.units[u];
-        let buf = &mut self.buf;
-        let inputs = push_sorted(buf, unit.inputs.iter().map(|i| v.of_slot[i.0]));
-        let outputs = push_sorted(buf, unit.outputs.iter().map(|o| v.of_slot[o.0]));
-        let from = buf.len();
-        for k in outputs.clone() {
-            let o = buf[k];
-            if buf[inputs.clone()].binary_search(&o).is_err() && buf[from..].last() != Some(&o) {
-                buf.push(o);
-            }
-        }
-        self.of_unit[u] = [inputs, outputs, from..buf.len()];
+        let sorted = |uses: &[(SlotId, bool)]| {
+            let mut values: Vec<Value> = uses.iter().map(|x| v.of_slot[x.0]).collect();
+            values.sort_unstable();
+            values
+        };
+        let (inputs, outputs) = (sorted(&unit.inputs), sorted(&unit.outputs));
+        let mut made: Vec<Value> = outputs
+            .iter()
+            .copied()
+            .filter(|o| inputs.binary_search(o).is_err())
+            .collect();
+        made.dedup();
+        self.0[u] = [inputs, outputs, made];
     }
 
     fn inputs(&self, u: TUnitId) -> &[Value] {
-        &self.buf[self.of_unit[u][0].clone()]
+        &self.0[u][0]
     }
 
     fn outputs(&self, u: TUnitId) -> &[Value] {
-        &self.buf[self.of_unit[u][1].clone()]
+        &self.0[u][1]
     }
 
     fn made(&self, u: TUnitId) -> &[Value] {
-        &self.buf[self.of_unit[u][2].clone()]
+        &self.0[u][2]
     }
-}
-
-fn push_sorted(buf: &mut Vec<Value>, values: impl Iterator<Item = Value>) -> Range<usize> {
-    let from = buf.len();
-    buf.extend(values);
-    buf[from..].sort_unstable();
-    from..buf.len()
 }
 
 /// Orders the live units the goal needs so that the evaluator's invariants hold, editing the tree where

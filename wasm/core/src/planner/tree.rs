@@ -59,7 +59,6 @@ pub(crate) struct Tree<'kb> {
 /// every list is (the reader makes them so); an emptied `contains` list becomes `empty`, and states
 /// stay sorted and unique.
 pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<SmolStr>)) {
-    let mut emptied = false;
     node.states.retain_mut(|s| {
         let Some(StateArg::Ingredients(list)) = &mut s.arg else {
             return true;
@@ -71,25 +70,12 @@ pub(crate) fn edit_contents(node: &mut ObjectNode, f: &mut dyn FnMut(&mut Vec<Sm
         }
         if s.name == "contains" {
             *s = State::plain("empty");
-            emptied = true;
             return true;
         }
         false
     });
-    // an edit seldom reorders states: only among states of one name, unless a list became `empty`
-    // (states of different names stay in order, so only their names are compared); sorted and made
-    // unique only then
-    let sorted = if emptied {
-        node.states.is_sorted_by(|a, b| a < b)
-    } else {
-        node.states
-            .windows(2)
-            .all(|w| w[0].name != w[1].name || w[0] < w[1])
-    };
-    if !sorted {
-        node.states.sort();
-        node.states.dedup();
-    }
+    node.states.sort();
+    node.states.dedup();
 }
 
 /// Starts a node's `contains` list, in place of `empty`, with one item (for a node holding nothing).
@@ -132,28 +118,13 @@ pub(crate) fn dedup_slots(uses: &mut Vec<(SlotId, bool)>) {
 }
 
 /// What a unit does, in values (see `Tree::values`): its motion's id, its inputs' values sorted, a
-/// separator, its outputs' values sorted. Units with equal keys are the same step of a plan. Written
-/// at the start of `free`, which keeps the rest (the keys of a round share one buffer).
-fn value_key<'b>(
-    unit: &TUnit,
-    motion: usize,
-    value: &[usize],
-    free: &mut &'b mut [usize],
-) -> &'b [usize] {
-    let outs = unit.inputs.len() + 2;
-    let (key, rest) = std::mem::take(free).split_at_mut(outs + unit.outputs.len());
-    *free = rest;
-    key[0] = motion;
-    for (k, i) in key[1..].iter_mut().zip(&unit.inputs) {
-        *k = value[i.0];
-    }
-    key[1..outs - 1].sort_unstable();
-    key[outs - 1] = usize::MAX;
-    for (k, o) in key[outs..].iter_mut().zip(&unit.outputs) {
-        *k = value[o.0];
-    }
-    key[outs..].sort_unstable();
-    key
+/// separator, its outputs' values sorted. Units with equal keys are the same step of a plan.
+fn value_key(unit: &TUnit, motion: usize, value: &[usize]) -> Vec<usize> {
+    let mut ins: Vec<usize> = unit.inputs.iter().map(|i| value[i.0]).collect();
+    let mut outs: Vec<usize> = unit.outputs.iter().map(|o| value[o.0]).collect();
+    ins.sort_unstable();
+    outs.sort_unstable();
+    [&[motion][..], &ins, &[usize::MAX], &outs].concat()
 }
 
 /// Whether what `node` holds goes on into `theirs`, made by a unit taking it: a food made from a food
@@ -165,24 +136,9 @@ fn passes_on(node: &Slot, theirs: &Slot) -> bool {
         return true;
     }
     let (node, theirs) = (&node.node, &theirs.node);
-    // the contents compared last: the dearest test, and only when it decides
-    let Some(all) = theirs.contents_list() else {
-        return theirs.holds_something()
-            && (theirs.label == node.label
-                || node.contents().all(|x| theirs.contents().any(|c| c == x)));
-    };
-    // one `contains` list, as nearly every node has: it holds something when the list does
-    !all.is_empty() && (theirs.label == node.label || lists_all(node, all))
-}
-
-/// Whether `all` (a `contains` list, sorted) has every item of `node`'s contents: one pass over both when
-/// `node` has one list, as nearly every node does.
-fn lists_all(node: &ObjectNode, all: &[SmolStr]) -> bool {
-    let Some(mine) = node.contents_list() else {
-        return node.contents().all(|x| all.iter().any(|c| c == x));
-    };
-    let mut rest = all.iter();
-    mine.iter().all(|x| rest.any(|c| c == x))
+    theirs.holds_something()
+        && (theirs.label == node.label
+            || node.contents().all(|x| theirs.contents().any(|c| c == x)))
 }
 
 /// Keeps in a slot's lists of contents only the items `keep` accepts (see `edit_contents`). A node
@@ -224,9 +180,7 @@ impl<'kb> Tree<'kb> {
     /// A tree from a retrieval result whose root is the goal.
     pub fn from_retrieved(kb: &'kb KnowledgeBase, r: &Retrieved, root: NodeId) -> Tree<'kb> {
         let mut t = Tree::default();
-        // a unit has a few objects: sized so that the tables do not grow step by step
-        let mut slot_of: HashMap<NodeId, SlotId> =
-            HashMap::with_capacity_and_hasher(4 * r.units.len() + 1, Default::default());
+        let mut slot_of: HashMap<NodeId, SlotId> = HashMap::default();
         t.goal = t.kb_slot(kb, root, &mut slot_of);
         t.add_retrieved(kb, r, &mut slot_of, Origin::Reference);
         t
@@ -259,25 +213,14 @@ impl<'kb> Tree<'kb> {
         slot_of: &mut HashMap<NodeId, SlotId>,
         origin: Origin,
     ) {
-        // at most one new slot per object of a unit: the tables grow once, not step by step
-        let objects: usize = r
-            .units
-            .iter()
-            .map(|&u| kb.units[u].inputs.len() + kb.units[u].outputs.len())
-            .sum();
-        self.slots.reserve(objects);
-        self.producer.reserve(objects);
-        self.units.reserve(r.units.len());
         for &u in &r.units {
             let unit = &kb.units[u];
             let tu = self.units.len();
-            // room for one more: a new ingredient joins one of these units (`modify::finish_branch`)
-            let mut inputs = Vec::with_capacity(unit.inputs.len() + 1);
-            inputs.extend(
-                unit.inputs
-                    .iter()
-                    .map(|o| (self.kb_slot(kb, o.node, slot_of), o.moves)),
-            );
+            let inputs = unit
+                .inputs
+                .iter()
+                .map(|o| (self.kb_slot(kb, o.node, slot_of), o.moves))
+                .collect();
             let outputs = unit
                 .outputs
                 .iter()
@@ -454,16 +397,12 @@ impl<'kb> Tree<'kb> {
     /// Ingredient labels in the tree (not utensils, not the goal's own label), sorted and unique.
     pub fn ingredient_labels(&self) -> Vec<&str> {
         let goal = self.slots[self.goal].node.label.as_str();
-        // sized once (the slots bound it): a filtered list would grow step by step
-        let mut labels: Vec<&str> = Vec::with_capacity(self.slots.len());
-        labels.extend(
-            self.live_slots()
-                .filter(|&s| !self.slots[s].utensil)
-                .map(|s| self.slots[s].node.label.as_str())
-                .filter(|&l| l != goal),
-        );
-        // an ingredient's slots often follow each other: fewer names to sort
-        labels.dedup();
+        let mut labels: Vec<&str> = self
+            .live_slots()
+            .filter(|&s| !self.slots[s].utensil)
+            .map(|s| self.slots[s].node.label.as_str())
+            .filter(|&l| l != goal)
+            .collect();
         labels.sort_unstable();
         labels.dedup();
         labels
@@ -636,86 +575,8 @@ impl<'kb> Tree<'kb> {
             if changed {
                 order = self.order();
             }
-            // position of the last unit using each slot (inputs as they are at the start of the round)
-            let mut last_use: Vec<Option<usize>> = vec![None; self.slots.len()];
-            for (pos, &u) in order.iter().enumerate() {
-                for i in &self.units[u].inputs {
-                    last_use[i.0] = Some(pos);
-                }
-            }
             let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
-            // room for every key of the round (inputs only get fewer in it)
-            let room = order
-                .iter()
-                .map(|&u| self.units[u].inputs.len() + self.units[u].outputs.len() + 2)
-                .sum();
-            let mut keys = vec![0; room];
-            let mut free = keys.as_mut_slice();
-            let mut first: HashMap<&[usize], TUnitId> =
-                HashMap::with_capacity_and_hasher(order.len(), Default::default());
-            for (pos, &u) in order.iter().enumerate() {
-                {
-                    let unit = &mut self.units[u];
-                    for i in unit.inputs.iter_mut() {
-                        while let Some(&a) = alias.get(&i.0) {
-                            if a == i.0 {
-                                break;
-                            }
-                            i.0 = a;
-                        }
-                    }
-                    dedup_slots(&mut unit.inputs);
-                }
-                let unit = &self.units[u];
-                let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
-                let key = value_key(unit, motion[u], &value, &mut free);
-                if !makes_goal {
-                    if let Some(&f) = first.get(&key) {
-                        let theirs = self.units[f].outputs.clone();
-                        for &(o, _) in &self.units[u].outputs {
-                            if let Some(&(t, _)) = theirs.iter().find(|t| value[t.0] == value[o]) {
-                                if t != o {
-                                    alias.insert(o, t);
-                                }
-                            }
-                        }
-                        self.units[u].alive = false;
-                        changed = true;
-                        continue;
-                    }
-                }
-                // new products a later unit uses (or the goal)
-                let ins = &key[1..=unit.inputs.len()];
-                let useful = unit.outputs.iter().any(|&(o, _)| {
-                    !ins.contains(&value[o])
-                        && (o == self.goal || last_use[o].is_some_and(|l| l > pos))
-                });
-                first.insert(key, u);
-                if makes_goal && !useful {
-                    // the goal's last unit changes nothing: the goal is its equal input
-                    if let Some(&(i, _)) =
-                        unit.inputs.iter().find(|i| value[i.0] == value[self.goal])
-                    {
-                        if self.producer[i].is_some() {
-                            self.goal = i;
-                            self.units[u].alive = false;
-                            changed = true;
-                            break;
-                        }
-                    }
-                }
-                if !useful && !makes_goal {
-                    for &(o, _) in &unit.outputs {
-                        if let Some(&(i, _)) = unit.inputs.iter().find(|i| value[i.0] == value[o]) {
-                            if i != o {
-                                alias.insert(o, i);
-                            }
-                        }
-                    }
-                    self.units[u].alive = false;
-                    changed = true;
-                }
-            }
+            changed |= self.drop_round(&order, &value, &motion, &mut alias);
             if !changed {
                 // as after a round that changed something, the units the goal does not need go
                 self.keep_only(&order);
@@ -739,6 +600,87 @@ impl<'kb> Tree<'kb> {
             self.keep_only(&order);
         }
         (value, order)
+    }
+
+    /// One round of `drop_redundant_units` over `order`: drops the units equal to an earlier one or
+    /// making nothing new, recording in `alias` the slot standing for each output of a dropped unit.
+    /// Whether it dropped any.
+    fn drop_round(
+        &mut self,
+        order: &[TUnitId],
+        value: &[usize],
+        motion: &[usize],
+        alias: &mut HashMap<SlotId, SlotId>,
+    ) -> bool {
+        let mut changed = false;
+        // position of the last unit using each slot (inputs as they are at the start of the round)
+        let mut last_use: Vec<Option<usize>> = vec![None; self.slots.len()];
+        for (pos, &u) in order.iter().enumerate() {
+            for i in &self.units[u].inputs {
+                last_use[i.0] = Some(pos);
+            }
+        }
+        let mut first: HashMap<Vec<usize>, TUnitId> = HashMap::default();
+        for (pos, &u) in order.iter().enumerate() {
+            {
+                let unit = &mut self.units[u];
+                for i in unit.inputs.iter_mut() {
+                    while let Some(&a) = alias.get(&i.0) {
+                        if a == i.0 {
+                            break;
+                        }
+                        i.0 = a;
+                    }
+                }
+                dedup_slots(&mut unit.inputs);
+            }
+            let unit = &self.units[u];
+            let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
+            let key = value_key(unit, motion[u], value);
+            if !makes_goal {
+                if let Some(&f) = first.get(&key) {
+                    let theirs = self.units[f].outputs.clone();
+                    for &(o, _) in &self.units[u].outputs {
+                        if let Some(&(t, _)) = theirs.iter().find(|t| value[t.0] == value[o]) {
+                            if t != o {
+                                alias.insert(o, t);
+                            }
+                        }
+                    }
+                    self.units[u].alive = false;
+                    changed = true;
+                    continue;
+                }
+            }
+            // new products a later unit uses (or the goal)
+            let ins = &key[1..=unit.inputs.len()];
+            let useful = unit.outputs.iter().any(|&(o, _)| {
+                !ins.contains(&value[o]) && (o == self.goal || last_use[o].is_some_and(|l| l > pos))
+            });
+            if makes_goal && !useful {
+                // the goal's last unit changes nothing: the goal is its equal input
+                if let Some(&(i, _)) = unit.inputs.iter().find(|i| value[i.0] == value[self.goal]) {
+                    if self.producer[i].is_some() {
+                        self.goal = i;
+                        self.units[u].alive = false;
+                        return true;
+                    }
+                }
+            }
+            if !useful && !makes_goal {
+                for &(o, _) in &unit.outputs {
+                    if let Some(&(i, _)) = unit.inputs.iter().find(|i| value[i.0] == value[o]) {
+                        if i != o {
+                            alias.insert(o, i);
+                        }
+                    }
+                }
+                self.units[u].alive = false;
+                changed = true;
+            }
+            first.insert(key, u);
+        }
+        changed
     }
 
     /// An id per unit, equal for units with the same motion.

@@ -342,38 +342,10 @@ impl EmbeddingTable {
     pub fn embed(&self, phrase: &str) -> PhraseVector {
         self.embed_weighted(phrase, 1.0)
     }
-
-    /// The `top` nearest table words to a vector (for diagnostics).
-    pub fn nearest_words(&self, v: &[f32], top: usize) -> Vec<(&str, f32)> {
-        let mut scored: Vec<(&str, f32)> = self
-            .words
-            .iter()
-            .enumerate()
-            .map(|(i, w)| {
-                (
-                    w.as_str(),
-                    cosine(v, &self.vectors[i * self.dims..(i + 1) * self.dims]),
-                )
-            })
-            .collect();
-        scored.sort_by(|a, b| b.1.total_cmp(&a.1).then_with(|| a.0.cmp(b.0)));
-        scored.truncate(top);
-        scored
-    }
 }
 
 pub fn norm(v: &[f32]) -> f32 {
     v.iter().map(|x| x * x).sum::<f32>().sqrt()
-}
-
-/// Cosine similarity; 0 when either vector is zero.
-pub fn cosine(a: &[f32], b: &[f32]) -> f32 {
-    let (na, nb) = (norm(a), norm(b));
-    if na == 0.0 || nb == 0.0 {
-        return 0.0;
-    }
-    let dot: f32 = a.iter().zip(b).map(|(x, y)| x * y).sum();
-    (dot / (na * nb)).clamp(-1.0, 1.0)
 }
 
 #[cfg(test)]

@@ -29,60 +29,83 @@ pub(super) fn equivalent(
     let ranked = ctx
         .sim
         .rank_in_set(name, ctx.index.id, &ctx.index.ingredient_labels, 6);
-    // a name with no likeness at all (similarity 0, as exact matching gives every other name) is no
-    // alternative and no closest name
-    let alternatives = |eq: &str| -> Vec<Alternative> {
-        ranked
-            .iter()
-            .filter(|(l, s)| l != eq && l != o && *s > 0.0)
-            .take(5)
-            .map(|(l, s)| Alternative {
-                label: l.as_str().into(),
-                similarity: *s,
-            })
-            .collect()
+    let found = match ctx.overrides.get(o) {
+        Some(v) => {
+            w.overridden = true;
+            overridden(ctx, o, v, &mut w.reasons)
+        }
+        None if is_utensil(o) => held_in(ctx, o, name, &ranked, &mut w.reasons),
+        // (a reading is the food itself, named more exactly)
+        None if ctx.index.is_label(name) => Some((name.to_string(), 1.0)),
+        None => most_similar(ctx, name, tree_labels, &ranked, &mut w.reasons),
     };
-    if let Some(v) = ctx.overrides.get(o) {
-        w.overridden = true;
-        if !ctx.index.is_label(v) || is_utensil(v) {
-            w.alternatives = alternatives("");
-            w.reasons.push(format!(
-                "override '{v}' is not an ingredient of the knowledge base"
-            ));
-            return None;
-        }
-        let sim = if v == o {
-            1.0
-        } else {
-            ctx.sim.similarity(o, v)
-        };
-        w.alternatives = alternatives(v);
-        return Some((v.clone(), sim));
-    }
-    // a name FOON gives a utensil or container (a cooking spray holds the oil) is planned as the
-    // ingredient it clearly holds, else only as the one the user picks from the alternatives offered
-    if is_utensil(o) {
-        let held = ranked
-            .first()
-            .filter(|(l, s)| ctx.sim.accepts(*s) && !ctx.sim.low_confidence(name, l, *s));
-        if let Some((label, sim)) = held {
-            w.alternatives = alternatives(label);
-            w.reasons.push(format!(
-                "'{o}' is a container in FOON: planned as the ingredient it holds, '{label}'"
-            ));
-            return Some((label.clone(), *sim));
-        }
-        w.alternatives = alternatives("");
-        w.reasons.push(format!(
-            "'{o}' is a utensil or container in FOON, not an ingredient: pick the ingredient it stands for (an override) to plan it"
+    // a name with no likeness at all (similarity 0, as exact matching gives every other name) is no
+    // alternative
+    let eq = found.as_ref().map_or("", |(label, _)| label.as_str());
+    w.alternatives = ranked
+        .iter()
+        .filter(|(l, s)| l != eq && l != o && *s > 0.0)
+        .take(5)
+        .map(|(l, s)| Alternative {
+            label: l.as_str().into(),
+            similarity: *s,
+        })
+        .collect();
+    found
+}
+
+/// The label `v` the user gave for `o`, when it is an ingredient of the knowledge base.
+fn overridden(ctx: &Context, o: &str, v: &str, reasons: &mut Vec<String>) -> Option<(String, f32)> {
+    if !ctx.index.is_label(v) || is_utensil(v) {
+        reasons.push(format!(
+            "override '{v}' is not an ingredient of the knowledge base"
         ));
         return None;
     }
-    if ctx.index.is_label(name) {
-        // (a reading is the food itself, named more exactly)
-        w.alternatives = alternatives(name);
-        return Some((name.to_string(), 1.0));
+    let sim = if v == o {
+        1.0
+    } else {
+        ctx.sim.similarity(o, v)
+    };
+    Some((v.to_string(), sim))
+}
+
+/// A name FOON gives a utensil or container (a cooking spray holds the oil) is planned as the ingredient
+/// it clearly holds, else only as the one the user picks from the alternatives offered.
+fn held_in(
+    ctx: &Context,
+    o: &str,
+    name: &str,
+    ranked: &[(String, f32)],
+    reasons: &mut Vec<String>,
+) -> Option<(String, f32)> {
+    let held = ranked
+        .first()
+        .filter(|(l, s)| ctx.sim.accepts(*s) && !ctx.sim.low_confidence(name, l, *s));
+    match held {
+        Some((label, sim)) => {
+            reasons.push(format!(
+                "'{o}' is a container in FOON: planned as the ingredient it holds, '{label}'"
+            ));
+            Some((label.clone(), *sim))
+        }
+        None => {
+            reasons.push(format!(
+                "'{o}' is a utensil or container in FOON, not an ingredient: pick the ingredient it stands for (an override) to plan it"
+            ));
+            None
+        }
     }
+}
+
+/// The most similar label of the reference tree (`tree_labels`), else of the knowledge base (`ranked`).
+fn most_similar(
+    ctx: &Context,
+    name: &str,
+    tree_labels: &[SmolStr],
+    ranked: &[(String, f32)],
+    reasons: &mut Vec<String>,
+) -> Option<(String, f32)> {
     let tree_refs: Vec<&str> = tree_labels.iter().map(SmolStr::as_str).collect();
     let in_tree = ctx.sim.rank(name, &tree_refs, 1).into_iter().next();
     let in_kb = ranked.first().cloned();
@@ -96,26 +119,19 @@ pub(super) fn equivalent(
         (Some(t), _) if ctx.sim.accepts(t.1) => Some(t),
         _ => None,
     };
-    match pick {
-        Some((label, sim)) => {
-            w.alternatives = alternatives(&label);
-            if !tree_labels.iter().any(|l| *l == label) {
-                w.reasons
-                    .push(format!("equivalent '{label}' found in the universal FOON"));
-            }
-            Some((label, sim))
+    match &pick {
+        Some((label, _)) if !tree_labels.iter().any(|l| l == label) => {
+            reasons.push(format!("equivalent '{label}' found in the universal FOON"));
         }
-        None => {
-            w.alternatives = alternatives("");
-            w.reasons.push(format!(
-                "no equivalent of '{name}' in the knowledge base{}",
-                ranked
-                    .first()
-                    .filter(|(_, s)| *s > 0.0)
-                    .map(|(l, s)| format!(" (closest: '{l}', {s:.2})"))
-                    .unwrap_or_default()
-            ));
-            None
-        }
+        Some(_) => {}
+        None => reasons.push(format!(
+            "no equivalent of '{name}' in the knowledge base{}",
+            ranked
+                .first()
+                .filter(|(_, s)| *s > 0.0)
+                .map(|(l, s)| format!(" (closest: '{l}', {s:.2})"))
+                .unwrap_or_default()
+        )),
     }
+    pick
 }

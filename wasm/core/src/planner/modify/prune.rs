@@ -183,6 +183,73 @@ fn outputs_of_removed(
     labels
 }
 
+/// Per unit, before pruning: whether it handled an ingredient, and whether something it moved did.
+fn handled_before(tree: &Tree, order: &[TUnitId]) -> Vec<(bool, bool)> {
+    let none_gone = vec![false; tree.slots.len()];
+    let mut before = vec![(false, false); tree.units.len()];
+    for &u in order {
+        let inputs = &tree.units[u].inputs;
+        before[u] = (
+            handles_any(tree, inputs, &none_gone),
+            inputs
+                .iter()
+                .any(|&(x, m)| m && handles(tree, x, &none_gone)),
+        );
+    }
+    before
+}
+
+/// The inputs and outputs of unit `u` as they are now: slots that stand for others (`alias`) replaced,
+/// slots `gone` left out.
+fn uses_now(tree: &Tree, u: TUnitId, alias: &HashMap<SlotId, SlotId>, gone: &[bool]) -> Uses {
+    let resolve = |mut s: SlotId| {
+        for _ in 0..10_000 {
+            match alias.get(&s) {
+                Some(&t) => s = t,
+                None => break,
+            }
+        }
+        s
+    };
+    let unit = &tree.units[u];
+    let inputs = unit.inputs.iter().map(|&(x, m)| (resolve(x), m));
+    let outputs = unit.outputs.iter().copied();
+    (
+        inputs.filter(|i| !gone[i.0]).collect(),
+        outputs.filter(|o| !gone[o.0]).collect(),
+    )
+}
+
+/// A unit's inputs and outputs.
+type Uses = (Vec<(SlotId, bool)>, Vec<(SlotId, bool)>);
+
+/// Whether a unit, with its uses as they are after pruning (`inputs`, `outputs`) and what it handled
+/// before (`handled_before`), is left doing nothing.
+fn does_nothing(
+    tree: &Tree,
+    (had_food, moved_food): (bool, bool),
+    inputs: &[(SlotId, bool)],
+    outputs: &[(SlotId, bool)],
+    gone: &[bool],
+) -> bool {
+    let lost_all = had_food && !handles_any(tree, inputs, gone);
+    // nothing new comes out: every output is one of the inputs as they are now
+    let no_op = outputs.iter().all(|o| {
+        inputs
+            .iter()
+            .any(|i| i.0 == o.0 || tree.slots[i.0].node == tree.slots[o.0].node)
+    });
+    // a unit whose moved things all lost their food (an empty bowl poured into the pot, the egg
+    // cracked into the broth) acts on nothing, and gives back only things of the names it took
+    let label = |x: SlotId| tree.slots[x].node.label.as_str();
+    let moves_nothing = moved_food
+        && !inputs.iter().any(|&(x, m)| m && handles(tree, x, gone))
+        && outputs
+            .iter()
+            .all(|o| inputs.iter().any(|i| label(i.0) == label(o.0)));
+    lost_all || no_op || moves_nothing || outputs.is_empty()
+}
+
 /// Removes every starting ingredient not asked for (`keep`: planned so far; `requested`: the query's
 /// names, some still to be brought in), with the units that only served it; containers that held it
 /// pass on unchanged, and it leaves every `contains {…}` list. Returns the removed labels.
@@ -208,17 +275,9 @@ pub(super) fn prune(
         return Vec::new();
     }
     let going: HashSet<&str> = pruned.iter().map(String::as_str).collect();
+    let before = handled_before(tree, &order);
     // per slot, whether it is pruned
     let mut gone = vec![false; tree.slots.len()];
-    // per unit, whether it handled an ingredient before pruning
-    let mut had = vec![false; tree.units.len()];
-    // per unit, whether something it moved did
-    let mut moved_food = vec![false; tree.units.len()];
-    for &u in &order {
-        let inputs = &tree.units[u].inputs;
-        had[u] = handles_any(tree, inputs, &gone);
-        moved_food[u] = inputs.iter().any(|&(x, m)| m && handles(tree, x, &gone));
-    }
     // the dish's own name stays in the lists of its side, where it means the dish
     drop_contents(tree, &|x, item| {
         going.contains(item) || (namesake && item == dish && !dish_side[x])
@@ -232,46 +291,10 @@ pub(super) fn prune(
     // labels that go with the units removed below, beyond those already dropped from the contents
     let mut with_units: BTreeSet<String> = BTreeSet::new();
     let mut alias: HashMap<SlotId, SlotId> = HashMap::default();
-    let resolve = |alias: &HashMap<SlotId, SlotId>, mut s: SlotId| {
-        for _ in 0..10_000 {
-            match alias.get(&s) {
-                Some(&t) => s = t,
-                None => break,
-            }
-        }
-        s
-    };
-    // a unit's uses as they are now, in buffers: a kept unit's lists shrink into their own room
-    let mut inputs: Vec<(SlotId, bool)> = Vec::new();
-    let mut outputs: Vec<(SlotId, bool)> = Vec::new();
     for &u in &order {
-        inputs.clear();
-        inputs.extend(
-            tree.units[u]
-                .inputs
-                .iter()
-                .map(|&(x, m)| (resolve(&alias, x), m))
-                .filter(|i| !gone[i.0]),
-        );
-        outputs.clear();
-        outputs.extend(tree.units[u].outputs.iter().filter(|o| !gone[o.0]));
+        let (mut inputs, outputs) = uses_now(tree, u, &alias, &gone);
         let makes_goal = outputs.iter().any(|o| o.0 == goal);
-        let lost_all = had[u] && !handles_any(tree, &inputs, &gone);
-        // nothing new comes out: every output is one of the inputs as they are now
-        let no_op = outputs.iter().all(|o| {
-            inputs
-                .iter()
-                .any(|i| i.0 == o.0 || tree.slots[i.0].node == tree.slots[o.0].node)
-        });
-        // a unit whose moved things all lost their food (an empty bowl poured into the pot, the egg
-        // cracked into the broth) acts on nothing, and gives back only things of the names it took
-        let label = |x: SlotId| tree.slots[x].node.label.as_str();
-        let moves_nothing = moved_food[u]
-            && !inputs.iter().any(|&(x, m)| m && handles(tree, x, &gone))
-            && outputs
-                .iter()
-                .all(|o| inputs.iter().any(|i| label(i.0) == label(o.0)));
-        if (lost_all || no_op || moves_nothing || outputs.is_empty()) && !makes_goal {
+        if !makes_goal && does_nothing(tree, before[u], &inputs, &outputs, &gone) {
             tree.units[u].alive = false;
             let gone_with = outputs_of_removed(tree, &inputs, &outputs, &mut alias, &mut gone);
             let unlisted = |l: &String| !keep.contains(l.as_str()) && !going.contains(l.as_str());
@@ -290,21 +313,20 @@ pub(super) fn prune(
             }
             continue;
         }
+        dedup_slots(&mut inputs);
         let unit = &mut tree.units[u];
-        unit.inputs.clone_from(&inputs);
-        dedup_slots(&mut unit.inputs);
-        unit.outputs.clone_from(&outputs);
+        unit.inputs = inputs;
+        unit.outputs = outputs;
     }
-    // the goal may have been passed through a removed unit
-    // labels made only by removed units leave the lists of contents as well (the slots still live are
-    // listed only when there are such labels)
+    // labels made only by removed units leave the lists of contents as well
+    with_units.retain(|l| {
+        !tree
+            .live_slots()
+            .any(|x| !gone[x] && tree.slots[x].node.label == *l)
+    });
     if !with_units.is_empty() {
-        let still: Vec<SlotId> = tree.live_slots().filter(|&x| !gone[x]).collect();
-        with_units.retain(|l| !still.iter().any(|&x| tree.slots[x].node.label == *l));
-        if !with_units.is_empty() {
-            drop_contents(tree, &|_, item| with_units.contains(item));
-            pruned.extend(with_units);
-        }
+        drop_contents(tree, &|_, item| with_units.contains(item));
+        pruned.extend(with_units);
     }
     if namesake {
         pruned.insert(dish.to_string());

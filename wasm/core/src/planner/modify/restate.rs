@@ -58,18 +58,7 @@ pub(super) fn restate<'kb>(
     slots: &[SlotId],
 ) -> Result<String, String> {
     let order = tree.order();
-    let first_use = |x: SlotId| {
-        order
-            .iter()
-            .position(|&u| tree.units[u].inputs.iter().any(|i| i.0 == x))
-            .unwrap_or(usize::MAX)
-    };
-    let Some(leaf) = slots
-        .iter()
-        .copied()
-        .filter(|&x| !tree.produced(x))
-        .min_by_key(|&x| (first_use(x), x))
-    else {
+    let Some(leaf) = starting_leaf(tree, &order, slots) else {
         return Err(format!(
             "'{o}' has no starting node in the tree; state kept"
         ));
@@ -79,28 +68,7 @@ pub(super) fn restate<'kb>(
     let leaf_cat = food_category(ctx, &leaf_node);
     let c = category(s);
     if c.is_starting() {
-        // Table I, case 3: the tree starts from a processed leaf; add the units making it from raw
-        let Some(kb_node) = tree.slots[leaf].kb else {
-            return Err(format!(
-                "no way to make '{leaf_node}' from '{s}' is known; taken as it is"
-            ));
-        };
-        let r = retrieve(ctx.kb, ctx.index, ctx.scorer, kb_node, ctx.goal_subgraph);
-        if r.units.is_empty() {
-            return Err(format!(
-                "FOON has no way to make '{leaf_state}' {o} from '{s}'; it is taken as it is"
-            ));
-        }
-        let mut slot_of: HashMap<NodeId, SlotId> = [(kb_node, leaf)].into_iter().collect();
-        let before = tree.slots.len();
-        tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
-        if eq != o {
-            tree.rename_in(before..tree.slots.len(), eq, o);
-        }
-        return Ok(format!(
-            "added {} unit(s) making the tree's '{leaf_state}' {o} from '{s}'",
-            r.units.len()
-        ));
+        return made_from_raw(ctx, tree, eq, o, s, leaf);
     }
     if !leaf_cat.reaches(c) {
         // a node without food states is in the category its ingredient is sold in
@@ -120,24 +88,8 @@ pub(super) fn restate<'kb>(
         ));
     }
     if SEPARATION.contains(&c) {
-        // swap the tree's own cutting step for one reaching the wanted state
-        for &u in &order {
-            if let Some((_, old)) = cut_in(tree, u, o) {
-                let targets = downstream(tree, vec![u], o, &order);
-                for x in targets {
-                    let node = replace_states(&tree.slots[x].node, &old, s);
-                    tree.slots[x].node = Cow::Owned(node);
-                }
-                let unit = &mut tree.units[u];
-                let before = std::mem::replace(&mut unit.motion, Cow::Owned(motion.clone()));
-                if unit.origin == Origin::Reference {
-                    unit.origin = Origin::Renamed;
-                }
-                return Ok(format!(
-                    "'{}' ({before}) changed to '{s}' ({motion})",
-                    old.join(", ")
-                ));
-            }
+        if let Some(done) = swap_cut(tree, &order, o, s, &motion) {
+            return Ok(done);
         }
     }
     // The unit bringing the ingredient to the wanted state comes after the tree's last cut of it (a
@@ -155,53 +107,10 @@ pub(super) fn restate<'kb>(
         (goes_on && food_category(ctx, &tree.slots[x].node).reaches(c)).then_some((x, u))
     });
     let from = cut.map_or_else(|| past_handling(ctx, tree, &order, o, leaf), |(x, _)| x);
-    // a whole food its first use opens into other foods (an egg cracked into white and yolk) is not
-    // blended or cooked before: those foods are what go on
     if cut.is_none() && !SEPARATION.contains(&c) {
-        for v in tree.consumers(from, &order) {
-            let outputs = tree.units[v].outputs.iter().map(|&(y, _)| &tree.slots[y]);
-            if outputs
-                .clone()
-                .any(|x| x.node.label == o || x.node.contents().any(|i| i == o))
-            {
-                continue;
-            }
-            let foods: Vec<&str> = outputs
-                .filter(|x| !x.utensil && !x.node.holds_something())
-                .map(|x| x.node.label.as_str())
-                .collect();
-            if !foods.is_empty() {
-                return Err(format!(
-                    "state '{s}' not given: '{}' makes the {o} into {} first, which the tree takes on",
-                    tree.units[v].motion,
-                    foods.join(" and ")
-                ));
-            }
-        }
+        opened_first(tree, &order, from, o, s)?;
     }
-    let from_node = tree.slots[from].node.clone();
-    let old: Vec<String> = food_states(&from_node)
-        .into_iter()
-        .map(str::to_string)
-        .collect();
-    // after a cut the ingredient stays where it was cut
-    let made = match cut {
-        Some(_) => replace_states(&from_node, &old, s),
-        None => ObjectNode::new(o, vec![State::plain(s)]),
-    };
-    let consumers: Vec<TUnitId> = tree.consumers(from, &order).collect();
-    let new_slot = add_state_unit(ctx, tree, from, made, &motion);
-    for &v in &consumers {
-        for i in tree.units[v].inputs.iter_mut() {
-            if i.0 == from {
-                i.0 = new_slot;
-            }
-        }
-    }
-    for x in downstream(tree, consumers, o, &order) {
-        let node = replace_states(&tree.slots[x].node, &old, s);
-        tree.slots[x].node = Cow::Owned(node);
-    }
+    add_state_step(ctx, tree, &order, from, cut.is_some(), o, s, &motion);
     Ok(match cut {
         Some((_, u)) => format!(
             "added '{motion}' after '{}' to make it '{s}'",
@@ -209,6 +118,146 @@ pub(super) fn restate<'kb>(
         ),
         None => format!("added '{motion}' to make it '{s}'"),
     })
+}
+
+/// Of `o`'s slots, the node nothing in the tree makes that is used first.
+fn starting_leaf(tree: &Tree, order: &[TUnitId], slots: &[SlotId]) -> Option<SlotId> {
+    let first_use = |x: SlotId| {
+        order
+            .iter()
+            .position(|&u| tree.units[u].inputs.iter().any(|i| i.0 == x))
+            .unwrap_or(usize::MAX)
+    };
+    slots
+        .iter()
+        .copied()
+        .filter(|&x| !tree.produced(x))
+        .min_by_key(|&x| (first_use(x), x))
+}
+
+/// Table I, case 3: the tree starts from a processed leaf; adds the units making it from raw.
+fn made_from_raw<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    eq: &str,
+    o: &str,
+    s: &str,
+    leaf: SlotId,
+) -> Result<String, String> {
+    let leaf_node = &tree.slots[leaf].node;
+    let Some(kb_node) = tree.slots[leaf].kb else {
+        return Err(format!(
+            "no way to make '{leaf_node}' from '{s}' is known; taken as it is"
+        ));
+    };
+    let leaf_state = state_text(leaf_node);
+    let r = retrieve(ctx.kb, ctx.index, ctx.scorer, kb_node, ctx.goal_subgraph);
+    if r.units.is_empty() {
+        return Err(format!(
+            "FOON has no way to make '{leaf_state}' {o} from '{s}'; it is taken as it is"
+        ));
+    }
+    let mut slot_of: HashMap<NodeId, SlotId> = [(kb_node, leaf)].into_iter().collect();
+    let before = tree.slots.len();
+    tree.add_retrieved(ctx.kb, &r, &mut slot_of, Origin::Grafted);
+    if eq != o {
+        tree.rename_in(before..tree.slots.len(), eq, o);
+    }
+    Ok(format!(
+        "added {} unit(s) making the tree's '{leaf_state}' {o} from '{s}'",
+        r.units.len()
+    ))
+}
+
+/// Swaps the tree's own cutting step of `o` for one reaching the wanted cut `s`, if it has one.
+fn swap_cut(tree: &mut Tree, order: &[TUnitId], o: &str, s: &str, motion: &str) -> Option<String> {
+    let (u, old) = order
+        .iter()
+        .find_map(|&u| cut_in(tree, u, o).map(|(_, old)| (u, old)))?;
+    for x in downstream(tree, vec![u], o, order) {
+        let node = replace_states(&tree.slots[x].node, &old, s);
+        tree.slots[x].node = Cow::Owned(node);
+    }
+    let unit = &mut tree.units[u];
+    let before = std::mem::replace(&mut unit.motion, Cow::Owned(motion.to_string()));
+    if unit.origin == Origin::Reference {
+        unit.origin = Origin::Renamed;
+    }
+    Some(format!(
+        "'{}' ({before}) changed to '{s}' ({motion})",
+        old.join(", ")
+    ))
+}
+
+/// A whole food its first use opens into other foods (an egg cracked into white and yolk) is not
+/// blended or cooked before: those foods are what go on.
+fn opened_first(
+    tree: &Tree,
+    order: &[TUnitId],
+    from: SlotId,
+    o: &str,
+    s: &str,
+) -> Result<(), String> {
+    for v in tree.consumers(from, order) {
+        let outputs = tree.units[v].outputs.iter().map(|&(y, _)| &tree.slots[y]);
+        if outputs
+            .clone()
+            .any(|x| x.node.label == o || x.node.contents().any(|i| i == o))
+        {
+            continue;
+        }
+        let foods: Vec<&str> = outputs
+            .filter(|x| !x.utensil && !x.node.holds_something())
+            .map(|x| x.node.label.as_str())
+            .collect();
+        if !foods.is_empty() {
+            return Err(format!(
+                "state '{s}' not given: '{}' makes the {o} into {} first, which the tree takes on",
+                tree.units[v].motion,
+                foods.join(" and ")
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Adds the unit `motion` bringing `o` from slot `from` to state `s`; its users take the new node, and
+/// the nodes of `o` after it are in `s`.
+#[allow(clippy::too_many_arguments)]
+fn add_state_step<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    order: &[TUnitId],
+    from: SlotId,
+    after_cut: bool,
+    o: &str,
+    s: &str,
+    motion: &str,
+) {
+    let from_node = tree.slots[from].node.clone();
+    let old: Vec<String> = food_states(&from_node)
+        .into_iter()
+        .map(str::to_string)
+        .collect();
+    // after a cut the ingredient stays where it was cut
+    let made = if after_cut {
+        replace_states(&from_node, &old, s)
+    } else {
+        ObjectNode::new(o, vec![State::plain(s)])
+    };
+    let consumers: Vec<TUnitId> = tree.consumers(from, order).collect();
+    let new_slot = add_state_unit(ctx, tree, from, made, motion);
+    for &v in &consumers {
+        for i in tree.units[v].inputs.iter_mut() {
+            if i.0 == from {
+                i.0 = new_slot;
+            }
+        }
+    }
+    for x in downstream(tree, consumers, o, order) {
+        let node = replace_states(&tree.slots[x].node, &old, s);
+        tree.slots[x].node = Cow::Owned(node);
+    }
 }
 
 /// Where on `o`'s own chain from `leaf` a change of state can come: past the units that unwrap it, wash
@@ -340,9 +389,7 @@ pub(super) fn add_state_unit<'kb>(
     motion: &str,
 ) -> SlotId {
     let made = tree.add_slot(Cow::Owned(made));
-    // room for the utensil: the list does not grow for it
-    let mut inputs = Vec::new();
-    inputs.push((from, true));
+    let mut inputs = vec![(from, true)];
     if let Some(t) = ctx.index.utensil_for(motion) {
         inputs.push((utensil_slot(ctx.kb, tree, t), false));
     }
@@ -382,20 +429,14 @@ pub(super) fn rank_nodes(ctx: &Context, eq: &str, s: &str) -> Vec<(NodeId, bool)
         std::cmp::Reverse<NodeId>,
     );
     let mut ranked: Vec<(Key, NodeId)> = Vec::new();
-    // a node's food states and their categories, one buffer for all nodes
-    let mut food: Vec<&str> = Vec::new();
-    let mut cats: Vec<Category> = Vec::new();
     for &n in ctx.index.nodes_of(eq) {
         let node = &ctx.kb.nodes[n];
-        food.clear();
-        cats.clear();
-        for state in node.physical_states() {
-            let k = category(state);
-            if k != Category::Other {
-                food.push(state);
-                cats.push(k);
-            }
-        }
+        // the node's food states and their categories
+        let (food, cats): (Vec<&str>, Vec<Category>) = node
+            .physical_states()
+            .map(|state| (state, category(state)))
+            .filter(|&(_, k)| k != Category::Other)
+            .unzip();
         let exact = food.contains(&s);
         let kin = food.iter().any(|f| akin(f, s));
         let cat = c != Category::Other && cats.contains(&c);

@@ -11,7 +11,7 @@ use crate::foon::model::{ObjectNode, State, StateArg};
 use crate::vocab::foods;
 use crate::vocab::states::{category, kind, state_text, Category};
 use crate::vocab::taxonomy::{is_mixing_motion, PUT_MOTIONS};
-use smol_str::{SmolStr, SmolStrBuilder};
+use smol_str::{format_smolstr, SmolStr};
 use std::sync::Arc;
 
 mod progress;
@@ -73,7 +73,6 @@ pub(crate) fn build(p: Parts) -> Plan {
     let uses = Uses::new(tree, order);
     let mut progress_lines = Vec::with_capacity(p.outcomes.len());
     let mut done: Vec<&str> = Vec::with_capacity(p.outcomes.len());
-    let mut slots = Vec::new();
     // "pepper — ground" is a spice, whatever the tree's other peppers are
     let readings = foods::query_readings(&p.query);
     for o in &p.outcomes {
@@ -85,8 +84,7 @@ pub(crate) fn build(p: Parts) -> Plan {
             .get(o.object.as_str())
             .copied()
             .unwrap_or(&o.object);
-        let line = progress_line(order, &uses, (&o.object, food), &mut slots, &mut relations);
-        if let Some(line) = line {
+        if let Some(line) = progress_line(order, &uses, (&o.object, food), &mut relations) {
             progress_lines.push(line);
         }
     }

@@ -38,14 +38,9 @@ impl<'t> Uses<'t> {
     }
 }
 
-/// "in bowl": two words, in a string of exactly their size (`concat` and `join` take a slower,
-/// general path for these few short pieces).
+/// "in bowl": two words.
 pub(super) fn spaced(first: &str, second: &str) -> SmolStr {
-    let mut out = SmolStrBuilder::with_capacity(first.len() + 1 + second.len());
-    out.push_str(first);
-    out.push_str(" ");
-    out.push_str(second);
-    out.finish()
+    format_smolstr!("{first} {second}")
 }
 
 pub(super) fn location(n: &ObjectNode) -> SmolStr {
@@ -60,14 +55,12 @@ pub(super) fn location(n: &ObjectNode) -> SmolStr {
 
 /// The ingredient's states and places from its starting node, the motions between them, and the dish:
 /// once it has gone into a food (flour into the batter), the line follows that food on, to the goal
-/// (the batter poured into the pan and baked into the muffin). `slots`: a buffer reused from line to
-/// line (the slots a walk passes through, then the vessels `product_of` follows). `food`: what the
-/// label stands for (`foods::query_readings`: black pepper for "pepper — ground").
+/// (the batter poured into the pan and baked into the muffin). `food`: what the label stands for
+/// (`foods::query_readings`: black pepper for "pepper — ground").
 pub(super) fn progress_line<'t>(
     order: &[TUnitId],
     uses: &Uses,
     (label, food): (&str, &str),
-    slots: &mut Vec<SlotId>,
     relations: &mut Relations<'t>,
 ) -> Option<ProgressLine> {
     // the slots no unit makes, first used first (else its first slot): the line follows the first that
@@ -85,7 +78,7 @@ pub(super) fn progress_line<'t>(
     }
     let mut first = None;
     for start in starts {
-        let line = line_from(order, uses, (label, food), start, slots, relations);
+        let line = line_from(order, uses, (label, food), start, relations);
         if reaches_dish(&line, &relations.tree.slots[relations.tree.goal].node.label) {
             return Some(line);
         }
@@ -112,11 +105,10 @@ fn line_from<'t>(
     uses: &Uses,
     (label, food): (&str, &str),
     start: SlotId,
-    slots: &mut Vec<SlotId>,
     relations: &mut Relations<'t>,
 ) -> ProgressLine {
     let tree = relations.tree;
-    let mut walked = walk(order, uses, label, start, 0, slots, relations);
+    let mut walked = walk(order, uses, label, start, 0, relations);
     let mut states = walked.states;
     let mut motions = walked.motions;
     let goal = tree.slots[tree.goal].node.label.as_str();
@@ -140,7 +132,7 @@ fn line_from<'t>(
         // those of its parts (the white it was cracked into)
         let itself = product == label;
         let part = walked.opened;
-        walked = walk(order, uses, product, x, pos + 1, slots, relations);
+        walked = walk(order, uses, product, x, pos + 1, relations);
         if itself {
             states.pop();
         }
@@ -254,30 +246,82 @@ pub(super) fn walk<'t>(
     uses: &Uses,
     label: &str,
     start: SlotId,
-    mut from: usize,
-    seen: &mut Vec<SlotId>,
+    from: usize,
     relations: &mut Relations<'t>,
 ) -> Walked {
     let tree = relations.tree;
-    let mut states = Vec::new();
-    states.push(ProgressState {
-        physical_state: state_text(&tree.slots[start].node),
-        location: location(&tree.slots[start].node),
-    });
-    let mut motions = Vec::new();
-    let mut at = start;
-    seen.clear();
-    seen.push(start);
-    let mut into = None;
-    let mut opened = false;
-    let mut last_step: Option<(usize, TUnitId)> = None;
+    let mut w = Walker {
+        tree,
+        order,
+        uses,
+        label,
+        seen: vec![start],
+        at: start,
+        from,
+        last_step: None,
+        walked: Walked {
+            states: vec![ProgressState {
+                physical_state: state_text(&tree.slots[start].node),
+                location: location(&tree.slots[start].node),
+            }],
+            motions: Vec::new(),
+            into: None,
+            opened: false,
+        },
+    };
     loop {
         // no unit before the first to use it takes it (one nothing takes leaves the search where it is,
         // for the vessel holding it)
-        if uses.first_use[at] != usize::MAX {
-            from = from.max(uses.first_use[at]);
+        if uses.first_use[w.at] != usize::MAX {
+            w.from = w.from.max(uses.first_use[w.at]);
         }
-        let next = order.iter().enumerate().skip(from).find_map(|(pos, &u)| {
+        let Some((pos, u, out)) = w.next_taker() else {
+            if !w.take_up_vessel() {
+                w.follow_vessel_contents();
+                break;
+            }
+            continue;
+        };
+        w.last_step = Some((pos, u));
+        w.walked.motions.push(tree.units[u].motion.as_ref().into());
+        if let Some(o) = out {
+            w.step_to(o, u, pos);
+        } else if let Some(o) = w.entered(u, pos) {
+            if !w.enter(o, u, pos, relations) {
+                break;
+            }
+        } else {
+            // a unit that takes it and gives nothing of it back (a mixer turned on with the bowl in
+            // it): the next unit taking it goes on
+            w.walked.motions.pop();
+            w.from = pos + 1;
+        }
+    }
+    w.walked
+}
+
+/// Where `walk` is: the slot it follows, the position in the order it searches from, and the line so far.
+struct Walker<'a, 't> {
+    tree: &'t Tree<'t>,
+    order: &'a [TUnitId],
+    uses: &'a Uses<'a>,
+    label: &'a str,
+    /// The slots it passed through.
+    seen: Vec<SlotId>,
+    at: SlotId,
+    from: usize,
+    /// The last unit that moved it, and its position.
+    last_step: Option<(usize, TUnitId)>,
+    walked: Walked,
+}
+
+impl<'t> Walker<'_, 't> {
+    /// The next unit taking the food, its position, and the piece of the food it gives back (`None` when
+    /// the food went into something else).
+    fn next_taker(&self) -> Option<(usize, TUnitId, Option<SlotId>)> {
+        let (tree, label, at) = (self.tree, self.label, self.at);
+        let mut takers = self.order.iter().enumerate().skip(self.from);
+        takers.find_map(|(pos, &u)| {
             let unit = &tree.units[u];
             if !unit.inputs.iter().any(|i| i.0 == at) {
                 return None;
@@ -287,198 +331,203 @@ pub(super) fn walk<'t>(
                 unit.outputs
                     .iter()
                     .map(|o| o.0)
-                    .filter(|&o| tree.slots[o].node.label == label && !seen.contains(&o))
+                    .filter(|&o| tree.slots[o].node.label == label && !self.seen.contains(&o))
             };
             // what goes into the unit making the dish goes into the dish (FOON's greek salad is poured
             // out beside the salad it was made of)
             let makes_dish = unit.outputs.iter().any(|o| o.0 == tree.goal);
             let out = pieces()
-                .find(|&o| uses.first_use[o] != usize::MAX)
+                .find(|&o| self.uses.first_use[o] != usize::MAX)
                 .or_else(|| pieces().next())
                 .filter(|_| !makes_dish);
             Some((pos, u, out))
+        })
+    }
+
+    /// FOON lists a food in a bowl both as a node of its own and among the bowl's contents: when no unit
+    /// takes the node, the units take the bowl; and FOON takes a vessel up again as another node of it
+    /// (the pot the garlic was fried in, later the rice's): that node goes on. Whether there was one.
+    fn take_up_vessel(&mut self) -> bool {
+        let (tree, uses, label) = (self.tree, self.uses, self.label);
+        let unseen = |v: &SlotId| !self.seen.contains(v);
+        let vessel = vessel_holding(tree, uses, self.at, label)
+            .filter(unseen)
+            .or_else(|| vessel_again(tree, uses, self.at, label, self.from).filter(unseen));
+        if let Some(v) = vessel {
+            self.seen.push(v);
+            self.at = v;
+        }
+        vessel.is_some()
+    }
+
+    /// Its last node sits in a vessel: what the vessel's contents become (the vessel the unit that last
+    /// moved it, or made it, put it in, though FOON's vessel may not list it).
+    fn follow_vessel_contents(&mut self) {
+        let (tree, order, label, at) = (self.tree, self.order, self.label, self.at);
+        let touched = self.last_step.or_else(|| {
+            let u = tree.producer.get(at).copied().flatten()?;
+            Some((order.iter().position(|&v| v == u)?, u))
         });
-        let Some((pos, u, out)) = next else {
-            // FOON lists a food in a bowl both as a node of its own and among the bowl's contents:
-            // when no unit takes the node, the units take the bowl; and FOON takes a vessel up again as
-            // another node of it (the pot the garlic was fried in, later the rice's): that node goes on
-            let unseen = |v: &SlotId| !seen.contains(v);
-            let vessel = vessel_holding(tree, uses, at, label)
-                .filter(unseen)
-                .or_else(|| vessel_again(tree, uses, at, label, from).filter(unseen));
-            if let Some(v) = vessel {
-                seen.push(v);
-                at = v;
-                continue;
-            }
-            // its last node sits in a vessel: what the vessel's contents become (the vessel the unit
-            // that last moved it, or made it, put it in, though FOON's vessel may not list it)
-            let touched = last_step.or_else(|| {
-                let u = tree.producer.get(at).copied().flatten()?;
-                Some((order.iter().position(|&v| v == u)?, u))
-            });
-            if let Some((pos, u)) = touched {
-                let container = tree.slots[at].node.container();
-                into = tree.units[u]
-                    .outputs
-                    .iter()
-                    .map(|o| o.0)
-                    .filter(|&x| tree.slots[x].utensil)
-                    .find(|&x| {
-                        let n = &tree.slots[x].node;
-                        n.contents().any(|i| i == label) || container == Some(n.label.as_str())
-                    })
-                    .and_then(|x| product_of(tree, order, pos, x, label, seen));
-                // the food made of the vessel's contents: the line says so
-                if let Some((at, x)) = into {
-                    motions.push(tree.units[order[at]].motion.as_ref().into());
-                    states.push(ProgressState {
-                        physical_state: spaced("in", &tree.slots[x].node.label),
-                        location: location(&tree.slots[x].node),
-                    });
-                }
-            }
-            break;
+        let Some((pos, u)) = touched else {
+            return;
         };
-        last_step = Some((pos, u));
-        motions.push(tree.units[u].motion.as_ref().into());
-        match out {
-            Some(o) => {
-                seen.push(o);
-                states.push(ProgressState {
-                    physical_state: state_after(
-                        label,
-                        &tree.units[u].motion,
-                        &tree.slots[o].node,
-                        states.last().map_or("", |s| s.physical_state.as_str()),
-                    ),
-                    location: location(&tree.slots[o].node),
-                });
-                at = o;
-                from = pos + 1;
-            }
-            None => {
-                // it went into something else: what lists it (a food made of it), else a new food
-                // (the soup simmered into tomato soup, though FOON's pot still lists the soup), else a
-                // food that took it in or the vessel holding it; not another ingredient moved along
-                let outputs = &tree.units[u].outputs;
-                let lists = |food: bool| {
-                    outputs.iter().find(|o| {
-                        let slot = &tree.slots[o.0];
-                        slot.utensil != food && names_in_a_list(&slot.node, label)
-                    })
-                };
-                let fresh = || {
-                    let inputs = &tree.units[u].inputs;
-                    outputs.iter().find(|o| {
-                        let n = &tree.slots[o.0].node;
-                        !tree.slots[o.0].utensil
-                            && !inputs.iter().any(|i| tree.slots[i.0].node.label == n.label)
-                    })
-                };
-                // a food that took more in (the sauce stirred into the fried rice)
-                let grew = || {
-                    let inputs = &tree.units[u].inputs;
-                    outputs.iter().find(|o| {
-                        let n = &tree.slots[o.0].node;
-                        !tree.slots[o.0].utensil
-                            && inputs.iter().any(|i| {
-                                let before = &tree.slots[i.0].node;
-                                before.label == n.label
-                                    && n.contents().count() > before.contents().count()
-                            })
-                    })
-                };
-                // followed in a vessel (the onion in the pot the broth is poured into), it stays in
-                // the vessel; the food itself taken in by another goes with that one
-                let in_vessel = tree.slots[at].utensil;
-                let dish = || outputs.iter().find(|o| o.0 == tree.goal);
-                // a new food beside the vessel that still holds it (an egg poached in the broth): it
-                // stays in the vessel when a food is made of the vessel's contents later
-                let beside = || {
-                    let vessel = lists(false).filter(|_| in_vessel)?;
-                    let mut buffer = Vec::new();
-                    product_of(tree, order, pos, vessel.0, label, &mut buffer).map(|_| vessel)
-                };
-                let entered = dish()
-                    .or_else(|| lists(true))
-                    .or_else(beside)
-                    .or_else(fresh)
-                    .or_else(|| {
-                        if in_vessel {
-                            lists(false).or_else(grew)
-                        } else {
-                            grew().or_else(|| lists(false))
-                        }
-                    });
-                match entered {
-                    Some(&(o, _)) => {
-                        let n = &tree.slots[o].node;
-                        let state = if tree.slots[o].utensil {
-                            // put in a vessel as it was: the same state, a new place; cooked there
-                            // when the vessel's contents are
-                            let rel = relations.to(&n.label);
-                            let before = &states[states.len() - 1].physical_state;
-                            let motion = &tree.units[u].motion;
-                            let before = prepared_by(
-                                label,
-                                motion,
-                                reshaped_by(motion, before, before.clone()),
-                            );
-                            ProgressState {
-                                physical_state: with_vessel_cooking(&before, n),
-                                location: spaced(rel, &n.label),
-                            }
-                        } else if let Some(state) = opened_into(tree, u, label) {
-                            // cracked into its parts (white and yolk): still the food itself
-                            opened = true;
-                            ProgressState {
-                                physical_state: state.into(),
-                                location: location(n),
-                            }
-                        } else {
-                            ProgressState {
-                                physical_state: spaced("in", &n.label),
-                                location: location(n),
-                            }
-                        };
-                        let cooks = crate::vocab::foods::cooks(&tree.units[u].motion);
-                        if states.last() == Some(&state) && !cooks {
-                            // already there (FOON lists what a bowl holds among the inputs of
-                            // the next thing added to it): no step of its own, unless it cooks
-                            motions.pop();
-                        } else {
-                            states.push(state);
-                        }
-                        if tree.slots[o].utensil {
-                            // in a vessel: what is done to the vessel's contents is done to it (in the
-                            // vessel the unit took, where FOON uses that again rather than its output)
-                            seen.push(o);
-                            if uses.first_use[o] != usize::MAX || !tree.slots[at].utensil {
-                                at = o;
-                            }
-                            from = pos + 1;
-                            continue;
-                        }
-                        into = product_of(tree, order, pos, o, label, seen);
-                    }
-                    None => {
-                        // a unit that takes it and gives nothing of it back (a mixer turned on
-                        // with the bowl in it): the next unit taking it goes on
-                        motions.pop();
-                        from = pos + 1;
-                        continue;
-                    }
-                }
-                break;
-            }
+        let container = tree.slots[at].node.container();
+        let into = tree.units[u]
+            .outputs
+            .iter()
+            .map(|o| o.0)
+            .filter(|&x| tree.slots[x].utensil)
+            .find(|&x| {
+                let n = &tree.slots[x].node;
+                n.contents().any(|i| i == label) || container == Some(n.label.as_str())
+            })
+            .and_then(|x| product_of(tree, order, pos, x, label));
+        self.walked.into = into;
+        // the food made of the vessel's contents: the line says so
+        if let Some((at, x)) = into {
+            self.walked
+                .motions
+                .push(tree.units[order[at]].motion.as_ref().into());
+            self.walked.states.push(ProgressState {
+                physical_state: spaced("in", &tree.slots[x].node.label),
+                location: location(&tree.slots[x].node),
+            });
         }
     }
-    Walked {
-        states,
-        motions,
-        into,
-        opened,
+
+    /// Unit `u` at `pos` gave back `o`, a piece of the food: the food is there now.
+    fn step_to(&mut self, o: SlotId, u: TUnitId, pos: usize) {
+        let tree = self.tree;
+        self.seen.push(o);
+        let before = self.walked.states.last();
+        let state = state_after(
+            self.label,
+            &tree.units[u].motion,
+            &tree.slots[o].node,
+            before.map_or("", |s| s.physical_state.as_str()),
+        );
+        self.walked.states.push(ProgressState {
+            physical_state: state,
+            location: location(&tree.slots[o].node),
+        });
+        self.at = o;
+        self.from = pos + 1;
+    }
+
+    /// What the food went into at unit `u`: what lists it (a food made of it), else a new food (the soup
+    /// simmered into tomato soup, though FOON's pot still lists the soup), else a food that took it in or
+    /// the vessel holding it; not another ingredient moved along. `pos`: the unit's place in the order.
+    fn entered(&self, u: TUnitId, pos: usize) -> Option<SlotId> {
+        let (tree, label) = (self.tree, self.label);
+        let outputs = &tree.units[u].outputs;
+        let inputs = &tree.units[u].inputs;
+        let lists = |food: bool| {
+            outputs.iter().find(|o| {
+                let slot = &tree.slots[o.0];
+                slot.utensil != food && names_in_a_list(&slot.node, label)
+            })
+        };
+        let fresh = || {
+            outputs.iter().find(|o| {
+                let n = &tree.slots[o.0].node;
+                !tree.slots[o.0].utensil
+                    && !inputs.iter().any(|i| tree.slots[i.0].node.label == n.label)
+            })
+        };
+        // a food that took more in (the sauce stirred into the fried rice)
+        let grew = || {
+            outputs.iter().find(|o| {
+                let n = &tree.slots[o.0].node;
+                !tree.slots[o.0].utensil
+                    && inputs.iter().any(|i| {
+                        let before = &tree.slots[i.0].node;
+                        before.label == n.label && n.contents().count() > before.contents().count()
+                    })
+            })
+        };
+        // followed in a vessel (the onion in the pot the broth is poured into), it stays in the vessel;
+        // the food itself taken in by another goes with that one
+        let in_vessel = tree.slots[self.at].utensil;
+        let dish = || outputs.iter().find(|o| o.0 == tree.goal);
+        // a new food beside the vessel that still holds it (an egg poached in the broth): it stays in
+        // the vessel when a food is made of the vessel's contents later
+        let beside = || {
+            let vessel = lists(false).filter(|_| in_vessel)?;
+            product_of(tree, self.order, pos, vessel.0, label).map(|_| vessel)
+        };
+        let entered = dish()
+            .or_else(|| lists(true))
+            .or_else(beside)
+            .or_else(fresh)
+            .or_else(|| {
+                if in_vessel {
+                    lists(false).or_else(grew)
+                } else {
+                    grew().or_else(|| lists(false))
+                }
+            });
+        entered.map(|o| o.0)
+    }
+
+    /// The food went into `o` at unit `u` (position `pos`): its state there. Whether the walk goes on
+    /// (in a vessel: what is done to the vessel's contents is done to it).
+    fn enter(&mut self, o: SlotId, u: TUnitId, pos: usize, relations: &mut Relations<'t>) -> bool {
+        let tree = self.tree;
+        let state = self.state_in(o, u, relations);
+        let cooks = crate::vocab::foods::cooks(&tree.units[u].motion);
+        if self.walked.states.last() == Some(&state) && !cooks {
+            // already there (FOON lists what a bowl holds among the inputs of the next thing added to
+            // it): no step of its own, unless it cooks
+            self.walked.motions.pop();
+        } else {
+            self.walked.states.push(state);
+        }
+        if tree.slots[o].utensil {
+            // in the vessel the unit took, where FOON uses that again rather than its output
+            self.seen.push(o);
+            if self.uses.first_use[o] != usize::MAX || !tree.slots[self.at].utensil {
+                self.at = o;
+            }
+            self.from = pos + 1;
+            return true;
+        }
+        self.walked.into = product_of(tree, self.order, pos, o, self.label);
+        false
+    }
+
+    /// The food's state in `o`, which unit `u` put it into.
+    fn state_in(&mut self, o: SlotId, u: TUnitId, relations: &mut Relations<'t>) -> ProgressState {
+        let tree = self.tree;
+        let n = &tree.slots[o].node;
+        if tree.slots[o].utensil {
+            // put in a vessel as it was: the same state, a new place; cooked there when the vessel's
+            // contents are
+            let rel = relations.to(&n.label);
+            let states = &self.walked.states;
+            let before = &states[states.len() - 1].physical_state;
+            let motion = &tree.units[u].motion;
+            let before = prepared_by(
+                self.label,
+                motion,
+                reshaped_by(motion, before, before.clone()),
+            );
+            ProgressState {
+                physical_state: with_vessel_cooking(&before, n),
+                location: spaced(rel, &n.label),
+            }
+        } else if let Some(state) = opened_into(tree, u, self.label) {
+            // cracked into its parts (white and yolk): still the food itself
+            self.walked.opened = true;
+            ProgressState {
+                physical_state: state.into(),
+                location: location(n),
+            }
+        } else {
+            ProgressState {
+                physical_state: spaced("in", &n.label),
+                location: location(n),
+            }
+        }
     }
 }
 
@@ -626,14 +675,13 @@ fn first_vessel_listing(
 
 /// The product an ingredient goes into (section IV-A): the first food node listing it among its
 /// contents, following the vessel it was put in (flour in the bowl → the batter mixed in that bowl).
-/// `vessels`: a buffer for the vessels holding it. Returns the product's position in the order and slot.
+/// Returns the product's position in the order and slot.
 pub(super) fn product_of(
     tree: &Tree,
     order: &[TUnitId],
     pos: usize,
     entered: SlotId,
     label: &str,
-    vessels: &mut Vec<SlotId>,
 ) -> Option<(usize, SlotId)> {
     let lists = |x: SlotId| tree.slots[x].node.contents().any(|i| i == label);
     let food = |x: SlotId| !tree.slots[x].utensil;
@@ -641,8 +689,7 @@ pub(super) fn product_of(
         return Some((pos, entered));
     }
     // a vessel holding it: the first food made from that vessel's contents
-    vessels.clear();
-    vessels.push(entered);
+    let mut vessels = vec![entered];
     let mut beside = None;
     for (at, &u) in order.iter().enumerate().skip(pos + 1) {
         let unit = &tree.units[u];
