@@ -1704,3 +1704,93 @@ fn salt_in_a_pot_that_is_boiled_is_not_called_cooked_but_the_chicken_is() {
     assert!(cooked("chicken breast"), "{:#?}", p.progress_lines);
     assert!(!cooked("salt"), "{:#?}", p.progress_lines);
 }
+
+/// Elsewhere in FOON: parsley chopped, mushrooms sliced, a block of cheddar grated.
+const TOPPINGS: &str = "//
+O\tparsley\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tchop\t<Assumed>
+O\tparsley\t1
+S\tchopped
+//
+O\tmushroom\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tslice\t<Assumed>
+O\tmushroom\t1
+S\tsliced
+//
+O\tcheddar\t1
+S\tblock
+O\tgrater\t1
+M\tgrate\t<Assumed>
+O\tcheddar\t1
+S\tgrated
+//
+";
+
+#[test]
+fn parsley_joins_the_soup_as_it_is_served_and_the_mushrooms_are_boiled_in_it() {
+    // the chicken is boiled in the pot; parsley is scattered over the served bowl
+    let ask = query(
+        "soup",
+        &[
+            ("parsley", "chopped"),
+            ("mushroom", "sliced"),
+            ("chicken breast", "sliced"),
+        ],
+    );
+    let p = plan_of(
+        &[("soup.txt", CHICKEN_POT), ("other.txt", TOPPINGS)],
+        &ExactMatch,
+        &ask,
+    );
+    let parsley = line_motions(&p, "parsley");
+    assert!(!parsley.contains(&"boil"), "{:#?}", p.progress_lines);
+    assert_eq!(parsley.last(), Some(&"pour"), "{parsley:?}");
+    assert!(
+        line_motions(&p, "mushroom").contains(&"boil"),
+        "{:#?}",
+        p.progress_lines
+    );
+}
+
+#[test]
+fn cheddar_goes_onto_the_baked_cake_not_into_its_batter() {
+    // the cake is baked last: no unit after the baking takes more, so one is added onto the dish
+    let (baked_last, _syrup) = SYRUP_CAKE
+        .rsplit_once("O\tsponge\t1\nS\tbaked\nS\tcontains\t{egg}\nO\tsyrup")
+        .unwrap();
+    let baked_last = baked_last.replacen("O\tsponge\t1\n", "O\tsponge\t1\t5\n", 1);
+    let ask = query(
+        "cake",
+        &[
+            ("egg", "cracked"),
+            ("cheddar", "grated"),
+            ("flour", "powder"),
+        ],
+    );
+    let p = plan_of(
+        &[
+            ("cake.txt", &baked_last),
+            ("flour.txt", FLOUR),
+            ("other.txt", TOPPINGS),
+        ],
+        &ExactMatch,
+        &ask,
+    );
+    let cheddar = line_motions(&p, "cheddar");
+    assert!(!cheddar.contains(&"bake"), "{:#?}", p.progress_lines);
+    assert!(line_motions(&p, "flour").contains(&"bake"));
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "cheddar")
+        .unwrap();
+    assert_eq!(line.end_product, p.goal.label, "{line:#?}");
+    assert_eq!(cheddar.last(), Some(&"sprinkle"), "{cheddar:?}");
+    assert_eq!(kinds(&p), []);
+}

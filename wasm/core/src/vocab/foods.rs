@@ -134,6 +134,8 @@ struct Care {
     wet: bool,
     /// Joins a dish that is cooked before the cooking (stock, a bay leaf, onion).
     heat: bool,
+    /// Joins the dish once it is cooked (croutons, grated cheese, chopped parsley, ketchup).
+    top: bool,
     /// What a cook takes off it before it is used or cut (an onion's skin, a cherry's stone).
     trims: Vec<&'static Trim>,
 }
@@ -157,6 +159,7 @@ fn cares() -> &'static HashMap<String, Care> {
                     first: flags.iter().any(|f| f == "first"),
                     wet: flags.iter().any(|f| f == "wet"),
                     heat: flags.iter().any(|f| f == "heat"),
+                    top: flags.iter().any(|f| f == "top"),
                     trims: TRIMS
                         .iter()
                         .filter(|t| flags.iter().any(|f| f == t.flag))
@@ -220,6 +223,13 @@ pub fn must_cook(food: &str) -> bool {
 /// onion, carrot): it gives its taste or softens in the heat.
 pub fn joins_before_heat(food: &str) -> bool {
     flagged(food, |c| c.heat)
+}
+
+/// Whether `food` joins a dish that is cooked only once it is cooked (croutons, grated cheese, chopped
+/// parsley, avocado, ketchup, whipped cream): onto the served dish or stirred in after the cooking, never
+/// beaten into the eggs or baked in the batter. It wins over its category's `heat` (chives, an allium).
+pub fn joins_served(food: &str) -> bool {
+    flagged(food, |c| c.top)
 }
 
 /// The state a cook brings `food` to when a query names only its category ("whole veg" onion: chopped).
@@ -536,7 +546,7 @@ mod tests {
                 .flatten()
             {
                 assert!(
-                    matches!(flag.as_str(), "first" | "wet" | "heat")
+                    matches!(flag.as_str(), "first" | "wet" | "heat" | "top")
                         || TRIMS.iter().any(|t| t.flag == flag),
                     "food_care.tsv: flag '{flag}' in {line}"
                 );
@@ -548,6 +558,9 @@ mod tests {
         assert_eq!(form_of("cheddar").unwrap().state_when_none, None);
         assert!(!shows_cooking("salt") && !shows_cooking("olive oil"));
         assert!(shows_cooking("carrot") && shows_cooking("flour") && shows_cooking("rice"));
+        // a garnish joins the served dish; its flag wins over its category's heat (chives, an allium)
+        assert!(joins_served("cheddar") && joins_served("feta") && joins_served("chive"));
+        assert!(!joins_served("cream cheese") && !joins_served("onion") && !joins_served("thyme"));
     }
 
     #[test]

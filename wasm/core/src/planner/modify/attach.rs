@@ -1,6 +1,7 @@
 //! Attachment: where a new ingredient branch joins the tree (the unit it is added to).
 
 use super::*;
+use crate::planner::tree::add_item;
 
 /// Motions that cannot take more ingredients (a robot cuts one item at a time; what goes into the oven
 /// or under the grill is already assembled).
@@ -130,7 +131,8 @@ pub(super) fn cooks_what_joins(tree: &Tree, cooked: &[bool], u: TUnitId, food: &
 /// reach the goal (`carries`: the tree's `carriers`), by a motion the food can join by (milk poured, not
 /// placed), before a unit that cooks it when it must be cooked (`cooked`: `cooked_later`), where
 /// ingredients of the same kind go in (salt where the pepper is sprinkled), else with the dish's usual
-/// motion, closest to the goal.
+/// motion, closest to the goal. A food that joins the served dish (`foods::joins_served`) takes the unit
+/// closest to the goal that nothing cooks after; where there is none, `top_dish` follows.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn attach_point(
     ctx: &Context,
@@ -143,8 +145,10 @@ pub(super) fn attach_point(
 ) -> Option<TUnitId> {
     let goal_label = tree.slots[tree.goal].node.label.as_str();
     let food = known_as(ctx, o, o);
-    // joins where the dish is cooked after it: it must be cooked, or it gives its taste in the heat
-    let wants_heat = foods::must_cook(o) || foods::joins_before_heat(food);
+    // joins once the dish is cooked (a garnish, a topping), else where the dish is cooked after it: it
+    // must be cooked, or it gives its taste in the heat
+    let served = foods::joins_served(food);
+    let wants_heat = !served && (foods::must_cook(o) || foods::joins_before_heat(food));
     // closest to the goal first: a unit further from it must do strictly better, so its kin
     // ingredients are worked out only when they could make it
     let mut best: Option<(TUnitId, AttachKey)> = None;
@@ -166,7 +170,11 @@ pub(super) fn attach_point(
             i.1 && !x.utensil && x.node.label != goal_label
         });
         let fits = foods::joins_by(o, &unit.motion);
-        let safe = !wants_heat || cooks_what_joins(tree, cooked, u, food);
+        let safe = if served {
+            !cooks_what_joins(tree, cooked, u, food)
+        } else {
+            !wants_heat || cooks_what_joins(tree, cooked, u, food)
+        };
         let beats = |kin: bool, pref: usize| {
             let key = (reaches, fits, safe, adds, kin, usize::MAX - pref);
             best.as_ref().is_none_or(|(_, b)| key > *b).then_some(key)
@@ -178,6 +186,11 @@ pub(super) fn attach_point(
         let (more, pref) = motion_fit(ctx.class, &unit.motion);
         if !more || beats(true, pref).is_none() {
             continue;
+        }
+        if served && reaches && fits && safe {
+            // as late as it can: onto the served dish rather than into the hot pot after the cooking
+            best = Some((u, (true, true, true, adds, false, usize::MAX - pref)));
+            break;
         }
         let kin = unit.inputs.iter().any(|i| {
             let x = &tree.slots[i.0];
@@ -209,3 +222,24 @@ pub(super) fn attach_point(
 /// How `attach_point` ranks a unit: reaches the goal, the food joins by its motion, the food is cooked
 /// after if it must be, the unit adds an ingredient, kin ingredients join there, the dish's motion rank.
 pub(super) type AttachKey = (bool, bool, bool, bool, bool, usize);
+
+/// How a food that joins the served dish goes onto it, first the one its form joins by: grated cheese
+/// sprinkled, ketchup poured, whipped cream spread.
+const TOPPING_MOTIONS: &[&str] = &["sprinkle", "pour", "spread"];
+
+/// A food that joins the served dish (`foods::joins_served`: croutons, parsley) where every unit that
+/// takes more is cooked after: a unit after the goal puts it onto the dish as it is served (the cheese
+/// sprinkled on the baked bread, not baked in its batter). Returns the unit.
+pub(super) fn top_dish(tree: &mut Tree, food: &str, o: &str, last: SlotId) -> TUnitId {
+    let motion = TOPPING_MOTIONS
+        .iter()
+        .copied()
+        .find(|m| foods::joins_by(food, m))
+        .unwrap_or("add");
+    let dish = map_contents(&tree.slots[tree.goal].node, &mut |list| add_item(list, o));
+    let made = tree.add_slot(Cow::Owned(dish));
+    let inputs = vec![(tree.goal, true), (last, true)];
+    let u = tree.add_unit(inputs, motion, vec![(made, true)], Origin::Attached);
+    tree.goal = made;
+    u
+}
