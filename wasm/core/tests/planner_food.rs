@@ -1794,3 +1794,79 @@ fn cheddar_goes_onto_the_baked_cake_not_into_its_batter() {
     assert_eq!(cheddar.last(), Some(&"sprinkle"), "{cheddar:?}");
     assert_eq!(kinds(&p), []);
 }
+
+/// An omelette (class 23): eggs beaten in a bowl, poured into a hot pan with oil, cooked.
+const OIL_PAN_OMELETTE: &str = "//
+O\tbowl\t0
+S\tempty
+O\tegg\t1
+S\tcracked
+M\tbeat\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{egg}
+//
+O\tfrying pan\t0
+S\thot
+O\tolive oil\t1
+S\tliquid
+M\tpour\t<Assumed>
+O\tfrying pan\t0
+S\thot
+S\tcontains\t{olive oil}
+//
+O\tbowl\t0
+S\tcontains\t{egg}
+O\tfrying pan\t0
+S\thot
+S\tcontains\t{olive oil}
+M\tpour\t<Assumed>
+O\tfrying pan\t0
+S\thot
+S\tcontains\t{egg,olive oil}
+//
+O\tfrying pan\t0
+S\thot
+S\tcontains\t{egg,olive oil}
+O\tstove\t0
+S\ton
+M\tcook\t<Assumed>
+O\tomelette\t1\t23
+S\tcooked
+S\tcontains\t{egg,olive oil}
+S\tin\t[frying pan]
+//
+";
+
+/// Milk as bought, in a recipe of its own.
+const MILK: &str = "//
+O\tmilk\t1
+S\tliquid
+S\tin\t[carton]
+O\tcup\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tmilk\t1
+S\tliquid
+S\tin\t[cup]
+//
+";
+
+#[test]
+fn milk_is_beaten_with_the_eggs_not_poured_into_the_hot_pan_with_the_oil() {
+    let ask = query(
+        "omelette",
+        &[
+            ("egg", "cracked"),
+            ("olive oil", "liquid"),
+            ("milk", "liquid"),
+        ],
+    );
+    let p = plan_of(
+        &[("omelette.txt", OIL_PAN_OMELETTE), ("milk.txt", MILK)],
+        &ExactMatch,
+        &ask,
+    );
+    let milk = line_motions(&p, "milk");
+    assert!(milk.contains(&"beat"), "{:#?}", p.progress_lines);
+    assert!(milk.contains(&"cook"), "{milk:?}");
+}

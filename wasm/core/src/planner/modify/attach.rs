@@ -145,10 +145,9 @@ pub(super) fn attach_point(
 ) -> Option<TUnitId> {
     let goal_label = tree.slots[tree.goal].node.label.as_str();
     let food = known_as(ctx, o, o);
-    // joins once the dish is cooked (a garnish, a topping), else where the dish is cooked after it: it
-    // must be cooked, or it gives its taste in the heat
-    let served = foods::joins_served(food);
-    let wants_heat = !served && (foods::must_cook(o) || foods::joins_before_heat(food));
+    // a garnish of a dish that is cooked or heated goes in as late as it can; in a dish nothing heats (a
+    // salad, a drink) it joins where the others do
+    let served = foods::joins_served(food) && order.iter().any(|&u| heats(tree, u));
     // closest to the goal first: a unit further from it must do strictly better, so its kin
     // ingredients are worked out only when they could make it
     let mut best: Option<(TUnitId, AttachKey)> = None;
@@ -170,13 +169,9 @@ pub(super) fn attach_point(
             i.1 && !x.utensil && x.node.label != goal_label
         });
         let fits = foods::joins_by(o, &unit.motion);
-        let safe = if served {
-            !cooks_what_joins(tree, cooked, u, food)
-        } else {
-            !wants_heat || cooks_what_joins(tree, cooked, u, food)
-        };
+        let (safe, cool) = timing(tree, cooked, u, o, food);
         let beats = |kin: bool, pref: usize| {
-            let key = (reaches, fits, safe, adds, kin, usize::MAX - pref);
+            let key = (reaches, fits, safe, cool, adds, kin, usize::MAX - pref);
             best.as_ref().is_none_or(|(_, b)| key > *b).then_some(key)
         };
         // not even with kin ingredients and the dish's first motion: its motion is not looked up
@@ -189,7 +184,7 @@ pub(super) fn attach_point(
         }
         if served && reaches && fits && safe {
             // as late as it can: onto the served dish rather than into the hot pot after the cooking
-            best = Some((u, (true, true, true, adds, false, usize::MAX - pref)));
+            best = Some((u, (true, true, true, cool, adds, false, usize::MAX - pref)));
             break;
         }
         let kin = unit.inputs.iter().any(|i| {
@@ -207,7 +202,7 @@ pub(super) fn attach_point(
             best = Some((u, key));
             // a unit adding ingredients of the same kind with the dish's first motion into the dish: none
             // beats it
-            if key == (true, true, true, true, true, usize::MAX) {
+            if key == (true, true, true, true, true, true, usize::MAX) {
                 break;
             }
         }
@@ -219,9 +214,36 @@ pub(super) fn attach_point(
         .or_else(|| tree.producer.get(tree.goal).copied().flatten())
 }
 
-/// How `attach_point` ranks a unit: reaches the goal, the food joins by its motion, the food is cooked
-/// after if it must be, the unit adds an ingredient, kin ingredients join there, the dish's motion rank.
-pub(super) type AttachKey = (bool, bool, bool, bool, bool, usize);
+/// How `attach_point` ranks a unit: reaches the goal, the food joins by its motion, it meets the dish's
+/// cooking as it should and goes in cool if it must (`timing`), the unit adds an ingredient, kin
+/// ingredients join there, the dish's motion rank.
+pub(super) type AttachKey = (bool, bool, bool, bool, bool, bool, usize);
+
+/// Whether `food` (asked as `o`) joining unit `u` meets the dish's cooking as it should, and whether it
+/// goes in cool as it must: a garnish (`top`) after the last cooking; a food that must be cooked, gives its
+/// taste in the heat (`heat`) or is a liquid of the mixture (`mix`) before a cooking; a liquid of the
+/// mixture where the dish is mixed before a cooking (milk beaten with the eggs), not into the hot pan.
+fn timing(tree: &Tree, cooked: &[bool], u: TUnitId, o: &str, food: &str) -> (bool, bool) {
+    let cooked_after = || cooks_what_joins(tree, cooked, u, food);
+    if foods::joins_served(food) {
+        return (!cooked_after(), true);
+    }
+    let mixed = foods::joins_mixed(food);
+    let wants_heat = mixed || foods::must_cook(o) || foods::joins_before_heat(food);
+    let safe = !wants_heat || cooked_after();
+    // where nothing cooks it after, the pan's heat is not what decides (the soup's hot pot, not the bowl)
+    (safe, !(mixed && safe && heats(tree, u)))
+}
+
+/// Whether unit `u` cooks, or what it makes is in a hot pan.
+fn heats(tree: &Tree, u: TUnitId) -> bool {
+    let unit = &tree.units[u];
+    foods::cooks(&unit.motion)
+        || unit
+            .outputs
+            .iter()
+            .any(|x| tree.slots[x.0].node.physical_states().any(|st| st == "hot"))
+}
 
 /// How a food that joins the served dish goes onto it, first the one its form joins by: grated cheese
 /// sprinkled, ketchup poured, whipped cream spread.
