@@ -20,7 +20,7 @@ fn every_dev_query_plans_soundly_with_exact_matching() {
 
 #[test]
 fn every_dev_query_plans_soundly_with_embeddings() {
-    check_dev_queries(&embeddings(), "embeddings", (7, 11, 0));
+    check_dev_queries(&embeddings(), "embeddings", (7, 9, 0));
 }
 
 /// `most_cautions`: at most so many uncooked, short-of-dish and left-whole cautions in the modified plans.

@@ -1907,3 +1907,169 @@ fn a_food_poached_beside_the_ingredient_does_not_take_it_in() {
     );
     assert_eq!(line.end_product, "ramen", "{line:#?}");
 }
+
+/// Elsewhere in FOON: parsley chopped, mushrooms sliced, a block of cheddar grated.
+const TOPPINGS: &str = "//
+O\tparsley\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tchop\t<Assumed>
+O\tparsley\t1
+S\tchopped
+//
+O\tmushroom\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tslice\t<Assumed>
+O\tmushroom\t1
+S\tsliced
+//
+O\tcheddar\t1
+S\tblock
+O\tgrater\t1
+M\tgrate\t<Assumed>
+O\tcheddar\t1
+S\tgrated
+//
+";
+
+#[test]
+fn parsley_joins_the_soup_as_it_is_served_and_the_mushrooms_are_boiled_in_it() {
+    // the chicken is boiled in the pot; parsley is scattered over the served bowl
+    let ask = query(
+        "soup",
+        &[
+            ("parsley", "chopped"),
+            ("mushroom", "sliced"),
+            ("chicken breast", "sliced"),
+        ],
+    );
+    let p = plan_of(
+        &[("soup.txt", CHICKEN_POT), ("other.txt", TOPPINGS)],
+        &ExactMatch,
+        &ask,
+    );
+    let parsley = line_motions(&p, "parsley");
+    assert!(!parsley.contains(&"boil"), "{:#?}", p.progress_lines);
+    assert_eq!(parsley.last(), Some(&"pour"), "{parsley:?}");
+    assert!(
+        line_motions(&p, "mushroom").contains(&"boil"),
+        "{:#?}",
+        p.progress_lines
+    );
+}
+
+#[test]
+fn cheddar_goes_onto_the_baked_cake_not_into_its_batter() {
+    // the cake is baked last: no unit after the baking takes more, so one is added onto the dish
+    let (baked_last, _syrup) = SYRUP_CAKE
+        .rsplit_once("O\tsponge\t1\nS\tbaked\nS\tcontains\t{egg}\nO\tsyrup")
+        .unwrap();
+    let baked_last = baked_last.replacen("O\tsponge\t1\n", "O\tsponge\t1\t5\n", 1);
+    let ask = query(
+        "cake",
+        &[
+            ("egg", "cracked"),
+            ("cheddar", "grated"),
+            ("flour", "powder"),
+        ],
+    );
+    let p = plan_of(
+        &[
+            ("cake.txt", &baked_last),
+            ("flour.txt", FLOUR),
+            ("other.txt", TOPPINGS),
+        ],
+        &ExactMatch,
+        &ask,
+    );
+    let cheddar = line_motions(&p, "cheddar");
+    assert!(!cheddar.contains(&"bake"), "{:#?}", p.progress_lines);
+    assert!(line_motions(&p, "flour").contains(&"bake"));
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "cheddar")
+        .unwrap();
+    assert_eq!(line.end_product, p.goal.label, "{line:#?}");
+    assert_eq!(cheddar.last(), Some(&"sprinkle"), "{cheddar:?}");
+    assert_eq!(kinds(&p), []);
+}
+
+/// An omelette (class 23): eggs beaten in a bowl, poured into a hot pan with oil, cooked.
+const OIL_PAN_OMELETTE: &str = "//
+O\tbowl\t0
+S\tempty
+O\tegg\t1
+S\tcracked
+M\tbeat\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{egg}
+//
+O\tfrying pan\t0
+S\thot
+O\tolive oil\t1
+S\tliquid
+M\tpour\t<Assumed>
+O\tfrying pan\t0
+S\thot
+S\tcontains\t{olive oil}
+//
+O\tbowl\t0
+S\tcontains\t{egg}
+O\tfrying pan\t0
+S\thot
+S\tcontains\t{olive oil}
+M\tpour\t<Assumed>
+O\tfrying pan\t0
+S\thot
+S\tcontains\t{egg,olive oil}
+//
+O\tfrying pan\t0
+S\thot
+S\tcontains\t{egg,olive oil}
+O\tstove\t0
+S\ton
+M\tcook\t<Assumed>
+O\tomelette\t1\t23
+S\tcooked
+S\tcontains\t{egg,olive oil}
+S\tin\t[frying pan]
+//
+";
+
+/// Milk as bought, in a recipe of its own.
+const MILK: &str = "//
+O\tmilk\t1
+S\tliquid
+S\tin\t[carton]
+O\tcup\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tmilk\t1
+S\tliquid
+S\tin\t[cup]
+//
+";
+
+#[test]
+fn milk_is_beaten_with_the_eggs_not_poured_into_the_hot_pan_with_the_oil() {
+    let ask = query(
+        "omelette",
+        &[
+            ("egg", "cracked"),
+            ("olive oil", "liquid"),
+            ("milk", "liquid"),
+        ],
+    );
+    let p = plan_of(
+        &[("omelette.txt", OIL_PAN_OMELETTE), ("milk.txt", MILK)],
+        &ExactMatch,
+        &ask,
+    );
+    let milk = line_motions(&p, "milk");
+    assert!(milk.contains(&"beat"), "{:#?}", p.progress_lines);
+    assert!(milk.contains(&"cook"), "{milk:?}");
+}

@@ -136,6 +136,10 @@ struct Care {
     wet: bool,
     /// Joins a dish that is cooked before the cooking (stock, a bay leaf, onion).
     heat: bool,
+    /// Joins the dish once it is cooked (croutons, grated cheese, chopped parsley, ketchup).
+    top: bool,
+    /// Joins the dish's mixture before it is cooked (milk beaten with the eggs), not the hot pan.
+    mix: bool,
     /// What a cook takes off it before it is used or cut (an onion's skin, a cherry's stone).
     trims: Vec<&'static Trim>,
 }
@@ -159,6 +163,8 @@ fn cares() -> &'static HashMap<String, Care> {
                     first: flags.iter().any(|f| f == "first"),
                     wet: flags.iter().any(|f| f == "wet"),
                     heat: flags.iter().any(|f| f == "heat"),
+                    top: flags.iter().any(|f| f == "top"),
+                    mix: flags.iter().any(|f| f == "mix"),
                     trims: TRIMS
                         .iter()
                         .filter(|t| flags.iter().any(|f| f == t.flag))
@@ -222,6 +228,20 @@ pub fn must_cook(food: &str) -> bool {
 /// onion, carrot): it gives its taste or softens in the heat.
 pub fn joins_before_heat(food: &str) -> bool {
     flagged(food, |c| c.heat)
+}
+
+/// Whether `food` joins a dish that is cooked only once it is cooked (croutons, grated cheese, chopped
+/// parsley, avocado, ketchup, whipped cream): onto the served dish or stirred in after the cooking, never
+/// beaten into the eggs or baked in the batter. It wins over its category's `heat` (chives, an allium).
+pub fn joins_served(food: &str) -> bool {
+    flagged(food, |c| c.top)
+}
+
+/// Whether `food` is a liquid of the dish's mixture (milk, cream, water): in a dish that is cooked it
+/// joins before the cooking, where the mixture is made (beaten with the eggs, mixed into the batter),
+/// not poured into the hot pan beside it. A garnish of its category (sour cream) is not.
+pub fn joins_mixed(food: &str) -> bool {
+    flagged(food, |c| c.mix) && !joins_served(food)
 }
 
 /// The state a cook brings `food` to when a query names only its category ("whole veg" onion: chopped).
@@ -553,7 +573,7 @@ mod tests {
                 .flatten()
             {
                 assert!(
-                    matches!(flag.as_str(), "first" | "wet" | "heat")
+                    matches!(flag.as_str(), "first" | "wet" | "heat" | "top" | "mix")
                         || TRIMS.iter().any(|t| t.flag == flag),
                     "food_care.tsv: flag '{flag}' in {line}"
                 );
@@ -567,6 +587,13 @@ mod tests {
         assert_eq!(cooks_word("skim", "skimmed"), None);
         assert!(!shows_cooking("salt") && !shows_cooking("olive oil"));
         assert!(shows_cooking("carrot") && shows_cooking("flour") && shows_cooking("rice"));
+        // a garnish joins the served dish; its flag wins over its category's heat (chives, an allium)
+        assert!(joins_served("cheddar") && joins_served("feta") && joins_served("chive"));
+        assert!(!joins_served("cream cheese") && !joins_served("onion") && !joins_served("thyme"));
+        assert!(joins_mixed("half and half") && joins_mixed("heavy cream") && joins_mixed("water"));
+        assert!(
+            !joins_mixed("sour cream") && !joins_mixed("ice cream") && !joins_mixed("olive oil")
+        );
     }
 
     #[test]

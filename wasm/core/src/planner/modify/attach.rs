@@ -1,6 +1,7 @@
 //! Attachment: where a new ingredient branch joins the tree (the unit it is added to).
 
 use super::*;
+use crate::planner::tree::add_item;
 
 /// Motions that cannot take more ingredients (a robot cuts one item at a time; what goes into the oven
 /// or under the grill is already assembled).
@@ -130,7 +131,8 @@ pub(super) fn cooks_what_joins(tree: &Tree, cooked: &[bool], u: TUnitId, food: &
 /// reach the goal (`carries`: the tree's `carriers`), by a motion the food can join by (milk poured, not
 /// placed), before a unit that cooks it when it must be cooked (`cooked`: `cooked_later`), where
 /// ingredients of the same kind go in (salt where the pepper is sprinkled), else with the dish's usual
-/// motion, closest to the goal.
+/// motion, closest to the goal. A food that joins the served dish (`foods::joins_served`) takes the unit
+/// closest to the goal that nothing cooks after; where there is none, `top_dish` follows.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn attach_point(
     ctx: &Context,
@@ -143,8 +145,9 @@ pub(super) fn attach_point(
 ) -> Option<TUnitId> {
     let goal_label = tree.slots[tree.goal].node.label.as_str();
     let food = known_as(ctx, o, o);
-    // joins where the dish is cooked after it: it must be cooked, or it gives its taste in the heat
-    let wants_heat = foods::must_cook(o) || foods::joins_before_heat(food);
+    // a garnish of a dish that is cooked or heated goes in as late as it can; in a dish nothing heats (a
+    // salad, a drink) it joins where the others do
+    let served = foods::joins_served(food) && order.iter().any(|&u| heats(tree, u));
     // closest to the goal first: a unit further from it must do strictly better, so its kin
     // ingredients are worked out only when they could make it
     let mut best: Option<(TUnitId, AttachKey)> = None;
@@ -166,9 +169,9 @@ pub(super) fn attach_point(
             i.1 && !x.utensil && x.node.label != goal_label
         });
         let fits = foods::joins_by(o, &unit.motion);
-        let safe = !wants_heat || cooks_what_joins(tree, cooked, u, food);
+        let (safe, cool) = timing(tree, cooked, u, o, food);
         let beats = |kin: bool, pref: usize| {
-            let key = (reaches, fits, safe, adds, kin, usize::MAX - pref);
+            let key = (reaches, fits, safe, cool, adds, kin, usize::MAX - pref);
             best.as_ref().is_none_or(|(_, b)| key > *b).then_some(key)
         };
         // not even with kin ingredients and the dish's first motion: its motion is not looked up
@@ -178,6 +181,11 @@ pub(super) fn attach_point(
         let (more, pref) = motion_fit(ctx.class, &unit.motion);
         if !more || beats(true, pref).is_none() {
             continue;
+        }
+        if served && reaches && fits && safe {
+            // as late as it can: onto the served dish rather than into the hot pot after the cooking
+            best = Some((u, (true, true, true, cool, adds, false, usize::MAX - pref)));
+            break;
         }
         let kin = unit.inputs.iter().any(|i| {
             let x = &tree.slots[i.0];
@@ -194,7 +202,7 @@ pub(super) fn attach_point(
             best = Some((u, key));
             // a unit adding ingredients of the same kind with the dish's first motion into the dish: none
             // beats it
-            if key == (true, true, true, true, true, usize::MAX) {
+            if key == (true, true, true, true, true, true, usize::MAX) {
                 break;
             }
         }
@@ -206,6 +214,54 @@ pub(super) fn attach_point(
         .or_else(|| tree.producer.get(tree.goal).copied().flatten())
 }
 
-/// How `attach_point` ranks a unit: reaches the goal, the food joins by its motion, the food is cooked
-/// after if it must be, the unit adds an ingredient, kin ingredients join there, the dish's motion rank.
-pub(super) type AttachKey = (bool, bool, bool, bool, bool, usize);
+/// How `attach_point` ranks a unit: reaches the goal, the food joins by its motion, it meets the dish's
+/// cooking as it should and goes in cool if it must (`timing`), the unit adds an ingredient, kin
+/// ingredients join there, the dish's motion rank.
+pub(super) type AttachKey = (bool, bool, bool, bool, bool, bool, usize);
+
+/// Whether `food` (asked as `o`) joining unit `u` meets the dish's cooking as it should, and whether it
+/// goes in cool as it must: a garnish (`top`) after the last cooking; a food that must be cooked, gives its
+/// taste in the heat (`heat`) or is a liquid of the mixture (`mix`) before a cooking; a liquid of the
+/// mixture where the dish is mixed before a cooking (milk beaten with the eggs), not into the hot pan.
+fn timing(tree: &Tree, cooked: &[bool], u: TUnitId, o: &str, food: &str) -> (bool, bool) {
+    let cooked_after = || cooks_what_joins(tree, cooked, u, food);
+    if foods::joins_served(food) {
+        return (!cooked_after(), true);
+    }
+    let mixed = foods::joins_mixed(food);
+    let wants_heat = mixed || foods::must_cook(o) || foods::joins_before_heat(food);
+    let safe = !wants_heat || cooked_after();
+    // where nothing cooks it after, the pan's heat is not what decides (the soup's hot pot, not the bowl)
+    (safe, !(mixed && safe && heats(tree, u)))
+}
+
+/// Whether unit `u` cooks, or what it makes is in a hot pan.
+fn heats(tree: &Tree, u: TUnitId) -> bool {
+    let unit = &tree.units[u];
+    foods::cooks(&unit.motion)
+        || unit
+            .outputs
+            .iter()
+            .any(|x| tree.slots[x.0].node.physical_states().any(|st| st == "hot"))
+}
+
+/// How a food that joins the served dish goes onto it, first the one its form joins by: grated cheese
+/// sprinkled, ketchup poured, whipped cream spread.
+const TOPPING_MOTIONS: &[&str] = &["sprinkle", "pour", "spread"];
+
+/// A food that joins the served dish (`foods::joins_served`: croutons, parsley) where every unit that
+/// takes more is cooked after: a unit after the goal puts it onto the dish as it is served (the cheese
+/// sprinkled on the baked bread, not baked in its batter). Returns the unit.
+pub(super) fn top_dish(tree: &mut Tree, food: &str, o: &str, last: SlotId) -> TUnitId {
+    let motion = TOPPING_MOTIONS
+        .iter()
+        .copied()
+        .find(|m| foods::joins_by(food, m))
+        .unwrap_or("add");
+    let dish = map_contents(&tree.slots[tree.goal].node, &mut |list| add_item(list, o));
+    let made = tree.add_slot(Cow::Owned(dish));
+    let inputs = vec![(tree.goal, true), (last, true)];
+    let u = tree.add_unit(inputs, motion, vec![(made, true)], Origin::Attached);
+    tree.goal = made;
+    u
+}

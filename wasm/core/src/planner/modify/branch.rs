@@ -321,16 +321,23 @@ pub(super) fn finish_branch<'kb>(
     }
     let order = tree.order();
     let carries = tree.carriers(&order);
-    let cooked = cooked_later(tree, &order, known_as(ctx, o, eq));
+    let food = known_as(ctx, o, eq);
+    let cooked = cooked_later(tree, &order, food);
     let Some(m) = attach_point(ctx, tree, &order, &carries, &cooked, o, c) else {
         return Err(format!("no unit of the tree can take '{o}'"));
     };
-    if !cooks_what_joins(tree, &cooked, m, known_as(ctx, o, eq)) {
-        last = cook_alone(ctx, tree, o, last, &mut how);
-    }
-    tree.units[m].inputs.push((last, true));
-    tree.add_contents_downstream(m, o, &order, &carries);
-    tree.units[m].origin = Origin::Attached;
+    let cooked_there = cooks_what_joins(tree, &cooked, m, food);
+    let m = if foods::joins_served(food) && cooked_there {
+        top_dish(tree, food, o, last)
+    } else {
+        if !cooked_there {
+            last = cook_alone(ctx, tree, o, last, &mut how);
+        }
+        tree.units[m].inputs.push((last, true));
+        tree.add_contents_downstream(m, o, &order, &carries);
+        tree.units[m].origin = Origin::Attached;
+        m
+    };
     ctx.trace
         .record(|t| t.attached(o, s, &tree.units[m].motion, dish_pattern(ctx.class)));
     let _ = write!(how, "; added at '{}'", tree.units[m].motion);

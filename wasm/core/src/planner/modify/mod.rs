@@ -273,7 +273,12 @@ impl Driver {
             }
         }
         let mut pending = std::mem::take(&mut self.pending);
-        pending.sort_by_key(|p| p.0);
+        // a food that joins the served dish comes last: the others join first where the dish takes them,
+        // not where a garnish went in
+        pending.sort_by_key(|(i, eq, _)| {
+            let o = query.ingredients[*i].object.as_str();
+            (foods::joins_served(known_as(ctx, o, eq)), *i)
+        });
         for (i, eq, s) in pending {
             let w = &mut self.works[i];
             let o = query.ingredients[i].object.as_str();
