@@ -2073,3 +2073,83 @@ fn milk_is_beaten_with_the_eggs_not_poured_into_the_hot_pan_with_the_oil() {
     assert!(milk.contains(&"beat"), "{:#?}", p.progress_lines);
     assert!(milk.contains(&"cook"), "{milk:?}");
 }
+
+/// Scrambled egg (class 23): eggs beaten, poured into the hot pan, cooked, poured onto a plate, soy
+/// sauce poured over them.
+const SCRAMBLED_EGG: &str = "//
+O\tbowl\t0
+S\tempty
+O\tegg\t1
+S\tcracked
+M\tbeat\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{egg}
+//
+O\tbowl\t0
+S\tcontains\t{egg}
+O\tfrying pan\t0
+S\thot
+M\tpour\t<Assumed>
+O\tfrying pan\t0
+S\thot
+S\tcontains\t{egg}
+//
+O\tfrying pan\t0
+S\thot
+S\tcontains\t{egg}
+O\tstove\t0
+S\ton
+M\tcook\t<Assumed>
+O\tfrying pan\t0
+S\tcontains\t{scrambled egg}
+O\tscrambled egg\t1
+S\tcooked
+S\tcontains\t{egg}
+S\tin\t[frying pan]
+//
+O\tfrying pan\t0
+S\tcontains\t{scrambled egg}
+O\tscrambled egg\t1
+S\tcooked
+S\tcontains\t{egg}
+S\tin\t[frying pan]
+O\tplate\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tscrambled egg\t1
+S\tcooked
+S\tcontains\t{egg}
+S\ton\t[plate]
+//
+O\tscrambled egg\t1
+S\tcooked
+S\tcontains\t{egg}
+S\ton\t[plate]
+O\tsoy sauce\t1
+S\tliquid
+M\tpour\t<Assumed>
+O\tscrambled egg\t1\t23
+S\tcooked
+S\tcontains\t{egg,soy sauce}
+S\ton\t[plate]
+//
+";
+
+#[test]
+fn oil_goes_into_the_pan_before_the_eggs_cook_not_onto_the_plated_eggs() {
+    let ask = query(
+        "omelette",
+        &[
+            ("egg", "cracked"),
+            ("olive oil", "liquid"),
+            ("soy sauce", "liquid"),
+        ],
+    );
+    let p = plan_of(
+        &[("eggs.txt", SCRAMBLED_EGG), ("oil.txt", OIL)],
+        &ExactMatch,
+        &ask,
+    );
+    let oil = line_motions(&p, "olive oil");
+    assert!(oil.contains(&"cook"), "{:#?}", p.progress_lines);
+}
