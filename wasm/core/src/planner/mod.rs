@@ -109,6 +109,7 @@ pub fn plan(
         outcomes,
         removed,
         format_version: FORMAT_VERSION,
+        readings: &ctx.readings,
     });
     plan.cautions = cautions::cautions(&plan);
     plan.trace = trace.finish();

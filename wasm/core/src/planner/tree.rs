@@ -462,6 +462,25 @@ impl<'kb> Tree<'kb> {
         self.rename_in(0..self.slots.len(), from, to);
     }
 
+    /// Renames a food where it is another's surface or vessel ("butter spread on [pancake]").
+    pub fn rename_container(&mut self, from: &str, to: &str) {
+        for slot in self
+            .slots
+            .iter_mut()
+            .filter(|s| s.node.container() == Some(from))
+        {
+            let node = slot.node.to_mut();
+            for state in &mut node.states {
+                if let Some(StateArg::Container(c)) = &mut state.arg {
+                    if c == from {
+                        *c = to.into();
+                    }
+                }
+            }
+            node.states.sort();
+        }
+    }
+
     /// Per slot, whether contents added to it reach the goal: it is the goal, or a unit of `order`
     /// takes it and passes its contents on (see `passes_on`) to a slot that reaches the goal. Where an
     /// ingredient joins a unit, only such an output keeps it in the dish (a blender jar emptied of its

@@ -5,7 +5,6 @@
 
 use super::*;
 use crate::foon::label::singular;
-use crate::foon::model::StateArg;
 use crate::vocab::taxonomy::kin_classes;
 
 /// Renames the goal and the mixtures whose names claim a food they do not hold or a dish of another
@@ -65,7 +64,7 @@ pub(super) fn name_for_query(
         .collect();
     for (from, to) in &renames {
         tree.rename_everywhere(from, to);
-        rename_container(tree, from, to);
+        tree.rename_container(from, to);
         if *from == goal {
             notes.push(format!(
                 "the dish is called '{to}': the reference task tree made '{from}', a name the asked \
@@ -95,25 +94,6 @@ pub(super) fn name_motions(tree: &mut Tree) {
         if let Some(word) = word {
             tree.units[u].motion = Cow::Borrowed(word);
         }
-    }
-}
-
-/// A food that is a surface or vessel of another ("butter spread on [pancake]") follows its rename.
-fn rename_container(tree: &mut Tree, from: &str, to: &str) {
-    for slot in tree
-        .slots
-        .iter_mut()
-        .filter(|s| s.node.container() == Some(from))
-    {
-        let node = slot.node.to_mut();
-        for state in &mut node.states {
-            if let Some(StateArg::Container(c)) = &mut state.arg {
-                if c == from {
-                    *c = to.into();
-                }
-            }
-        }
-        node.states.sort();
     }
 }
 

@@ -36,6 +36,8 @@ pub(crate) struct Parts<'a> {
     pub outcomes: Vec<IngredientOutcome>,
     pub removed: Vec<String>,
     pub format_version: u32,
+    /// The food each asked name is read as (`foods::query_readings`, made once per plan).
+    pub readings: &'a rustc_hash::FxHashMap<String, &'static str>,
 }
 
 pub(crate) fn build(p: Parts) -> Plan {
@@ -73,14 +75,14 @@ pub(crate) fn build(p: Parts) -> Plan {
     let uses = Uses::new(tree, order);
     let mut progress_lines = Vec::with_capacity(p.outcomes.len());
     let mut done: Vec<&str> = Vec::with_capacity(p.outcomes.len());
-    // "pepper — ground" is a spice, whatever the tree's other peppers are
-    let readings = foods::query_readings(&p.query);
     for o in &p.outcomes {
         if o.status != Status::Planned || done.contains(&o.object.as_str()) {
             continue;
         }
         done.push(&o.object);
-        let food = readings
+        // "pepper — ground" is a spice, whatever the tree's other peppers are
+        let food = p
+            .readings
             .get(o.object.as_str())
             .copied()
             .unwrap_or(&o.object);
