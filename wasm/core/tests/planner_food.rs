@@ -2153,3 +2153,209 @@ fn oil_goes_into_the_pan_before_the_eggs_cook_not_onto_the_plated_eggs() {
     let oil = line_motions(&p, "olive oil");
     assert!(oil.contains(&"cook"), "{:#?}", p.progress_lines);
 }
+
+/// A cake (class 5) whose tree has its own varieties of the foods a query may ask: vegetable oil and
+/// "egg white and yolk" (an egg cracked) mixed with flour into a batter that is baked; green onion and
+/// lime zest stirred in; olive oil poured into a pan that the next unit takes without it (a dead end).
+const VARIETY_CAKE: &str = "//
+O\tbowl\t0
+S\tempty
+O\tflour\t1
+S\tpowder
+O\tvegetable oil\t1
+S\tliquid
+O\tegg white and yolk\t1
+S\tin\t[bowl]
+O\tgreen onion\t1
+S\tchopped
+O\tlime zest\t1
+S\tgrated
+M\tmix\t<Assumed>
+O\tcake batter\t1
+S\tcontains\t{flour,vegetable oil,egg white and yolk,green onion,lime zest}
+S\tin\t[bowl]
+//
+O\tpan\t0
+S\tempty
+O\tolive oil\t1
+S\tliquid
+M\tpour\t<Assumed>
+O\tpan\t0
+S\tcontains\t{olive oil}
+O\tolive oil\t1
+S\tin\t[pan]
+//
+O\tpan\t0
+S\tcontains\t{olive oil}
+O\tcake batter\t1
+S\tcontains\t{flour,vegetable oil,egg white and yolk,green onion,lime zest}
+S\tin\t[bowl]
+M\tbake\t<Assumed>
+O\tcake\t1\t5
+S\tcontains\t{flour,vegetable oil,egg white and yolk,green onion,lime zest}
+S\tin\t[pan]
+//
+";
+
+/// Elsewhere in FOON: the foods a query may ask by their own names (so that each is a FOON label).
+const PLAIN_FOODS: &str = "//
+O\tegg\t1
+S\twhole
+O\tbowl\t0
+S\tempty
+M\tcrack\t<Assumed>
+O\tegg\t1
+S\tcracked
+S\tin\t[bowl]
+//
+O\toil\t1
+S\tliquid
+O\tpot\t0
+S\tempty
+M\tpour\t<Assumed>
+O\toil\t1
+S\tin\t[pot]
+//
+O\tonion\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tchop\t<Assumed>
+O\tonion\t1
+S\tchopped
+//
+O\tlime\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tslice\t<Assumed>
+O\tlime\t1
+S\tsliced
+//
+";
+
+fn variety_cake(items: &[(&str, &str)]) -> Plan {
+    plan_of(
+        &[("cake.txt", VARIETY_CAKE), ("foods.txt", PLAIN_FOODS)],
+        &ExactMatch,
+        &query("cake", items),
+    )
+}
+
+#[test]
+fn an_asked_food_takes_the_place_of_its_variety_in_the_reference_tree() {
+    let p = variety_cake(&[("flour", "powder"), ("oil", "liquid")]);
+    let oil = outcome(&p, "oil");
+    assert_eq!(
+        oil.matched.as_ref().map(|m| m.label.as_str()),
+        Some("vegetable oil")
+    );
+    assert_eq!(line_motions(&p, "oil"), ["mix", "bake"]);
+    assert_eq!(kinds(&p), []);
+}
+
+#[test]
+fn an_egg_taking_the_place_of_white_and_yolk_is_cracked_first() {
+    let p = variety_cake(&[("flour", "powder"), ("egg", "whole")]);
+    assert_eq!(
+        outcome(&p, "egg")
+            .matched
+            .as_ref()
+            .map(|m| m.label.as_str()),
+        Some("egg white and yolk")
+    );
+    assert_eq!(line_motions(&p, "egg"), ["crack", "mix", "bake"]);
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "egg")
+        .unwrap();
+    assert_eq!(line.state[0].physical_state, "whole");
+    assert_eq!(kinds(&p), []);
+}
+
+#[test]
+fn a_food_does_not_take_the_place_of_a_part_another_food_or_a_dead_end() {
+    // green onion is handled otherwise than onion (no skin to peel), lime zest is a part of the lime,
+    // and the tree's olive oil never reaches the cake: each asked food comes from elsewhere in FOON
+    let p = variety_cake(&[
+        ("flour", "powder"),
+        ("onion", "chopped"),
+        ("lime", "sliced"),
+    ]);
+    for food in ["onion", "lime"] {
+        assert_eq!(
+            outcome(&p, food).matched.as_ref().map(|m| m.label.as_str()),
+            Some(food),
+            "{:#?}",
+            p.ingredients
+        );
+    }
+    let cake = VARIETY_CAKE.replace("vegetable oil", "sunflower seed");
+    let p = plan_of(
+        &[("cake.txt", &cake), ("foods.txt", PLAIN_FOODS)],
+        &ExactMatch,
+        &query("cake", &[("flour", "powder"), ("oil", "liquid")]),
+    );
+    assert_eq!(
+        outcome(&p, "oil")
+            .matched
+            .as_ref()
+            .map(|m| m.label.as_str()),
+        Some("oil")
+    );
+}
+
+/// Elsewhere in FOON: raisins poured into a bowl, a cabbage chopped into shreds.
+const RAISIN_AND_SHREDS: &str = "//
+O\traisin\t1
+S\twhole
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\traisin\t1
+S\twhole
+S\tin\t[bowl]
+//
+O\tcabbage\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tchop\t<Assumed>
+O\tcabbage\t1
+S\tshredded
+//
+";
+
+/// "shredded coconut" is like a raisin (a dried fruit); nothing else is alike.
+struct DriedFruit;
+
+impl foon_core::similarity::Similarity for DriedFruit {
+    fn similarity(&self, a: &str, b: &str) -> f32 {
+        match (a, b) {
+            _ if a == b => 1.0,
+            ("shredded coconut", "raisin") | ("raisin", "shredded coconut") => 0.6,
+            _ => 0.0,
+        }
+    }
+}
+
+#[test]
+fn a_food_read_as_a_product_of_its_state_is_bought_so_not_made_from_its_substitute() {
+    // coconut "shredded" is shredded coconut, bought so: not a whole raisin chopped into shreds
+    let p = plan_of(
+        &[
+            ("salad.txt", LETTUCE_SALAD),
+            ("foods.txt", RAISIN_AND_SHREDS),
+        ],
+        &DriedFruit,
+        &query("salad", &[("lettuce", "chopped"), ("coconut", "shredded")]),
+    );
+    assert_eq!(line_motions(&p, "coconut"), ["mix"], "{:#?}", p.units);
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "coconut")
+        .unwrap();
+    assert_eq!(line.state[0].physical_state, "shredded");
+}

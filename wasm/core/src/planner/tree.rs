@@ -408,6 +408,35 @@ impl<'kb> Tree<'kb> {
         labels
     }
 
+    /// Labels of the starting foods (made by no unit) whose own nodes lead on to the goal: taken by a
+    /// unit that gives out a food (not only a container) leading on to it. FOON has dead ends: oil poured
+    /// into a pot that the next unit takes without it.
+    pub fn starting_labels_reaching_goal(&self) -> Vec<&str> {
+        let mut reaches = vec![false; self.slots.len()];
+        reaches[self.goal] = true;
+        for u in self.order().into_iter().rev() {
+            let unit = &self.units[u];
+            let food = |x: &(SlotId, bool)| !self.slots[x.0].utensil;
+            if unit
+                .outputs
+                .iter()
+                .filter(|x| food(x))
+                .any(|x| reaches[x.0])
+            {
+                for x in unit.inputs.iter().filter(|x| food(x)) {
+                    reaches[x.0] = true;
+                }
+            }
+        }
+        let mut labels: Vec<&str> = (0..self.slots.len())
+            .filter(|&x| reaches[x] && !self.produced(x))
+            .map(|x| self.slots[x].node.label.as_str())
+            .collect();
+        labels.sort_unstable();
+        labels.dedup();
+        labels
+    }
+
     /// Live units that take the slot as input, in execution order.
     pub fn consumers<'a>(
         &'a self,

@@ -242,6 +242,17 @@ pub(super) fn starting_utensils(tree: &Tree) -> HashMap<NodeId, SlotId> {
     slot_of
 }
 
+/// Whether the asked food is read as a product its asked state names (coconut "shredded": shredded
+/// coconut; beef "ground": ground beef), which a cook buys so rather than makes.
+fn bought_as_read(ctx: &Context, o: &str, s: &str) -> bool {
+    let Some(r) = ctx.readings.get(o) else {
+        return false;
+    };
+    let words = |t: &'static str| t.split(' ');
+    s.split([' ', ','])
+        .any(|w| !w.is_empty() && words(r).any(|x| x == w))
+}
+
 /// The rest of a case-4 branch whose last node is `last`: a unit bringing it to the state `s` when it is
 /// not in it (the motion FOON uses most for that state), the renaming to the query's name, and the
 /// attachment where the dish takes such ingredients.
@@ -255,7 +266,7 @@ pub(super) fn finish_branch<'kb>(
     before: SlotId,
     mut last: SlotId,
     mut chosen_state: SmolStr,
-    in_state: bool,
+    mut in_state: bool,
     mut how: String,
 ) -> Result<(SmolStr, String), String> {
     if foods::prepared_first(known_as(ctx, o, eq)).is_some() && !in_state {
@@ -268,8 +279,10 @@ pub(super) fn finish_branch<'kb>(
     let node = &tree.slots[last].node;
     let from = food_category(ctx, node);
     let bought_preserved = matches!(kind(s), Some("dried" | "frozen"));
-    if bought_preserved && from == Category::Whole {
-        // asked dried or frozen (dried apricots), bought so: no stone or skin to take off then
+    let bought_made = bought_as_read(ctx, o, s);
+    if (bought_preserved || bought_made) && from == Category::Whole {
+        // asked dried or frozen (dried apricots), or read as a product made so (coconut "shredded" is
+        // shredded coconut), bought so: not made from the whole food, no stone or skin to take off then
         let whole: Vec<String> = food_states(node)
             .into_iter()
             .filter(|st| category(st) == Category::Whole)
@@ -278,6 +291,7 @@ pub(super) fn finish_branch<'kb>(
         tree.slots[last].node = Cow::Owned(replace_states(node, &whole, s));
         let _ = write!(how, ", bought '{s}'");
         chosen_state = s.into();
+        in_state |= bought_made;
     }
     let node = &tree.slots[last].node;
     let as_sold = ctx.index.sold_as(eq) == Some(c) && !has_food_state(node);

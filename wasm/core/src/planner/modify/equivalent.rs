@@ -23,7 +23,7 @@ pub(super) fn equivalent(
     ctx: &Context,
     o: &str,
     name: &str,
-    tree_labels: &[SmolStr],
+    reference: &ReferenceLabels,
     w: &mut Work,
 ) -> Option<(String, f32)> {
     let ranked = ctx
@@ -36,8 +36,11 @@ pub(super) fn equivalent(
         }
         None if is_utensil(o) => held_in(ctx, o, name, &ranked, &mut w.reasons),
         // (a reading is the food itself, named more exactly)
-        None if ctx.index.is_label(name) => Some((name.to_string(), 1.0)),
-        None => most_similar(ctx, name, tree_labels, &ranked, &mut w.reasons),
+        None if ctx.index.is_label(name) => Some(
+            kin_in_tree(ctx, name, reference, &mut w.reasons)
+                .unwrap_or_else(|| (name.to_string(), 1.0)),
+        ),
+        None => most_similar(ctx, name, &reference.all, &ranked, &mut w.reasons),
     };
     // a name with no likeness at all (similarity 0, as exact matching gives every other name) is no
     // alternative
@@ -52,6 +55,58 @@ pub(super) fn equivalent(
         })
         .collect();
     found
+}
+
+/// A variety of `name` in the reference tree (its "vegetable oil" for the oil asked, its "egg white and
+/// yolk" for the egg: a label of the same kind of food that names it), when `name` itself is not there:
+/// taking its place keeps the tree's own handling of it, where a branch from elsewhere in FOON would
+/// only join the dish at some unit.
+fn kin_in_tree(
+    ctx: &Context,
+    name: &str,
+    reference: &ReferenceLabels,
+    reasons: &mut Vec<String>,
+) -> Option<(String, f32)> {
+    if reference.all.iter().any(|l| l == name) {
+        return None;
+    }
+    let kind = foods::kind(name)?;
+    // a variety puts words before the name ("olive oil"); a name followed by more is a part of the food
+    // ("egg yolk", "lime zest"), unless the rest names the food by all of its parts ("egg white and yolk")
+    let names_it = |label: &str| {
+        label.strip_suffix(name).is_some_and(|m| m.ends_with(' '))
+            || label
+                .strip_prefix(name)
+                .is_some_and(|rest| rest.starts_with(' ') && rest.contains(" and "))
+    };
+    // (a label whose food FOON leaves short of the dish would leave the asked food there too)
+    let kin: Vec<&str> = reference
+        .reaching
+        .iter()
+        .map(SmolStr::as_str)
+        .filter(|l| names_it(l) && foods::kind(l) == Some(kind) && same_care(name, l))
+        .collect();
+    let (label, sim) = ctx.sim.rank(name, &kin, 1).into_iter().next()?;
+    reasons.push(format!(
+        "'{name}' is not in the reference tree: its '{label}', a {kind} of that name, takes its place"
+    ));
+    Some((label, sim))
+}
+
+/// Whether a cook treats the two foods alike: cooked or not, joining the dish at the same time, prepared
+/// the same way (sour cream, a topping, is not the cream beaten into the eggs; green onion is not onion).
+fn same_care(a: &str, b: &str) -> bool {
+    let care = |f: &str| {
+        (
+            foods::must_cook(f),
+            foods::joins_served(f),
+            foods::joins_mixed(f),
+            foods::joins_before_heat(f),
+            foods::prepared_state(f),
+            foods::trims(f).iter().map(|t| t.flag).collect::<Vec<_>>(),
+        )
+    };
+    care(a) == care(b)
 }
 
 /// The label `v` the user gave for `o`, when it is an ingredient of the knowledge base.

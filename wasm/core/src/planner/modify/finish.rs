@@ -66,6 +66,47 @@ pub(super) fn prepare_kept<'kb>(
     Some(format!("kept whole by the tree: {how}, as a cook would"))
 }
 
+/// The preparation a food gets before anything else (`foods::prepared_first`: an egg cracked) where the
+/// tree starts it past that point without it (a substitute's "egg white and yolk" in a bowl, an egg
+/// bought beaten): a unit from the whole food comes first. Returns the reason.
+pub(super) fn prepare_first<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    o: &str,
+    eq: &str,
+) -> Option<String> {
+    let food = known_as(ctx, o, eq);
+    let p = foods::prepared_first(food)?;
+    let motion = ctx
+        .index
+        .motion_for(p)
+        .filter(|m| cannot_take(ctx, o, eq, m).is_none())?;
+    let past: Vec<SlotId> = tree
+        .slots_with_label(o)
+        .into_iter()
+        .filter(|&x| {
+            !tree.produced(x)
+                && tree.slots[x]
+                    .node
+                    .physical_states()
+                    .all(|st| st != p && category(st) != Category::Whole)
+        })
+        .collect();
+    for &x in &past {
+        let whole = tree.add_slot(Cow::Owned(ObjectNode::new(o, vec![State::plain("whole")])));
+        let node = &tree.slots[x].node;
+        let mut states = node.states.clone();
+        states.insert(0, State::plain(p));
+        tree.slots[x].node = Cow::Owned(ObjectNode::new(node.label.clone(), states));
+        let mut inputs = vec![(whole, true)];
+        if let Some(t) = ctx.index.utensil_for(&motion) {
+            inputs.push((utensil_slot(ctx.kb, tree, t), false));
+        }
+        tree.add_unit(inputs, &motion, vec![(x, true)], Origin::Grafted);
+    }
+    (!past.is_empty()).then(|| format!("'{motion}' first, as a cook would: the tree starts it {p}"))
+}
+
 /// What a cook takes off the asked food before using it (`foods::trims`: an onion's skin before it is
 /// cut, a cherry's stone before it joins anything), where the tree has it still on: a unit doing so
 /// (FOON's motion for the state, else the trim's own verb) comes at that point of the food's own chain

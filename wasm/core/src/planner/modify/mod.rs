@@ -81,6 +81,13 @@ fn food_category(ctx: &Context, node: &ObjectNode) -> Category {
         .unwrap_or_else(|| ctx.index.sold_as(&node.label).unwrap_or(Category::Whole))
 }
 
+/// The reference tree's ingredient labels as retrieved: all of them, and those of starting foods that lead
+/// on to the goal (`Tree::starting_labels_reaching_goal`).
+struct ReferenceLabels {
+    all: Vec<SmolStr>,
+    reaching: Vec<SmolStr>,
+}
+
 /// What happened to one ingredient while it was being planned.
 struct Work {
     case: Option<Case>,
@@ -114,11 +121,18 @@ pub(crate) fn modify<'kb>(
     enabled: bool,
     notes: &mut Vec<String>,
 ) -> (Vec<IngredientOutcome>, Vec<String>) {
-    let reference_labels: Vec<SmolStr> = tree
-        .ingredient_labels()
-        .into_iter()
-        .map(SmolStr::new)
-        .collect();
+    let reference = ReferenceLabels {
+        all: tree
+            .ingredient_labels()
+            .into_iter()
+            .map(SmolStr::new)
+            .collect(),
+        reaching: tree
+            .starting_labels_reaching_goal()
+            .into_iter()
+            .map(SmolStr::new)
+            .collect(),
+    };
     let requested: HashSet<&str> = query
         .ingredients
         .iter()
@@ -126,7 +140,7 @@ pub(crate) fn modify<'kb>(
         .collect();
     let mut d = Driver::default();
     for ing in &query.ingredients {
-        let w = d.take(ctx, tree, ing, enabled, &requested, &reference_labels);
+        let w = d.take(ctx, tree, ing, enabled, &requested, &reference);
         d.works.push(w);
     }
     let mut removed = Vec::new();
@@ -175,7 +189,7 @@ impl Driver {
         ing: &QueryIngredient,
         enabled: bool,
         requested: &HashSet<&str>,
-        reference_labels: &[SmolStr],
+        reference: &ReferenceLabels,
     ) -> Work {
         let (o, s) = (ing.object.as_str(), ing.state.as_str());
         let mut w = Work {
@@ -193,7 +207,7 @@ impl Driver {
             w.reasons.push(format!("'{o}' {s} read as '{r}'"));
         }
         let name = read.unwrap_or(o);
-        let Some((eq, sim)) = equivalent(ctx, o, name, reference_labels, &mut w) else {
+        let Some((eq, sim)) = equivalent(ctx, o, name, reference, &mut w) else {
             return w;
         };
         let s = planned_state(ctx, o, &eq, s);
@@ -310,6 +324,9 @@ impl Driver {
                 .matched
                 .as_ref()
                 .map_or(w.label.as_str(), |m| m.label.as_str());
+            if let Some(reason) = prepare_first(ctx, tree, &w.label, eq) {
+                w.reasons.push(reason);
+            }
             if let Some(reason) = prepare_kept(ctx, tree, &w.label, eq) {
                 w.reasons.push(reason);
             }
