@@ -213,7 +213,7 @@ export interface GoalCandidate {
   score: number;
 }
 
-export type GoalTieBreak = "score" | "exact_matches" | "fewer_ingredients" | "name" | "kin_class";
+export type GoalTieBreak = "score" | "exact_matches" | "fewer_ingredients" | "name" | "kin_class" | "fuller_tree";
 
 export type ExpansionOutcome = "kitchen" | "recipe_start" | "expanded" | "cycle" | "had_from_start";
 

@@ -25,6 +25,17 @@ describe("explain steps", () => {
     expect(kin.length).toBeGreaterThan(0);
   });
 
+  it("says why a runner-up of Alg. 1 was taken when the best goal's tree would be kept next to nothing of", () => {
+    const fuller = everyNthDevQuery(1)
+      .map((query) => explained({ query }))
+      .filter((p) => p.trace!.goal_selection.tie_break === "fuller_tree");
+    expect(fuller.length).toBeGreaterThan(0);
+    for (const plan of fuller) {
+      expect(plan.trace!.goal_selection.candidates[0]!.subgraph).toBe(plan.goal.subgraph);
+      expect(explainSteps(plan)![0]!.caption).toContain("this runner-up's keeps more");
+    }
+  });
+
   it("replays Alg. 1, every Alg. 2 expansion, each ingredient and pruning, and ends on the final tree", () => {
     for (const request of requests) {
       const plan = explained(request);

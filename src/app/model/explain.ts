@@ -43,7 +43,7 @@ const WHY: Record<ChoiceReason, string> = {
   most_reliable: "a robot most likely carries out the tree through it",
 };
 
-const TIE_BREAK: Record<Exclude<GoalTieBreak, "kin_class">, string> = {
+const TIE_BREAK: Record<Exclude<GoalTieBreak, "kin_class" | "fuller_tree">, string> = {
   score: "the highest score",
   exact_matches: "more exact ingredient matches at an equal score",
   fewer_ingredients: "fewer ingredients at an equal score",
@@ -105,6 +105,7 @@ class SearchGraph {
 function goalReason(g: Trace["goal_selection"]): string {
   if (g.tie_break === null) return "it is the only one";
   if (g.tie_break === "kin_class") return `no recipe of the dish type fits well, and this ${g.kin_class ?? "kin"} recipe, a dish made the same way, fits clearly better`;
+  if (g.tie_break === "fuller_tree") return "the best-scoring goal's task tree would keep next to nothing of itself for this query (at most two of its units), and this runner-up's keeps more";
   return `it has ${TIE_BREAK[g.tie_break]}`;
 }
 

@@ -28,7 +28,8 @@ pub struct GoalSelection {
     /// A dish type made the same way whose goal was taken because none of the dish type's fit well.
     pub kin_class: Option<String>,
     /// What separated the reference goal from the runner-up: `score`, `exact_matches`,
-    /// `fewer_ingredients`, `name` or `kin_class`; `None` with a single candidate.
+    /// `fewer_ingredients`, `name`, `kin_class` or `fuller_tree` (the best-scoring goal's tree kept next
+    /// to nothing of itself for the query); `None` with a single candidate.
     pub tie_break: Option<String>,
 }
 

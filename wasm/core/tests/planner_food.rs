@@ -2156,7 +2156,7 @@ fn oil_goes_into_the_pan_before_the_eggs_cook_not_onto_the_plated_eggs() {
 
 /// A cake (class 5) whose tree has its own varieties of the foods a query may ask: vegetable oil and
 /// "egg white and yolk" (an egg cracked) mixed with flour into a batter that is baked; green onion and
-/// lime zest stirred in; olive oil poured into a pan that the next unit takes without it (a dead end).
+/// lime zest stirred in; olive oil poured into a pan that the stove heats without it (a dead end).
 const VARIETY_CAKE: &str = "//
 O\tbowl\t0
 S\tempty
@@ -2187,6 +2187,14 @@ S\tin\t[pan]
 //
 O\tpan\t0
 S\tcontains\t{olive oil}
+O\tstove\t0
+S\ton
+M\theat\t<Assumed>
+O\tpan\t0
+S\thot
+//
+O\tpan\t0
+S\thot
 O\tcake batter\t1
 S\tcontains\t{flour,vegetable oil,egg white and yolk,green onion,lime zest}
 S\tin\t[bowl]

@@ -75,6 +75,32 @@ pub(crate) fn select<'a>(
     Some(kin.map_or(in_class, |(c, _)| c))
 }
 
+/// The goals of the dish type (of all goals when it has none) Alg. 1 ranks after `chosen`, best first.
+pub(crate) fn runners_up<'a>(
+    kb: &'a KnowledgeBase,
+    index: &PlannerIndex,
+    scorer: &Scorer,
+    class: Option<u32>,
+    query: &Query,
+    chosen: &Chosen,
+) -> Vec<Chosen<'a>> {
+    let goals = class
+        .and_then(|c| index.goals_of_class(c))
+        .unwrap_or_else(|| index.all_goals());
+    let mut all: Vec<Rated> = rated(kb, scorer, goals, query)
+        .into_iter()
+        .map(|(r, _)| r)
+        .filter(|r| !std::ptr::eq(r.goal, chosen.goal))
+        .collect();
+    all.sort_by(|a, b| compare(kb, b, a).0);
+    all.into_iter()
+        .map(|r| Chosen {
+            goal: r.goal,
+            score: r.score,
+        })
+        .collect()
+}
+
 /// The goal of `goals` Alg. 1 prefers (`compare`).
 fn best_of<'a>(
     kb: &'a KnowledgeBase,

@@ -33,6 +33,29 @@ impl Recorder {
         }
     }
 
+    /// Starts the trace again from Alg. 1's choice, which is now the candidate `node` of `subgraph`
+    /// (the best goal's tree was kept next to nothing of): it leads the candidates, and what was
+    /// recorded of the best goal's retrieval and modification is forgotten.
+    pub fn restart_with_goal(&self, node: &str, subgraph: &str) {
+        self.record(|t| {
+            let g = &mut t.goal_selection;
+            if let Some(at) = g
+                .candidates
+                .iter()
+                .position(|c| c.node == node && c.subgraph == subgraph)
+            {
+                let c = g.candidates.remove(at);
+                g.candidates.insert(0, c);
+            }
+            g.tie_break = Some("fuller_tree".to_string());
+            *t = Trace {
+                trace_version: t.trace_version,
+                goal_selection: std::mem::take(&mut t.goal_selection),
+                ..Trace::default()
+            };
+        });
+    }
+
     pub fn finish(self) -> Option<Trace> {
         self.0.map(RefCell::into_inner)
     }

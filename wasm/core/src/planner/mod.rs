@@ -23,7 +23,8 @@ pub use index::PlannerIndex;
 pub use transitions::{Transitions, Verdict};
 
 use crate::contract::plan::{
-    DishClassRef, Plan, PlanRequest, Query, QueryIngredient, RetrievalMode, FORMAT_VERSION,
+    DishClassRef, IngredientOutcome, Plan, PlanRequest, Query, QueryIngredient, RetrievalMode,
+    FORMAT_VERSION,
 };
 use crate::error::{ErrorCode, FoonError, Result};
 use crate::foon::kb::KnowledgeBase;
@@ -33,6 +34,7 @@ use crate::limits;
 use crate::robot::{robot_view, Motions};
 use crate::similarity::Similarity;
 use crate::vocab::taxonomy::{dish_class_name, dish_class_of};
+use rustc_hash::FxHashMap as HashMap;
 use std::collections::BTreeMap;
 
 /// Plans a query against a knowledge base. `index` must have been built from the same `kb`
@@ -58,38 +60,48 @@ pub fn plan(
     let scorer = score::Scorer::new(similarity, index, &labels);
     let trace = explain::Recorder::new(request.explain);
     let no_goal = "the knowledge base has no goal node with a functional unit that makes it";
-    let chosen = alg1_goal::select(kb, index, &scorer, class, &mut notes, &query, &trace)
+    let mut chosen = alg1_goal::select(kb, index, &scorer, class, &mut notes, &query, &trace)
         .ok_or_else(|| FoonError::new(ErrorCode::NoGoal, no_goal))?;
-    let goal_subgraph = index.subgraph_id(&chosen.goal.subgraph);
-    let root = (chosen.goal.node, goal_subgraph);
-    let mode = request.robot.as_ref().map(|o| o.mode).zip(motions.as_ref());
-    let reference = reference_tree(kb, index, &scorer, root, mode, &trace, &mut notes);
-    let mut tree = tree::Tree::from_retrieved(kb, &reference, chosen.goal.node);
-    let ctx = modify::Context {
+    let readings = crate::vocab::foods::query_readings(&query);
+    let setting = Setting {
         kb,
         index,
-        sim: similarity,
+        similarity,
+        scorer: &scorer,
         class,
         overrides: &overrides,
-        goal_subgraph,
-        scorer: &scorer,
-        trace: &trace,
-        readings: crate::vocab::foods::query_readings(&query),
+        readings: &readings,
+        request,
+        motions: motions.as_ref(),
     };
-    let (mut outcomes, removed) =
-        modify::modify(&ctx, &mut tree, &query, request.modify, &mut notes);
-    let (values, order) = tree.drop_redundant_units();
-    let scheduled = schedule::schedule(&mut tree, &values, order);
-    if request.modify {
-        schedule::confirm_planned(&tree, &scheduled.order, &mut outcomes);
-        note_little_kept(
-            &tree,
-            &scheduled.order,
-            reference.units.len(),
-            &chosen.goal.subgraph,
-            &mut notes,
+    let mut made = modified(&setting, &query, &chosen, &trace);
+    if let Some((fuller, m)) = fuller_reference(&setting, &query, &chosen, &made) {
+        notes.push(format!(
+            "Alg. 1's best goal ('{}') keeps {} of its {} units for this query: started from '{}' \
+             (similarity {:.2}), the next candidate whose tree the query uses",
+            chosen.goal.subgraph,
+            made.kept,
+            made.reference_units,
+            fuller.goal.subgraph,
+            fuller.score
+        ));
+        trace.restart_with_goal(
+            &kb.nodes[fuller.goal.node].to_string(),
+            &fuller.goal.subgraph,
         );
+        made = modified(&setting, &query, &fuller, &trace);
+        debug_assert_eq!(made.kept, m);
+        chosen = fuller;
     }
+    let Modified {
+        tree,
+        schedule: scheduled,
+        outcomes,
+        removed,
+        notes: made_notes,
+        ..
+    } = made;
+    notes.extend(made_notes);
     trace.record(|t| t.outcomes(&outcomes, |o| index.is_label(o)));
     let dish_class = class.and_then(|index| {
         let name = dish_class_name(index)?.to_string();
@@ -109,7 +121,7 @@ pub fn plan(
         outcomes,
         removed,
         format_version: FORMAT_VERSION,
-        readings: &ctx.readings,
+        readings: &readings,
     });
     plan.cautions = cautions::cautions(&plan);
     plan.trace = trace.finish();
@@ -147,36 +159,135 @@ fn reference_tree(
     reference
 }
 
-/// Says so when the plan keeps next to nothing of the reference task tree (at most two of its units,
-/// of many): the knowledge base then has no recipe of the dish type like the query, and the plan is mostly
-/// the ingredients' own branches joined at the dish. `npm run eval` counts such plans the same way
-/// (`reference_units` in `src/eval/coverage.ts`).
-fn note_little_kept(
-    tree: &tree::Tree,
-    order: &[tree::TUnitId],
+/// What planning with one reference goal needs besides the goal: the knowledge base, the similarity,
+/// the query's settings.
+struct Setting<'a> {
+    kb: &'a KnowledgeBase,
+    index: &'a PlannerIndex,
+    similarity: &'a dyn Similarity,
+    scorer: &'a score::Scorer<'a>,
+    class: Option<u32>,
+    overrides: &'a BTreeMap<String, String>,
+    readings: &'a HashMap<String, &'static str>,
+    request: &'a PlanRequest,
+    motions: Option<&'a Motions<'a>>,
+}
+
+/// A reference task tree (Alg. 2) modified for the query (Table I, pruning) and scheduled.
+struct Modified<'kb> {
+    tree: tree::Tree<'kb>,
+    schedule: schedule::Schedule,
+    outcomes: Vec<IngredientOutcome>,
+    removed: Vec<String>,
+    notes: Vec<String>,
+    /// Units of the reference task tree, and how many of them the plan keeps.
     reference_units: usize,
-    subgraph: &str,
-    notes: &mut Vec<String>,
-) {
+    kept: usize,
+}
+
+impl Modified<'_> {
+    /// Whether the plan keeps next to nothing of the reference task tree (at most two of its units, of
+    /// many): the plan is then mostly the ingredients' own branches joined at the dish. `npm run eval`
+    /// counts such plans the same way (`reference_units` in `src/eval/coverage.ts`).
+    fn little_kept(&self) -> bool {
+        self.kept <= 2 && self.reference_units >= 6
+    }
+}
+
+/// The reference task tree of `chosen`, modified for the query when the request asks, and scheduled.
+fn modified<'a>(
+    s: &Setting<'a>,
+    query: &Query,
+    chosen: &alg1_goal::Chosen<'a>,
+    trace: &'a explain::Recorder,
+) -> Modified<'a> {
+    let mut notes = Vec::new();
+    let goal_subgraph = s.index.subgraph_id(&chosen.goal.subgraph);
+    let root = (chosen.goal.node, goal_subgraph);
+    let mode = s.request.robot.as_ref().map(|o| o.mode).zip(s.motions);
+    let reference = reference_tree(s.kb, s.index, s.scorer, root, mode, trace, &mut notes);
+    let mut tree = tree::Tree::from_retrieved(s.kb, &reference, chosen.goal.node);
+    let ctx = modify::Context {
+        kb: s.kb,
+        index: s.index,
+        sim: s.similarity,
+        class: s.class,
+        overrides: s.overrides,
+        goal_subgraph,
+        scorer: s.scorer,
+        trace,
+        readings: s.readings,
+    };
+    let modify = s.request.modify;
+    let (mut outcomes, removed) = modify::modify(&ctx, &mut tree, query, modify, &mut notes);
+    let (values, order) = tree.drop_redundant_units();
+    let schedule = schedule::schedule(&mut tree, &values, order);
+    if modify {
+        schedule::confirm_planned(&tree, &schedule.order, &mut outcomes);
+    }
+    let mut made = Modified {
+        kept: kept_units(&tree, &schedule.order),
+        reference_units: reference.units.len(),
+        tree,
+        schedule,
+        outcomes,
+        removed,
+        notes,
+    };
+    if modify && made.little_kept() {
+        made.notes.push(format!(
+            "little of the reference task tree fits this query: {} of its {} units kept ('{}'); the \
+             rest are the ingredients' own branches. The knowledge base may have no recipe of this dish \
+             type like it",
+            made.kept, made.reference_units, chosen.goal.subgraph
+        ));
+    }
+    made
+}
+
+/// The units of the reference task tree a plan keeps (as they were, renamed, or with an ingredient
+/// attached).
+fn kept_units(tree: &tree::Tree, order: &[tree::TUnitId]) -> usize {
     use crate::contract::plan::Origin;
-    let kept = order
+    order
         .iter()
         .filter(|&&u| {
-            let origin = tree.units[u].origin;
             matches!(
-                origin,
+                tree.units[u].origin,
                 Origin::Reference | Origin::Renamed | Origin::Attached
             )
         })
-        .count();
-    if kept <= 2 && reference_units >= 6 {
-        notes.push(format!(
-            "little of the reference task tree fits this query: {kept} of its {reference_units} units \
-             kept ('{subgraph}'); the rest are the ingredients' own branches. The knowledge base may \
-             have no recipe of this dish type like it"
-        ));
-    }
+        .count()
 }
+
+/// Where the query keeps next to nothing of the tree of Alg. 1's best goal (`Modified::little_kept`),
+/// the first of the next candidates (at most `RUNNERS_UP`, scoring at most `FULLER_WITHIN` less) whose
+/// tree it keeps more of, with how many units it keeps. Planned without the trace.
+fn fuller_reference<'kb>(
+    s: &Setting<'kb>,
+    query: &Query,
+    chosen: &alg1_goal::Chosen<'kb>,
+    made: &Modified,
+) -> Option<(alg1_goal::Chosen<'kb>, usize)> {
+    if !s.request.modify || !made.little_kept() {
+        return None;
+    }
+    let runners = alg1_goal::runners_up(s.kb, s.index, s.scorer, s.class, query, chosen);
+    runners
+        .into_iter()
+        .filter(|c| c.score >= chosen.score - FULLER_WITHIN)
+        .take(RUNNERS_UP)
+        .find_map(|c| {
+            let off = explain::Recorder::OFF;
+            let m = modified(s, query, &c, &off);
+            (!m.little_kept()).then_some(m.kept).map(|kept| (c, kept))
+        })
+}
+
+/// How many runners-up of Alg. 1 are tried when its best goal's tree is kept next to nothing of.
+const RUNNERS_UP: usize = 3;
+/// How much less than Alg. 1's best goal a runner-up tried instead may score.
+const FULLER_WITHIN: f32 = 0.1;
 
 fn bad(message: String) -> FoonError {
     FoonError::new(ErrorCode::BadQuery, message)

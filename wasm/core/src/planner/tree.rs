@@ -408,33 +408,37 @@ impl<'kb> Tree<'kb> {
         labels
     }
 
-    /// Labels of the starting foods (made by no unit) whose own nodes lead on to the goal: taken by a
-    /// unit that gives out a food (not only a container) leading on to it. FOON has dead ends: oil poured
-    /// into a pot that the next unit takes without it.
-    pub fn starting_labels_reaching_goal(&self) -> Vec<&str> {
+    /// Whether a starting food `label` (made by no unit) leads on to the goal: a unit takes a node that is
+    /// it or holds it (a bowl listing it) and gives out one that holds it too, or a food made there (the
+    /// batter mixed in that bowl), and so on to the goal. FOON has dead ends: oil poured into a pot that
+    /// the next unit gives out without it.
+    pub fn leads_to_goal(&self, label: &str) -> bool {
+        let holds = |x: SlotId| {
+            let node = &self.slots[x].node;
+            node.label == label || node.listed().any(|item| item == label)
+        };
         let mut reaches = vec![false; self.slots.len()];
         reaches[self.goal] = true;
         for u in self.order().into_iter().rev() {
             let unit = &self.units[u];
-            let food = |x: &(SlotId, bool)| !self.slots[x.0].utensil;
-            if unit
+            let made_here = |x: SlotId| {
+                let made = &self.slots[x];
+                !made.utensil
+                    && !unit
+                        .inputs
+                        .iter()
+                        .any(|i| self.slots[i.0].node.label == made.node.label)
+            };
+            let on = unit
                 .outputs
                 .iter()
-                .filter(|x| food(x))
-                .any(|x| reaches[x.0])
-            {
-                for x in unit.inputs.iter().filter(|x| food(x)) {
-                    reaches[x.0] = true;
-                }
+                .any(|o| reaches[o.0] && (holds(o.0) || made_here(o.0)));
+            for i in unit.inputs.iter().filter(|i| holds(i.0)) {
+                reaches[i.0] |= on;
             }
         }
-        let mut labels: Vec<&str> = (0..self.slots.len())
-            .filter(|&x| reaches[x] && !self.produced(x))
-            .map(|x| self.slots[x].node.label.as_str())
-            .collect();
-        labels.sort_unstable();
-        labels.dedup();
-        labels
+        (0..self.slots.len())
+            .any(|x| reaches[x] && self.slots[x].node.label == label && !self.produced(x))
     }
 
     /// Live units that take the slot as input, in execution order.

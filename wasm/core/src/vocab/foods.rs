@@ -416,16 +416,13 @@ pub fn reading(food: &str, state: &str) -> Option<&'static str> {
         .map(String::as_str)
 }
 
-/// The food each asked name stands for where its state says (`foods::reading`); a name asked twice in
-/// states read differently (pepper ground and diced) is left to its name.
+/// The food each asked name stands for where its state says (`foods::reading`); a name asked twice
+/// (pepper whole and ground) is read by its first state, the one its single line is planned for.
 pub fn query_readings(query: &Query) -> HashMap<String, &'static str> {
     let mut out: HashMap<String, Option<&'static str>> = HashMap::default();
     for ing in &query.ingredients {
-        let r = reading(&ing.object, &ing.state);
-        let entry = out.entry(ing.object.clone()).or_insert(r);
-        if *entry != r {
-            *entry = None;
-        }
+        out.entry(ing.object.clone())
+            .or_insert_with(|| reading(&ing.object, &ing.state));
     }
     out.into_iter().filter_map(|(o, r)| Some((o, r?))).collect()
 }
@@ -608,7 +605,7 @@ mod tests {
     }
 
     #[test]
-    fn a_query_reads_its_names_by_their_states_unless_one_name_is_read_two_ways() {
+    fn a_query_reads_its_names_by_their_states_a_name_asked_twice_by_its_first() {
         let query: Query = serde_json::from_str(
             r#"{"type": "soup", "ingredients": [{"object": "basil", "state": "dried"},
                {"object": "coriander", "state": "leaves"}, {"object": "pepper", "state": "ground"},
@@ -620,7 +617,10 @@ mod tests {
             (r.get("basil"), r.get("coriander")),
             (Some(&"dried basil"), Some(&"cilantro"))
         );
-        assert_eq!((r.get("pepper"), r.get("onion")), (None, None));
+        assert_eq!(
+            (r.get("pepper"), r.get("onion")),
+            (Some(&"black pepper"), None)
+        );
         assert!(!takes("dried basil", "chop") && !takes("coriander seed", "chop"));
     }
 

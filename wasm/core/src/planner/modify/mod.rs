@@ -54,7 +54,7 @@ pub(crate) struct Context<'a> {
     pub trace: &'a super::explain::Recorder,
     /// Asked names the food knowledge reads as another food by their state (basil asked dried is dried
     /// basil), from `foods::query_readings`.
-    pub readings: HashMap<String, &'static str>,
+    pub readings: &'a HashMap<String, &'static str>,
 }
 
 /// The name the food knowledge judges the asked food `o` by: the food its state says it is, else `o`
@@ -82,7 +82,7 @@ fn food_category(ctx: &Context, node: &ObjectNode) -> Category {
 }
 
 /// The reference tree's ingredient labels as retrieved: all of them, and those of starting foods that lead
-/// on to the goal (`Tree::starting_labels_reaching_goal`).
+/// on to the goal (`Tree::leads_to_goal`).
 struct ReferenceLabels {
     all: Vec<SmolStr>,
     reaching: Vec<SmolStr>,
@@ -128,8 +128,9 @@ pub(crate) fn modify<'kb>(
             .map(SmolStr::new)
             .collect(),
         reaching: tree
-            .starting_labels_reaching_goal()
+            .ingredient_labels()
             .into_iter()
+            .filter(|l| tree.leads_to_goal(l))
             .map(SmolStr::new)
             .collect(),
     };
