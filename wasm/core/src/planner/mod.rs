@@ -60,7 +60,7 @@ pub fn plan(
     let scorer = score::Scorer::new(similarity, index, &labels);
     let trace = explain::Recorder::new(request.explain);
     let no_goal = "the knowledge base has no goal node with a functional unit that makes it";
-    let mut chosen = alg1_goal::select(kb, index, &scorer, class, &mut notes, &query, &trace)
+    let chosen = alg1_goal::select(kb, index, &scorer, class, &mut notes, &query, &trace)
         .ok_or_else(|| FoonError::new(ErrorCode::NoGoal, no_goal))?;
     let readings = crate::vocab::foods::query_readings(&query);
     let setting = Setting {
@@ -74,25 +74,7 @@ pub fn plan(
         request,
         motions: motions.as_ref(),
     };
-    let mut made = modified(&setting, &query, &chosen, &trace);
-    if let Some((fuller, m)) = fuller_reference(&setting, &query, &chosen, &made) {
-        notes.push(format!(
-            "Alg. 1's best goal ('{}') keeps {} of its {} units for this query: started from '{}' \
-             (similarity {:.2}), the next candidate whose tree the query uses",
-            chosen.goal.subgraph,
-            made.kept,
-            made.reference_units,
-            fuller.goal.subgraph,
-            fuller.score
-        ));
-        trace.restart_with_goal(
-            &kb.nodes[fuller.goal.node].to_string(),
-            &fuller.goal.subgraph,
-        );
-        made = modified(&setting, &query, &fuller, &trace);
-        debug_assert_eq!(made.kept, m);
-        chosen = fuller;
-    }
+    let (chosen, made) = reference_for(&setting, &query, chosen, &trace, &mut notes);
     let Modified {
         tree,
         schedule: scheduled,
@@ -260,15 +242,42 @@ fn kept_units(tree: &tree::Tree, order: &[tree::TUnitId]) -> usize {
         .count()
 }
 
+/// The tree of Alg. 1's best goal `chosen` modified for the query, or, where the query keeps next to
+/// nothing of it, that of the runner-up whose tree it keeps more of (`fuller_reference`), with a note;
+/// the trace then starts again from the runner-up.
+fn reference_for<'a>(
+    s: &Setting<'a>,
+    query: &Query,
+    chosen: alg1_goal::Chosen<'a>,
+    trace: &'a explain::Recorder,
+    notes: &mut Vec<String>,
+) -> (alg1_goal::Chosen<'a>, Modified<'a>) {
+    let made = modified(s, query, &chosen, trace);
+    let Some(fuller) = fuller_reference(s, query, &chosen, &made) else {
+        return (chosen, made);
+    };
+    notes.push(format!(
+        "Alg. 1's best goal ('{}') keeps {} of its {} units for this query: started from '{}' \
+         (similarity {:.2}), the next candidate whose tree the query uses",
+        chosen.goal.subgraph, made.kept, made.reference_units, fuller.goal.subgraph, fuller.score
+    ));
+    trace.restart_with_goal(
+        &s.kb.nodes[fuller.goal.node].to_string(),
+        &fuller.goal.subgraph,
+    );
+    let made = modified(s, query, &fuller, trace);
+    (fuller, made)
+}
+
 /// Where the query keeps next to nothing of the tree of Alg. 1's best goal (`Modified::little_kept`),
 /// the first of the next candidates (at most `RUNNERS_UP`, scoring at most `FULLER_WITHIN` less) whose
-/// tree it keeps more of, with how many units it keeps. Planned without the trace.
+/// tree it keeps more of. Planned without the trace.
 fn fuller_reference<'kb>(
     s: &Setting<'kb>,
     query: &Query,
     chosen: &alg1_goal::Chosen<'kb>,
     made: &Modified,
-) -> Option<(alg1_goal::Chosen<'kb>, usize)> {
+) -> Option<alg1_goal::Chosen<'kb>> {
     if !s.request.modify || !made.little_kept() {
         return None;
     }
@@ -277,10 +286,9 @@ fn fuller_reference<'kb>(
         .into_iter()
         .filter(|c| c.score >= chosen.score - FULLER_WITHIN)
         .take(RUNNERS_UP)
-        .find_map(|c| {
+        .find(|c| {
             let off = explain::Recorder::OFF;
-            let m = modified(s, query, &c, &off);
-            (!m.little_kept()).then_some(m.kept).map(|kept| (c, kept))
+            !modified(s, query, c, &off).little_kept()
         })
 }
 

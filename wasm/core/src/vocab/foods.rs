@@ -441,6 +441,8 @@ mod tests {
             ("vodka", "bake"),
             ("tomato", "crack"),
             ("spaghetti", "bake"),
+            ("caper", "squeeze"),
+            ("kalamata olive", "peel"),
         ] {
             assert!(!takes(food, motion), "{food} should not take '{motion}'");
         }
@@ -586,6 +588,10 @@ mod tests {
         assert!(shows_cooking("carrot") && shows_cooking("flour") && shows_cooking("rice"));
         // a garnish joins the served dish; its flag wins over its category's heat (chives, an allium)
         assert!(joins_served("cheddar") && joins_served("feta") && joins_served("chive"));
+        assert!(
+            joins_served("glaze") && joins_served("frosting") && joins_served("powdered sugar")
+        );
+        assert!(!joins_served("sugar") && !joins_served("brown sugar"));
         assert!(!joins_served("cream cheese") && !joins_served("onion") && !joins_served("thyme"));
         assert!(joins_mixed("half and half") && joins_mixed("heavy cream") && joins_mixed("water"));
         assert!(
