@@ -41,7 +41,7 @@ pub(super) fn prepare_whole<'kb>(
 /// The asked food `o` when the tree takes it to the dish in the piece it is bought as (a block of cheddar
 /// poured into the omelette, asked "creamy"; a chicken baked whole for a salad): brought to the state a
 /// cook gives it (`foods::prepared_state`: grated, chopped) as `restate` brings a food to an asked
-/// state. Foods prepared before anything else (an egg cracked) are the tree's already. Returns the reason.
+/// state. Foods prepared before anything else (an egg cracked) are `prepare_first`'s. Returns the reason.
 pub(super) fn prepare_kept<'kb>(
     ctx: &Context<'kb>,
     tree: &mut Tree<'kb>,
