@@ -2367,3 +2367,80 @@ fn a_food_read_as_a_product_of_its_state_is_bought_so_not_made_from_its_substitu
         .unwrap();
     assert_eq!(line.state[0].physical_state, "shredded");
 }
+
+/// A bread (class 0): flour from one packet sprinkled on a board and poured into a bowl, where it is
+/// mixed with water into a dough that is kneaded on the floured board and baked. The board's flour
+/// comes first in the plan.
+const FLOURED_BOARD: &str = "//
+O\tflour\t1
+S\tpowder
+S\tin\t[packet]
+O\tboard\t0
+S\tempty
+M\tsprinkle\t<Assumed>
+O\tflour\t1
+S\tpowder
+S\ton\t[board]
+O\tboard\t0
+S\tcontains\t{flour}
+//
+O\tflour\t1
+S\tpowder
+S\tin\t[packet]
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tflour\t1
+S\tpowder
+S\tin\t[bowl]
+O\tbowl\t0
+S\tcontains\t{flour}
+//
+O\tbowl\t0
+S\tcontains\t{flour}
+O\tflour\t1
+S\tpowder
+S\tin\t[bowl]
+O\twater\t1
+S\tliquid
+M\tmix\t<Assumed>
+O\tdough\t1
+S\tcontains\t{flour,water}
+S\tin\t[bowl]
+//
+O\tboard\t0
+S\tcontains\t{flour}
+O\tdough\t1
+S\tcontains\t{flour,water}
+S\tin\t[bowl]
+M\tknead\t<Assumed>
+O\tdough\t1
+S\tkneaded
+S\tcontains\t{flour,water}
+S\ton\t[board]
+//
+O\tdough\t1
+S\tkneaded
+S\tcontains\t{flour,water}
+S\ton\t[board]
+M\tbake\t<Assumed>
+O\tbread\t1\t0
+S\tcontains\t{flour,water}
+S\tbaked
+//
+";
+
+#[test]
+fn flour_is_followed_into_the_dough_not_onto_the_board_it_is_kneaded_on() {
+    let p = plan_of(
+        &[("bread.txt", FLOURED_BOARD)],
+        &ExactMatch,
+        &query("bread", &[("flour", "powder"), ("water", "liquid")]),
+    );
+    assert_eq!(
+        line_motions(&p, "flour"),
+        ["pour", "mix", "knead", "bake"],
+        "{:#?}",
+        p.units
+    );
+}

@@ -320,12 +320,24 @@ impl<'t> Walker<'_, 't> {
     /// the food went into something else).
     fn next_taker(&self) -> Option<(usize, TUnitId, Option<SlotId>)> {
         let (tree, label, at) = (self.tree, self.label, self.at);
-        let mut takers = self.order.iter().enumerate().skip(self.from);
-        takers.find_map(|(pos, &u)| {
+        let takers = self.order.iter().enumerate().skip(self.from);
+        let takers: Vec<(usize, &TUnitId)> = takers
+            .filter(|(_, &u)| tree.units[u].inputs.iter().any(|i| i.0 == at))
+            .collect();
+        // the same piece taken twice (flour poured into the dough's bowl and sprinkled on the table to
+        // knead it on): the line follows it into a vessel, not onto a surface, wherever it comes first
+        let into_vessel = |u: TUnitId| {
+            tree.units[u].outputs.iter().any(|o| {
+                let node = &tree.slots[o.0].node;
+                node.label == label && node.states.iter().any(|s| s.name == "in")
+            })
+        };
+        let taker = takers
+            .iter()
+            .find(|(_, &u)| takers.len() > 1 && into_vessel(u))
+            .or(takers.first());
+        taker.map(|&(pos, &u)| {
             let unit = &tree.units[u];
-            if !unit.inputs.iter().any(|i| i.0 == at) {
-                return None;
-            }
             // of two pieces of it (the stem cut off a broccoli, the florets), the one a later unit takes
             let pieces = || {
                 unit.outputs
@@ -340,7 +352,7 @@ impl<'t> Walker<'_, 't> {
                 .find(|&o| self.uses.first_use[o] != usize::MAX)
                 .or_else(|| pieces().next())
                 .filter(|_| !makes_dish);
-            Some((pos, u, out))
+            (pos, u, out)
         })
     }
 
