@@ -333,11 +333,26 @@ pub(super) fn finish_branch<'kb>(
     if eq != o {
         tree.rename_in(before..tree.slots.len(), eq, o);
     }
+    join_branch(ctx, tree, (o, eq, s), last, &mut how)?;
+    Ok((chosen_state, how))
+}
+
+/// Attachment of a branch ending in `last` for the asked food `o` (equivalent `eq`, state `s`): at the
+/// unit `attach_point` picks, cooked alone first where nothing cooks it after, or onto the served dish
+/// (`top_dish`) when it is a topping.
+fn join_branch<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    (o, eq, s): (&str, &str, &str),
+    mut last: SlotId,
+    how: &mut String,
+) -> Result<(), String> {
     let order = tree.order();
     let carries = tree.carriers(&order);
     let food = known_as(ctx, o, eq);
     let cooked = cooked_later(tree, &order, food);
-    let Some(m) = attach_point(ctx, tree, &order, &carries, &cooked, o, c) else {
+    let at = attach_point(ctx, tree, &order, &carries, &cooked, o, category(s));
+    let Some(m) = at else {
         return Err(format!("no unit of the tree can take '{o}'"));
     };
     let cooked_there = cooks_what_joins(tree, &cooked, m, food);
@@ -345,7 +360,7 @@ pub(super) fn finish_branch<'kb>(
         top_dish(tree, food, o, last)
     } else {
         if !cooked_there {
-            last = cook_alone(ctx, tree, o, last, &mut how);
+            last = cook_alone(ctx, tree, o, last, how);
         }
         tree.units[m].inputs.push((last, true));
         tree.add_contents_downstream(m, o, &order, &carries);
@@ -355,5 +370,5 @@ pub(super) fn finish_branch<'kb>(
     ctx.trace
         .record(|t| t.attached(o, s, &tree.units[m].motion, dish_pattern(ctx.class)));
     let _ = write!(how, "; added at '{}'", tree.units[m].motion);
-    Ok((chosen_state, how))
+    Ok(())
 }
