@@ -6,6 +6,7 @@ import { openKbPersistence } from "./app/kb-store";
 import { EXAMPLES, queryFromSearch, queryToSearch } from "./app/query";
 import { bindThemePicker } from "./app/theme";
 import { syncQueryWithUrl } from "./app/url-sync";
+import { PagePlanner } from "./app/page-planner";
 import { WorkerPlanner } from "./worker/client";
 import "./app/style.css";
 import "./app/page.css";
@@ -22,7 +23,7 @@ function start(): void {
   // the URL always shows the query, the first example's included (so "back" to it shows it again)
   if (fromUrl === null) history.replaceState(null, "", `${location.pathname}${queryToSearch(initial)}${location.hash}`);
   const app = createPlannerApp(host, {
-    planner: new WorkerPlanner(),
+    planner: new PagePlanner(new WorkerPlanner()),
     kbUrl: KB_URL,
     embeddingsUrl: EMBEDDINGS_URL,
     views: ALL_VIEWS,

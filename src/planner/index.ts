@@ -33,25 +33,40 @@ function assertSimd(): void {
   }
 }
 
-/** Initialises the WASM module once (browser: fetches it next to the glue code, or from `source`). */
-export function initPlanner(source?: URL | string | Response | BufferSource): Promise<void> {
+/** The compiled module once initialised: another thread (the page, for re-plans) instantiates it without compiling it again. */
+let compiled: WebAssembly.Module | null = null;
+
+/**
+ * Initialises the WASM module once (browser: fetches it next to the glue code, or from `source`; a compiled
+ * `WebAssembly.Module`, such as the worker's `compiledModule()`, is only instantiated).
+ */
+export function initPlanner(source?: URL | string | Response | BufferSource | WebAssembly.Module): Promise<void> {
   try {
     assertSimd();
   } catch (e) {
     return Promise.reject(e);
   }
-  ready ??= initWasmModule(source === undefined ? undefined : { module_or_path: source }).then((exports) => {
-    memory = exports.memory;
-    initialised = true;
-  });
+  if (ready === null) {
+    if (source instanceof WebAssembly.Module) compiled = source;
+    ready = initWasmModule(source === undefined ? undefined : { module_or_path: source }).then((exports) => {
+      memory = exports.memory;
+      initialised = true;
+    });
+  }
   return ready;
+}
+
+/** The compiled module this thread was given (`initPlanner(module)`, `initPlannerSync`), else null. */
+export function compiledModule(): WebAssembly.Module | null {
+  return compiled;
 }
 
 /** Initialises the WASM module synchronously from its bytes (Node, Vitest, workers that hold the bytes). */
 export function initPlannerSync(bytes: BufferSource): void {
   if (initialised) return;
   assertSimd();
-  memory = initSync({ module: bytes }).memory;
+  compiled = new WebAssembly.Module(bytes);
+  memory = initSync({ module: compiled }).memory;
   initialised = true;
   ready = Promise.resolve();
 }

@@ -5,6 +5,7 @@ import { createPlannerApp, type PlannerApp } from "../app/app";
 import type { Selection } from "../app/model/tree";
 import { applyTheme } from "../app/theme";
 import type { FoonErrorData, Plan, PlanUnit } from "../planner/types";
+import { PagePlanner } from "../app/page-planner";
 import { WorkerPlanner } from "../worker/client";
 import css from "../app/style.css?inline";
 import { WIDGET_VIEWS, widgetIngredients, type WidgetOptions } from "./options";
@@ -79,7 +80,7 @@ export function mount(element: HTMLElement, initial: WidgetOptions = {}, callbac
     stopKbWatch();
     app?.destroy();
     app = createPlannerApp(appRoot, {
-      planner: new WorkerPlanner(),
+      planner: new PagePlanner(new WorkerPlanner()),
       kbUrl: kbUrl(),
       embeddingsUrl: DEFAULT_EMBEDDINGS_URL,
       views: WIDGET_VIEWS[options.view ?? "all"],

@@ -3,7 +3,7 @@
 
 import { PlannerError } from "../planner/errors";
 import type { ExportFormat, KnowledgeBaseFile, Plan, PlanRequest } from "../planner/types";
-import type { KnowledgeBaseSource, LoadedKnowledgeBase, LoadPhase, WorkerRequest, WorkerResponse } from "./protocol";
+import type { KnowledgeBaseSource, LoadedKnowledgeBase, LoadPhase, PlannerCopy, WorkerRequest, WorkerResponse } from "./protocol";
 import plannerWorkerUrl from "./planner.worker.ts?worker&url";
 
 /** What a planner worker (or a fake one in tests) must offer the app. */
@@ -208,6 +208,13 @@ export class WorkerPlanner implements PlannerService {
   async exportPlan(request: PlanRequest, format: ExportFormat): Promise<string> {
     const response = await this.send({ type: "export", id: this.nextId++, request, format });
     if (response.type === "exported") return response.text;
+    throw errorOf(response);
+  }
+
+  /** The worker's compiled module and loaded files, for a copy of the planner on the page's thread (null: none to give). */
+  async copy(): Promise<PlannerCopy | null> {
+    const response = await this.send({ type: "copy", id: this.nextId++ });
+    if (response.type === "copied") return response.copy;
     throw errorOf(response);
   }
 

@@ -2,14 +2,22 @@
 // the page. Plan requests are coalesced: only the newest pending one runs, older ones are answered
 // `superseded` (a WASM call cannot be interrupted, but the queue behind it can be dropped).
 
-import { FoonPlanner, initPlanner, PlannerError, toPlannerError } from "../planner/index";
+import { compiledModule, FoonPlanner, initPlanner, PlannerError, toPlannerError } from "../planner/index";
 import type { PlanRequest } from "../planner/types";
 import { LatestOnly } from "./latest";
-import type { KnowledgeBaseSource, LoadedKnowledgeBase, LoadPhase, LoadPhaseName, WorkerRequest, WorkerResponse } from "./protocol";
+import type { KnowledgeBaseSource, LoadedKnowledgeBase, LoadPhase, LoadPhaseName, PlannerCopy, WorkerRequest, WorkerResponse } from "./protocol";
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 
 let planner: FoonPlanner | null = null;
+/** The files of the loaded knowledge base, kept for a copy of the planner on the page's thread. */
+let loadedFiles: Omit<PlannerCopy, "module"> | null = null;
+
+/**
+ * The largest knowledge base (FOON text, bytes) the page may load a copy of: its load blocks the page's thread
+ * (the starter, 0.7 MB, and FOON-111, 0.8 MB, take 30-60 ms there), and its memory is held twice.
+ */
+const MAX_COPY_BYTES = 2_000_000;
 const pendingPlans = new LatestOnly<{ id: number; request: PlanRequest }>();
 let planScheduled = false;
 
@@ -17,9 +25,22 @@ function reply(message: WorkerResponse): void {
   scope.postMessage(message);
 }
 
+/**
+ * The module next to the glue code, compiled as it streams in (from its bytes where the host sends another
+ * type than `application/wasm`). Compiled here rather than by the glue so that the page can be given it.
+ */
+async function compileModule(): Promise<WebAssembly.Module> {
+  const url = new URL("../../wasm/pkg/foon_wasm_bg.wasm", import.meta.url);
+  const response = await fetch(url);
+  if (!response.ok) throw new PlannerError({ code: "internal", message: `${url.href}: HTTP ${response.status}` });
+  if ((response.headers.get("content-type") ?? "").startsWith("application/wasm")) return WebAssembly.compileStreaming(response);
+  return WebAssembly.compile(await response.arrayBuffer());
+}
+
 // The module is fetched and compiled from the worker's start, while the page still decides what to load;
 // a failure here is reported by the load that awaits the same promise.
-initPlanner().catch(() => undefined);
+const wasmReady = compileModule().then((module) => initPlanner(module));
+wasmReady.catch(() => undefined);
 
 /** Knowledge-base downloads started by a prefetch, each taken by the next load of its URL. */
 const prefetched = new Map<string, Promise<Response>>();
@@ -71,7 +92,7 @@ async function phase<T>(phases: LoadPhase[], name: LoadPhaseName, work: () => Pr
 async function load(id: number, source: KnowledgeBaseSource, embeddingsUrl: string | undefined): Promise<void> {
   const phases: LoadPhase[] = [];
   const [, { name, files }, embeddings] = await Promise.all([
-    phase(phases, "wasm", initPlanner),
+    phase(phases, "wasm", () => wasmReady),
     phase(phases, "kb download", () => filesOf(source)),
     phase(phases, "embeddings download", () => embeddingsOf(embeddingsUrl)),
   ]);
@@ -79,6 +100,7 @@ async function load(id: number, source: KnowledgeBaseSource, embeddingsUrl: stri
   const next = await phase(phases, "kb load", () => FoonPlanner.load(files, embeddings));
   planner?.free();
   planner = next;
+  loadedFiles = { files, embeddings };
   const kb: LoadedKnowledgeBase = { name, stats: next.stats(), vocabulary: next.vocabulary(), warnings: next.warnings(), embeddings: embeddings !== undefined, phases };
   reply({ type: "loaded", id, kb });
 }
@@ -122,6 +144,12 @@ scope.onmessage = (event: MessageEvent<WorkerRequest>): void => {
         setTimeout(runLatestPlan, 0);
       }
       break;
+    case "copy": {
+      const module = compiledModule();
+      const size = loadedFiles?.files.reduce((sum, f) => sum + f.bytes.byteLength, 0) ?? Infinity;
+      reply({ type: "copied", id: message.id, copy: module === null || loadedFiles === null || size > MAX_COPY_BYTES ? null : { module, ...loadedFiles } });
+      break;
+    }
     case "export":
       try {
         if (planner === null) throw new PlannerError({ code: "not_initialised", message: "no knowledge base is loaded yet" });

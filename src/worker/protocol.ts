@@ -10,7 +10,9 @@ export type WorkerRequest =
   /** Fetch these now for a load to come (no answer): the page is still deciding which knowledge base to load. */
   | { type: "prefetch"; id: number; kbUrl: string; embeddingsUrl?: string }
   | { type: "plan"; id: number; request: PlanRequest }
-  | { type: "export"; id: number; request: PlanRequest; format: ExportFormat };
+  | { type: "export"; id: number; request: PlanRequest; format: ExportFormat }
+  /** The compiled module and the loaded knowledge base's files, for a copy of the planner on the page's thread. */
+  | { type: "copy"; id: number };
 
 export interface LoadedKnowledgeBase {
   /** What was loaded: the bundled URL, or the dropped files' names. */
@@ -37,10 +39,19 @@ export interface LoadPhase {
  */
 export type LoadPhaseName = "wasm" | "kb download" | "embeddings download" | "kb load";
 
+/** What the page needs to load the same planner itself: the module (compiled once, shared) and the same files. */
+export interface PlannerCopy {
+  module: WebAssembly.Module;
+  files: KnowledgeBaseFile[];
+  embeddings?: Uint8Array;
+}
+
 export type WorkerResponse =
   | { type: "loaded"; id: number; kb: LoadedKnowledgeBase }
   | { type: "planned"; id: number; plan: Plan; ms: number }
   | { type: "exported"; id: number; text: string }
+  /** `copy` null: nothing loaded yet, or a knowledge base too large to load on the page's thread. */
+  | { type: "copied"; id: number; copy: PlannerCopy | null }
   /** A plan request that a newer one replaced before it ran. */
   | { type: "superseded"; id: number }
   | { type: "error"; id: number; error: FoonErrorData };
