@@ -1,12 +1,13 @@
 // The planner as the page uses it: the worker loads each knowledge base and makes the first plan (the page
 // stays free while the module compiles and the files load), then, once the page is idle after that plan, a
 // copy of the planner on the page's own thread makes the re-plans. A re-plan through the worker waits for
-// the browser to render the edit's frame before the answer is handled (10-15 ms on a loaded 2-core VM);
+// the browser to render the edit's frame before the answer is handled (5-15 ms on a loaded 2-core VM);
 // planned here, the plan is drawn in the same task as the edit. The copy instantiates the worker's compiled
-// module (its code already compiled and optimised) and loads the same files; a knowledge base too large to
+// module (no second compile: the code is shared) and loads the same files; a knowledge base too large to
 // load here without blocking the page stays in the worker only.
 
-import type { FoonPlanner, PlannerError } from "../planner/index";
+import { toPlannerError } from "../planner/errors";
+import type { FoonPlanner } from "../planner/index";
 import type { ExportFormat, KnowledgeBaseFile, Plan, PlanRequest } from "../planner/types";
 import type { PlannerService, WorkerPlanner } from "../worker/client";
 import type { LoadedKnowledgeBase, PlannerCopy } from "../worker/protocol";
@@ -60,7 +61,8 @@ export class PagePlanner implements PlannerService {
         return { plan: local.plan(request), ms: performance.now() - started };
       } catch (e) {
         // a bad request is the caller's; anything else (a trap) leaves the copy's state unknown: the worker takes over
-        if ((e as PlannerError).code !== "internal") throw e;
+        const error = toPlannerError(e);
+        if (error.code !== "internal") throw error;
         this.local = null;
         this.failed = true;
       }

@@ -15,7 +15,7 @@ let loadedFiles: Omit<PlannerCopy, "module"> | null = null;
 
 /**
  * The largest knowledge base (FOON text, bytes) the page may load a copy of: its load blocks the page's thread
- * (the starter, 0.7 MB, and FOON-111, 0.8 MB, take 30-60 ms there), and its memory is held twice.
+ * (0.1-0.3 s for the 0.7 MB starter on a loaded 2-core VM), and its memory is held twice.
  */
 const MAX_COPY_BYTES = 2_000_000;
 const pendingPlans = new LatestOnly<{ id: number; request: PlanRequest }>();

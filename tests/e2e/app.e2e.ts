@@ -48,6 +48,24 @@ async function motionNodesOnScreen(page: Page): Promise<{ id: string; x: number;
 }
 
 describe("planner page", () => {
+  it("makes re-plans with the planner's copy on the page's thread once it is loaded: the worker's plans", async () => {
+    const { context, page, errors } = await fresh();
+    await page.goto(`${inject("baseUrl")}${SOUP}`);
+    await waitForPlan(page);
+    const fromWorker = await stepsText(page);
+    // loaded once the page is idle after the first plan (a failed copy would leave every plan to the worker)
+    await page.waitForFunction(() => performance.getEntriesByName("foon:page copy load").length > 0);
+    const state = page.locator(".ingredient-row .state").first();
+    await state.fill("diced");
+    await waitForPlan(page);
+    expect(await stepsText(page)).not.toEqual(fromWorker);
+    await state.fill("chopped");
+    await waitForPlan(page);
+    expect(await stepsText(page)).toEqual(fromWorker);
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
   it("draws the first plan as a still task tree before Cytoscape is fetched, then the interactive one with the same nodes", async () => {
     const { context, page, errors } = await fresh();
     const fetched: string[] = [];
