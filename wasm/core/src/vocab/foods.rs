@@ -584,6 +584,9 @@ mod tests {
         assert_eq!(form_of("cheddar").unwrap().state_when_none, None);
         assert_eq!(cooks_word("skim", "peeled"), Some("peel"));
         assert_eq!(cooks_word("skim", "skimmed"), None);
+        assert_eq!(cooks_word("flip", "partly cooked"), Some("cook and flip"));
+        assert_eq!(cooks_word("flip", "cooked"), Some("cook"));
+        assert_eq!(cooks_word("flip", "flipped"), None);
         assert!(!shows_cooking("salt") && !shows_cooking("olive oil"));
         assert!(shows_cooking("carrot") && shows_cooking("flour") && shows_cooking("rice"));
         // a garnish joins the served dish; its flag wins over its category's heat (chives, an allium)
