@@ -411,15 +411,16 @@ impl<'kb> Tree<'kb> {
     /// Whether a starting food `label` (made by no unit) leads on to the goal: a unit takes a node that is
     /// it or holds it (a bowl listing it) and gives out one that holds it too, or a food made there (the
     /// batter mixed in that bowl), and so on to the goal. FOON has dead ends: oil poured into a pot that
-    /// the next unit gives out without it.
-    pub fn leads_to_goal(&self, label: &str) -> bool {
+    /// the next unit gives out without it. `order`: the tree's order (`Tree::order`), computed once for
+    /// many labels.
+    pub fn leads_to_goal(&self, label: &str, order: &[TUnitId]) -> bool {
         let holds = |x: SlotId| {
             let node = &self.slots[x].node;
             node.label == label || node.listed().any(|item| item == label)
         };
         let mut reaches = vec![false; self.slots.len()];
         reaches[self.goal] = true;
-        for u in self.order().into_iter().rev() {
+        for &u in order.iter().rev() {
             let unit = &self.units[u];
             let made_here = |x: SlotId| {
                 let made = &self.slots[x];

@@ -98,11 +98,7 @@ pub(super) fn prepare_first<'kb>(
         let mut states = node.states.clone();
         states.insert(0, State::plain(p));
         tree.slots[x].node = Cow::Owned(ObjectNode::new(node.label.clone(), states));
-        let mut inputs = vec![(whole, true)];
-        if let Some(t) = ctx.index.utensil_for(&motion) {
-            inputs.push((utensil_slot(ctx.kb, tree, t), false));
-        }
-        tree.add_unit(inputs, &motion, vec![(x, true)], Origin::Grafted);
+        add_motion_unit(ctx, tree, whole, &motion, x);
     }
     (!past.is_empty()).then(|| format!("'{motion}' first, as a cook would: the tree starts it {p}"))
 }

@@ -121,6 +121,7 @@ pub(crate) fn modify<'kb>(
     enabled: bool,
     notes: &mut Vec<String>,
 ) -> (Vec<IngredientOutcome>, Vec<String>) {
+    let order = tree.order();
     let reference = ReferenceLabels {
         all: tree
             .ingredient_labels()
@@ -130,7 +131,7 @@ pub(crate) fn modify<'kb>(
         reaching: tree
             .ingredient_labels()
             .into_iter()
-            .filter(|l| tree.leads_to_goal(l))
+            .filter(|l| tree.leads_to_goal(l, &order))
             .map(SmolStr::new)
             .collect(),
     };

@@ -389,12 +389,23 @@ pub(super) fn add_state_unit<'kb>(
     motion: &str,
 ) -> SlotId {
     let made = tree.add_slot(Cow::Owned(made));
+    add_motion_unit(ctx, tree, from, motion, made);
+    made
+}
+
+/// A grafted unit taking the food `from` (with the utensil FOON uses for `motion`) to the node `to`.
+pub(super) fn add_motion_unit<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    from: SlotId,
+    motion: &str,
+    to: SlotId,
+) {
     let mut inputs = vec![(from, true)];
     if let Some(t) = ctx.index.utensil_for(motion) {
         inputs.push((utensil_slot(ctx.kb, tree, t), false));
     }
-    tree.add_unit(inputs, motion, vec![(made, true)], Origin::Grafted);
-    made
+    tree.add_unit(inputs, motion, vec![(to, true)], Origin::Grafted);
 }
 
 /// A slot for a utensil node: the tree's own when it is a starting item there, else a new one.
