@@ -2444,3 +2444,239 @@ fn flour_is_followed_into_the_dough_not_onto_the_board_it_is_kneaded_on() {
         p.units
     );
 }
+
+/// A brownie (class 5): flour and sugar mixed into a batter, baked, placed on a board and cut there. As
+/// in FOON, the brownie the cut takes is another node than the one placed on the board, which lists it.
+const BOARD_BROWNIE: &str = "//
+O\tbowl\t0
+S\tempty
+O\tflour\t1
+S\tpowder
+O\tsugar\t1
+S\tgranulated
+M\tmix\t<Assumed>
+O\tbatter\t1
+S\tcontains\t{flour,sugar}
+S\tin\t[bowl]
+//
+O\tbatter\t1
+S\tcontains\t{flour,sugar}
+S\tin\t[bowl]
+O\toven\t0
+S\ton
+M\tbake\t<Assumed>
+O\tbrownie\t1
+S\tbaked
+S\tcontains\t{flour,sugar}
+S\tin\t[baking tray]
+//
+O\tbrownie\t1
+S\tbaked
+S\tcontains\t{flour,sugar}
+S\tin\t[baking tray]
+O\tcutting board\t0
+S\tempty
+M\tpick-and-place\t<Assumed>
+O\tbrownie\t1
+S\tbaked
+S\tcontains\t{flour,sugar}
+S\ton\t[cutting board]
+O\tcutting board\t0
+S\tcontains\t{brownie}
+//
+O\tbrownie\t1
+S\tbaked
+S\ton\t[cutting board]
+O\tcutting board\t0
+S\tcontains\t{brownie}
+O\tknife\t0
+S\tclean
+M\tcut\t<Assumed>
+O\tbrownie\t1\t5
+S\tdivided
+S\tcontains\t{flour,sugar}
+S\ton\t[cutting board]
+//
+";
+
+/// Baking soda as bought, in a recipe of its own.
+const BAKING_SODA: &str = "//
+O\tbaking soda\t1
+S\tpowder
+S\tin\t[box]
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tbaking soda\t1
+S\tpowder
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn baking_soda_joins_the_batter_though_the_board_passes_the_brownie_to_the_cut() {
+    let ask = query(
+        "cake",
+        &[
+            ("flour", "powder"),
+            ("sugar", "granulated"),
+            ("baking soda", "powder"),
+        ],
+    );
+    let p = plan_of(
+        &[("brownie.txt", BOARD_BROWNIE), ("soda.txt", BAKING_SODA)],
+        &ExactMatch,
+        &ask,
+    );
+    let soda = line_motions(&p, "baking soda");
+    assert!(soda.contains(&"bake"), "{soda:?}\n{:#?}", p.units);
+    assert!(!soda.contains(&"cut"), "{soda:?}");
+    assert_eq!(kinds(&p), []);
+}
+
+/// An omelette (class 23): eggs cooked in a hot pan, cheese placed on them in the pan, then flipped
+/// onto a plate.
+const FLIPPED_OMELETTE: &str = "//
+O\tegg\t1
+S\tbeaten
+S\tin\t[frying pan]
+O\tstove\t0
+S\ton
+M\tcook\t<Assumed>
+O\tomelette\t1
+S\tcooked
+S\tcontains\t{egg}
+S\tin\t[frying pan]
+O\tfrying pan\t0
+S\tcontains\t{omelette}
+S\thot
+//
+O\tfrying pan\t0
+S\tcontains\t{omelette}
+S\thot
+O\tcheese\t1
+S\tsliced
+M\tplace\t<Assumed>
+O\tfrying pan\t0
+S\tcontains\t{cheese,omelette}
+S\thot
+//
+O\tfrying pan\t0
+S\tcontains\t{cheese,omelette}
+S\thot
+O\tplate\t0
+S\tempty
+M\tflip and place\t<Assumed>
+O\tomelette\t1\t23
+S\tcontains\t{cheese,egg}
+S\ton\t[plate]
+//
+";
+
+#[test]
+fn parsley_goes_onto_the_plated_omelette_not_into_its_hot_pan() {
+    let ask = query(
+        "omelette",
+        &[
+            ("egg", "beaten"),
+            ("cheese", "sliced"),
+            ("parsley", "chopped"),
+        ],
+    );
+    let p = plan_of(
+        &[("omelette.txt", FLIPPED_OMELETTE), ("other.txt", TOPPINGS)],
+        &ExactMatch,
+        &ask,
+    );
+    let parsley = line_motions(&p, "parsley");
+    assert_eq!(parsley.last(), Some(&"sprinkle"), "{:#?}", p.progress_lines);
+    assert!(!parsley.contains(&"place"), "{parsley:?}");
+}
+
+/// An omelette (class 23): butter cubed into a pan heated on the stove, eggs poured in and cooked.
+const BUTTER_PAN_OMELETTE: &str = "//
+O\tbutter\t1
+S\tcubed
+O\tfrying pan\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tfrying pan\t0
+S\tcontains\t{butter}
+//
+O\tfrying pan\t0
+S\tcontains\t{butter}
+O\tstove\t0
+S\ton
+M\theat\t<Assumed>
+O\tfrying pan\t0
+S\tcontains\t{butter}
+S\thot
+//
+O\tfrying pan\t0
+S\tcontains\t{butter}
+S\thot
+O\tegg\t1
+S\tbeaten
+M\tcook\t<Assumed>
+O\tomelette\t1\t23
+S\tcontains\t{butter,egg}
+S\tin\t[frying pan]
+//
+";
+
+#[test]
+fn butter_heated_in_the_pan_is_melted_not_cubed_and_hot() {
+    let p = plan_of(
+        &[("omelette.txt", BUTTER_PAN_OMELETTE)],
+        &ExactMatch,
+        &query("omelette", &[("butter", "cubed"), ("egg", "beaten")]),
+    );
+    let butter = line_states(&p, "butter");
+    assert!(butter.contains(&"melted"), "{butter:?}");
+    assert!(!butter.iter().any(|s| s.contains("hot")), "{butter:?}");
+    assert_eq!(butter.first(), Some(&"cubed"), "{butter:?}");
+}
+
+/// Bacon sliced raw, in a recipe of its own.
+const BACON: &str = "//
+O\tbacon\t1
+S\traw
+O\tknife\t0
+S\tclean
+M\tslice\t<Assumed>
+O\tbacon\t1
+S\tsliced
+S\traw
+//
+";
+
+#[test]
+fn bacon_is_cooked_before_it_joins_the_omelette_and_the_pan_does_not_reheat_it() {
+    let p = plan_of(
+        &[("omelette.txt", OIL_PAN_OMELETTE), ("bacon.txt", BACON)],
+        &ExactMatch,
+        &query(
+            "omelette",
+            &[
+                ("egg", "cracked"),
+                ("olive oil", "liquid"),
+                ("bacon", "sliced"),
+            ],
+        ),
+    );
+    let motions = line_motions(&p, "bacon");
+    let cooked = motions.iter().position(|m| *m == "cook");
+    assert!(
+        cooked.is_some_and(|i| i <= 1),
+        "{motions:?}\n{:#?}",
+        p.units
+    );
+    let reason = outcome(&p, "bacon").reason.as_deref().unwrap();
+    assert!(
+        reason.contains("to make it cooked (before it joins)"),
+        "{reason}"
+    );
+    let states = line_states(&p, "bacon");
+    assert!(!states.iter().any(|s| s.contains("hot")), "{states:?}");
+    assert_eq!(kinds(&p), []);
+}

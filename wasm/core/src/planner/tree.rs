@@ -129,16 +129,20 @@ fn value_key(unit: &TUnit, motion: usize, value: &[usize]) -> Vec<usize> {
 
 /// Whether what `node` holds goes on into `theirs`, made by a unit taking it: a food made from a food
 /// carries it (a batter baked into a cake, whose list may name the batter's ingredients, or nothing);
-/// a container or tool passes its contents on to a node that holds something and is the same vessel
-/// or lists all of them.
+/// a food passes on to a vessel listing it, and a container or tool its contents to a node that holds
+/// something and is the same vessel, lists all of them or is the food it holds (the board's brownie,
+/// cut).
 fn passes_on(node: &Slot, theirs: &Slot) -> bool {
     if !node.utensil && !theirs.utensil {
         return true;
     }
+    let food = !node.utensil;
     let (node, theirs) = (&node.node, &theirs.node);
+    let listed = |x: &str| theirs.contents().any(|c| c == x);
     theirs.holds_something()
         && (theirs.label == node.label
-            || node.contents().all(|x| theirs.contents().any(|c| c == x)))
+            || (food && listed(&node.label))
+            || node.contents().all(|x| x == theirs.label || listed(x)))
 }
 
 /// Keeps in a slot's lists of contents only the items `keep` accepts (see `edit_contents`). A node

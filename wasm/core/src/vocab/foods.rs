@@ -31,6 +31,8 @@ pub struct Form {
     pub state_when_none: Option<String>,
     /// A food of this form looks cooked once cooked in a vessel (not salt in a pot of rice).
     pub shows_cooking: bool,
+    /// The state a food of this form is in once heated, in place of its own ("melted" butter).
+    pub heated: Option<String>,
 }
 
 struct Forms {
@@ -61,7 +63,7 @@ fn parse(text: &str) -> Forms {
         ) else {
             continue; // a test names the row
         };
-        let Some(shows) = parts.next().map(str::trim) else {
+        let (Some(shows), Some(heated)) = (parts.next().map(str::trim), parts.next()) else {
             continue; // a test names the row
         };
         for c in split_list(categories) {
@@ -74,6 +76,9 @@ fn parse(text: &str) -> Forms {
             never_in: split_list(never).filter(|w| w != "-").collect(),
             state_when_none: Some(none.trim()).filter(|w| *w != "-").map(str::to_string),
             shows_cooking: shows != "no",
+            heated: Some(heated.trim())
+                .filter(|w| *w != "-")
+                .map(str::to_string),
         });
     }
     Forms { forms, of_category }
@@ -140,6 +145,9 @@ struct Care {
     top: bool,
     /// Joins the dish's mixture before it is cooked (milk beaten with the eggs), not the hot pan.
     mix: bool,
+    /// Cooked on its own before it joins, even a dish that is cooked after (bacon fried before it goes
+    /// into the eggs).
+    brown: bool,
     /// What a cook takes off it before it is used or cut (an onion's skin, a cherry's stone).
     trims: Vec<&'static Trim>,
 }
@@ -165,6 +173,7 @@ fn cares() -> &'static HashMap<String, Care> {
                     heat: flags.iter().any(|f| f == "heat"),
                     top: flags.iter().any(|f| f == "top"),
                     mix: flags.iter().any(|f| f == "mix"),
+                    brown: flags.iter().any(|f| f == "brown"),
                     trims: TRIMS
                         .iter()
                         .filter(|t| flags.iter().any(|f| f == t.flag))
@@ -219,9 +228,19 @@ pub fn shows_cooking(food: &str) -> bool {
     must_cook(food) || form_of(food).is_none_or(|f| f.shows_cooking)
 }
 
+/// The state `food` is in once heated, in place of its own (butter in a hot pan is "melted").
+pub fn state_once_heated(food: &str) -> Option<&'static str> {
+    form_of(food)?.heated.as_deref()
+}
+
 /// Whether `food` must be cooked before it is eaten (raw chicken, dry pasta, flour).
 pub fn must_cook(food: &str) -> bool {
     cooking(food) != Cooking::No
+}
+
+/// Whether `food` is cooked on its own before it joins, even a dish that is cooked after (bacon, sausage).
+pub fn cooked_first(food: &str) -> bool {
+    flagged(food, |c| c.brown)
 }
 
 /// Whether `food` joins a dish that is cooked before the cooking, not after it (stock, wine, a bay leaf,
@@ -556,7 +575,7 @@ mod tests {
     }
 
     #[test]
-    fn every_form_row_has_its_six_columns_and_every_care_flag_is_known() {
+    fn every_form_row_has_its_eight_columns_and_every_care_flag_is_known() {
         let rows = crate::vocab::taxonomy::data_lines(FORMS_TSV).count();
         assert_eq!(
             forms().forms.len(),
@@ -572,8 +591,10 @@ mod tests {
                 .flatten()
             {
                 assert!(
-                    matches!(flag.as_str(), "first" | "wet" | "heat" | "top" | "mix")
-                        || TRIMS.iter().any(|t| t.flag == flag),
+                    matches!(
+                        flag.as_str(),
+                        "first" | "wet" | "heat" | "top" | "mix" | "brown"
+                    ) || TRIMS.iter().any(|t| t.flag == flag),
                     "food_care.tsv: flag '{flag}' in {line}"
                 );
             }
@@ -588,6 +609,10 @@ mod tests {
         assert_eq!(cooks_word("flip", "cooked"), Some("cook"));
         assert_eq!(cooks_word("flip", "flipped"), None);
         assert!(!shows_cooking("salt") && !shows_cooking("olive oil"));
+        assert_eq!(state_once_heated("butter"), Some("melted"));
+        assert_eq!(state_once_heated("olive oil"), None);
+        assert!(cooked_first("bacon") && cooked_first("italian sausage"));
+        assert!(!cooked_first("chicken breast") && !cooked_first("ground beef"));
         assert!(shows_cooking("carrot") && shows_cooking("flour") && shows_cooking("rice"));
         // a garnish joins the served dish; its flag wins over its category's heat (chives, an allium)
         assert!(joins_served("cheddar") && joins_served("feta") && joins_served("chive"));

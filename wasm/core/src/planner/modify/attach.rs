@@ -236,7 +236,7 @@ fn timing(tree: &Tree, cooked: &[bool], u: TUnitId, o: &str, food: &str) -> (boo
 }
 
 /// Whether unit `u` cooks, or what it makes is in a hot pan.
-fn heats(tree: &Tree, u: TUnitId) -> bool {
+pub(super) fn heats(tree: &Tree, u: TUnitId) -> bool {
     let unit = &tree.units[u];
     foods::cooks(&unit.motion)
         || unit

@@ -356,11 +356,14 @@ fn join_branch<'kb>(
         return Err(format!("no unit of the tree can take '{o}'"));
     };
     let cooked_there = cooks_what_joins(tree, &cooked, m, food);
-    let m = if foods::joins_served(food) && cooked_there {
+    // a garnish goes onto the served dish, not into the hot pan before it is plated
+    let m = if foods::joins_served(food) && (cooked_there || heats(tree, m)) {
         top_dish(tree, food, o, last)
     } else {
         if !cooked_there {
-            last = cook_alone(ctx, tree, o, last, how);
+            last = cook_alone(ctx, tree, (o, "the dish does not cook it"), last, how);
+        } else if foods::cooked_first(food) {
+            last = cook_alone(ctx, tree, (o, "before it joins"), last, how);
         }
         tree.units[m].inputs.push((last, true));
         tree.add_contents_downstream(m, o, &order, &carries);

@@ -338,11 +338,12 @@ pub(super) fn body_cooked(tree: &Tree) -> bool {
 }
 
 /// A food that must be cooked on its own (`foods::Cooking::Alone`) and is still raw at `last`, cooked
-/// before it joins a dish that does not cook it. Returns the slot the branch now ends in.
+/// before it joins a dish that does not cook it, or that it must not join raw (`why` says which).
+/// Returns the slot the branch now ends in.
 pub(super) fn cook_alone<'kb>(
     ctx: &Context<'kb>,
     tree: &mut Tree<'kb>,
-    o: &str,
+    (o, why): (&str, &str),
     last: SlotId,
     how: &mut String,
 ) -> SlotId {
@@ -358,9 +359,6 @@ pub(super) fn cook_alone<'kb>(
         .motion_for("cooked")
         .unwrap_or_else(|| "cook".into());
     let made = ObjectNode::new(o, vec![State::plain("cooked")]);
-    let _ = write!(
-        how,
-        ", '{motion}' to make it cooked (the dish does not cook it)"
-    );
+    let _ = write!(how, ", '{motion}' to make it cooked ({why})");
     add_state_unit(ctx, tree, last, made, &motion)
 }

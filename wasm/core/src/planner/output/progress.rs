@@ -148,12 +148,28 @@ fn line_from<'t>(
     if !foods::shows_cooking(food) {
         unseen_cooking(&mut states);
     }
+    if let Some(heated) = foods::state_once_heated(food) {
+        melted(&mut states, heated);
+    }
     carry_states(&mut states);
     ProgressLine {
         ingredient: label.into(),
         state: states,
         motion: motions,
         end_product: end_product.into(),
+    }
+}
+
+/// The food's own states once it is heated (butter "cubed, hot" in the pan): `heated`, its form's state
+/// then ("melted"); what it went into ("in omelette") is left as it is.
+fn melted(states: &mut [ProgressState], heated: &str) {
+    let is_heat = |w: &str| category(w) == Category::Cooked && kind(w) == Some("heated");
+    for s in states
+        .iter_mut()
+        .skip_while(|s| !s.physical_state.split(", ").any(is_heat))
+        .filter(|s| !s.physical_state.starts_with("in "))
+    {
+        s.physical_state = heated.into();
     }
 }
 
@@ -439,11 +455,20 @@ impl<'t> Walker<'_, 't> {
                 slot.utensil != food && names_in_a_list(&slot.node, label)
             })
         };
+        // not one that was there already, as a node or on the surface it is still on (the corn left on
+        // the board its kernels were shaved on)
         let fresh = || {
             outputs.iter().find(|o| {
                 let n = &tree.slots[o.0].node;
+                let on = n.states.iter().find(|s| s.name == "on").and(n.container());
+                let stayed = |before: &ObjectNode| {
+                    on == Some(before.label.as_str()) && before.contents().any(|c| c == n.label)
+                };
                 !tree.slots[o.0].utensil
-                    && !inputs.iter().any(|i| tree.slots[i.0].node.label == n.label)
+                    && !inputs.iter().any(|i| {
+                        let before = &tree.slots[i.0].node;
+                        before.label == n.label || stayed(before)
+                    })
             })
         };
         // a food that took more in (the sauce stirred into the fried rice)
@@ -628,9 +653,16 @@ pub(super) fn names_in_a_list(n: &ObjectNode, label: &str) -> bool {
 /// A food's state `before` in vessel `v`, with the cooking the vessel says its contents had ("halved"
 /// in a pot "cooked": "halved, cooked").
 pub(super) fn with_vessel_cooking(before: &SmolStr, v: &ObjectNode) -> SmolStr {
-    let cooked = v
-        .physical_states()
-        .find(|s| category(s) == Category::Cooked && !before.split(", ").any(|w| w == *s));
+    // a food cooked before it went in is not made "partly cooked" or "hot" by the pot (rice toasted
+    // first still is)
+    let words = || before.split(", ");
+    let heated_before = words().any(|w| category(w) == Category::Cooked);
+    let adds = |s: &str| {
+        category(s) == Category::Cooked
+            && !words().any(|w| w == s || w == "cooked")
+            && !(heated_before && kind(s) == Some("heated"))
+    };
+    let cooked = v.physical_states().find(|s| adds(s));
     let Some(cooked) = cooked else {
         return before.clone();
     };
