@@ -2632,8 +2632,11 @@ fn butter_heated_in_the_pan_is_melted_not_cubed_and_hot() {
         &query("omelette", &[("butter", "cubed"), ("egg", "beaten")]),
     );
     let butter = line_states(&p, "butter");
-    assert!(butter.contains(&"melted"), "{butter:?}");
-    assert!(!butter.iter().any(|s| s.contains("hot")), "{butter:?}");
+    assert!(butter.contains(&"melted, hot"), "{butter:?}");
+    assert!(
+        !butter.iter().any(|s| s.contains("cubed, hot")),
+        "{butter:?}"
+    );
     assert_eq!(butter.first(), Some(&"cubed"), "{butter:?}");
 }
 
@@ -2679,4 +2682,148 @@ fn bacon_is_cooked_before_it_joins_the_omelette_and_the_pan_does_not_reheat_it()
     let states = line_states(&p, "bacon");
     assert!(!states.iter().any(|s| s.contains("hot")), "{states:?}");
     assert_eq!(kinds(&p), []);
+}
+
+/// Toast (class 0): slices soaked in milk in the pan, then toasted there by FOON's "flip and stack".
+const PAN_TOAST: &str = "//
+O\tbread\t1
+S\tsliced
+S\ton\t[cooking pan]
+O\tmilk\t1
+S\tliquid
+M\tpour\t<Assumed>
+O\tbread\t1
+S\tsliced
+S\tcontains\t{milk}
+S\ton\t[cooking pan]
+//
+O\tbread\t1
+S\tsliced
+S\tcontains\t{milk}
+S\ton\t[cooking pan]
+O\tstove\t0
+S\ton
+M\tflip and stack\t<Assumed>
+O\tbread\t1
+S\tsliced
+S\ttoasted
+S\tcontains\t{milk}
+S\ton\t[cooking pan]
+//
+O\tbread\t1
+S\tsliced
+S\ttoasted
+S\tcontains\t{milk}
+S\ton\t[cooking pan]
+O\tplate\t0
+S\tempty
+M\tpick-and-place\t<Assumed>
+O\tbread toast\t1\t0
+S\tcontains\t{bread,milk}
+S\ton\t[plate]
+//
+O\tegg\t1
+S\tuncracked
+M\tcrack\t<Assumed>
+O\tegg\t1
+S\tcracked
+//
+";
+
+#[test]
+fn an_egg_soaks_the_slices_that_the_pan_toasts_not_cooked_apart_and_poured_on() {
+    let p = plan_of(
+        &[("toast.txt", PAN_TOAST), ("extract.txt", EXTRACT)],
+        &ExactMatch,
+        &query(
+            "bread",
+            &[
+                ("bread", "sliced"),
+                ("milk", "liquid"),
+                ("egg", "cracked"),
+                ("vanilla extract", "liquid"),
+            ],
+        ),
+    );
+    let egg = line_motions(&p, "egg");
+    assert!(egg.contains(&"toast and stack"), "{egg:?}\n{:#?}", p.units);
+    assert!(!egg.contains(&"cook"), "{egg:?}");
+    let vanilla = line_motions(&p, "vanilla extract");
+    assert!(vanilla.contains(&"toast and stack"), "{vanilla:?}");
+    assert_eq!(kinds(&p), []);
+}
+
+/// Vanilla extract as bought.
+const EXTRACT: &str = "//
+O\tvanilla extract\t1
+S\tliquid
+S\tin\t[bottle]
+O\tspoon\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tvanilla extract\t1
+S\tliquid
+S\tin\t[spoon]
+//
+";
+
+/// Elsewhere in FOON: canned kidney beans poured into a bowl, black beans blended, a bar of chocolate
+/// chopped.
+const BEANS_AND_CHOCOLATE: &str = "//
+O\tkidney bean\t1
+S\tcooked
+S\tin\t[can]
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tkidney bean\t1
+S\tcooked
+S\tin\t[bowl]
+//
+O\tblack bean\t1
+S\tcooked
+O\tblender\t0
+S\ton
+M\tblend\t<Assumed>
+O\tblack bean\t1
+S\tjuice
+//
+O\tchocolate\t1
+S\tbar
+O\tknife\t0
+S\tclean
+M\tchop\t<Assumed>
+O\tchocolate\t1
+S\tchopped
+//
+";
+
+#[test]
+fn beans_asked_juice_are_not_blended_into_a_salad() {
+    let p = plan_of(
+        &[
+            ("salad.txt", LETTUCE_SALAD),
+            ("other.txt", BEANS_AND_CHOCOLATE),
+        ],
+        &ExactMatch,
+        &query("salad", &[("lettuce", "chopped"), ("kidney bean", "juice")]),
+    );
+    let beans = line_motions(&p, "kidney bean");
+    assert!(!beans.contains(&"blend"), "{beans:?}\n{:#?}", p.units);
+}
+
+#[test]
+fn chocolate_asked_solid_is_chopped_before_it_joins_the_batter() {
+    let p = plan_of(
+        &[("cake.txt", SYRUP_CAKE), ("other.txt", BEANS_AND_CHOCOLATE)],
+        &ExactMatch,
+        &query("cake", &[("egg", "cracked"), ("chocolate", "solid")]),
+    );
+    let chocolate = line_motions(&p, "chocolate");
+    assert_eq!(
+        chocolate.first(),
+        Some(&"chop"),
+        "{chocolate:?}\n{:#?}",
+        p.units
+    );
 }

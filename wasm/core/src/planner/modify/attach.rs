@@ -89,12 +89,30 @@ pub(super) fn cooked_later(tree: &Tree, order: &[TUnitId], food: &str) -> Vec<bo
     // walked backwards, a unit's outputs are settled before its inputs
     for &v in order.iter().rev() {
         let unit = &tree.units[v];
-        let cooks = foods::cooks_food(food, &unit.motion);
+        let cooks = unit_cooks(tree, v, food);
         for &(s, _) in &unit.inputs {
             cooked[s] |= cooks || unit.outputs.iter().any(|&(x, _)| x != s && cooked[x]);
         }
     }
     cooked
+}
+
+/// Whether unit `u` cooks `food`: one of its `cook_words` does (`foods::cooks_food`).
+fn unit_cooks(tree: &Tree, u: TUnitId, food: &str) -> bool {
+    cook_words(tree, u).any(|m| foods::cooks_food(food, m))
+}
+
+/// Unit `u`'s motion, and the cook's word for it where it gives a food a state (`foods::cooks_word`:
+/// FOON's "flip and stack" that leaves the slices "toasted" toasts them, and the egg they were dipped in).
+pub(super) fn cook_words<'t>(tree: &'t Tree, u: TUnitId) -> impl Iterator<Item = &'t str> {
+    let unit = &tree.units[u];
+    let renamed = unit.outputs.iter().flat_map(move |x| {
+        tree.slots[x.0]
+            .node
+            .physical_states()
+            .filter_map(|s| foods::cooks_word(&unit.motion, s))
+    });
+    std::iter::once(unit.motion.as_ref()).chain(renamed)
 }
 
 /// Whether `food` joining unit `u` is cooked there or later (`cooked`: `cooked_later` for it): what the
@@ -119,7 +137,7 @@ pub(super) fn cooks_what_joins(tree: &Tree, cooked: &[bool], u: TUnitId, food: &
         })
         .collect();
     let cooked_later = |x: &SlotId| cooked[*x];
-    foods::cooks_food(food, &unit.motion)
+    unit_cooks(tree, u, food)
         || if filled.is_empty() {
             unit.outputs.iter().map(|o| o.0).any(|x| cooked_later(&x))
         } else {

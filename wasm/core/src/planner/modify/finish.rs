@@ -334,7 +334,7 @@ pub(super) fn cooked_somewhere(tree: &Tree, food: &str) -> bool {
 /// boiled before they join a raw dough).
 pub(super) fn body_cooked(tree: &Tree) -> bool {
     tree.alive_units()
-        .any(|(_, u)| u.origin != Origin::Grafted && foods::cooks(&u.motion))
+        .any(|(v, u)| u.origin != Origin::Grafted && cook_words(tree, v).any(foods::cooks))
 }
 
 /// A food that must be cooked on its own (`foods::Cooking::Alone`) and is still raw at `last`, cooked

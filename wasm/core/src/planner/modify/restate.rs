@@ -304,6 +304,21 @@ pub(super) fn past_handling(
 /// some recipe uses it on a food of the form of `o`, else the one recipes use most on foods of that form
 /// (butter is softened as FOON softens butter, not blended as it softens vegetables).
 pub(super) fn state_motion(ctx: &Context, o: &str, eq: &str, s: &str) -> Result<String, String> {
+    let motion = motion_to_state(ctx, o, eq, s)?;
+    // a state its form is never in names only what it is sold as (beans "juice": canned in liquid); a
+    // motion its form cannot take is the caller's to explain
+    let food = known_as(ctx, o, eq);
+    let never = foods::form_of(food).is_some_and(|f| f.never_in.iter().any(|w| w == s));
+    if never && foods::takes(food, &motion) {
+        return Err(format!(
+            "a food like '{o}' is never '{s}'; kept the tree's state"
+        ));
+    }
+    Ok(motion)
+}
+
+/// `state_motion` before the food's form is asked whether it is ever in `s`.
+fn motion_to_state(ctx: &Context, o: &str, eq: &str, s: &str) -> Result<String, String> {
     let model = &ctx.index.transitions;
     let food = known_as(ctx, o, eq);
     let usual = ctx.index.motion_for(s);

@@ -161,7 +161,7 @@ fn line_from<'t>(
 }
 
 /// The food's own states once it is heated (butter "cubed, hot" in the pan): `heated`, its form's state
-/// then ("melted"); what it went into ("in omelette") is left as it is.
+/// then, beside the heat that made it ("melted, hot"); what it went into ("in omelette") is left as it is.
 fn melted(states: &mut [ProgressState], heated: &str) {
     let is_heat = |w: &str| category(w) == Category::Cooked && kind(w) == Some("heated");
     for s in states
@@ -169,7 +169,9 @@ fn melted(states: &mut [ProgressState], heated: &str) {
         .skip_while(|s| !s.physical_state.split(", ").any(is_heat))
         .filter(|s| !s.physical_state.starts_with("in "))
     {
-        s.physical_state = heated.into();
+        let heat = s.physical_state.split(", ").filter(|w| is_heat(w));
+        let words: Vec<&str> = std::iter::once(heated).chain(heat).collect();
+        s.physical_state = words.join(", ").into();
     }
 }
 
