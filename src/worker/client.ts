@@ -179,7 +179,7 @@ export class WorkerPlanner implements PlannerService {
   private async load(source: KnowledgeBaseSource, embeddingsUrl: string | undefined): Promise<LoadedKnowledgeBase> {
     const response = await this.send({ type: "load", id: this.nextId++, source, embeddingsUrl });
     if (response.type !== "loaded") throw errorOf(response);
-    measurePhases(response.kb.phases);
+    measurePhases(response.kb.phases, response.kb.cached);
     return response.kb;
   }
 
@@ -224,10 +224,10 @@ export class WorkerPlanner implements PlannerService {
   }
 }
 
-/** The worker's load phases on the page's Performance timeline, as `foon:<phase>` measures. */
-function measurePhases(phases: readonly LoadPhase[]): void {
+/** The worker's load phases on the page's Performance timeline, as `foon:<phase>` measures (`detail.cached`: from the cache). */
+function measurePhases(phases: readonly LoadPhase[], cached: boolean): void {
   for (const p of phases) {
-    performance.measure(`foon:${p.name}`, { start: p.start - performance.timeOrigin, end: p.end - performance.timeOrigin });
+    performance.measure(`foon:${p.name}`, { start: p.start - performance.timeOrigin, end: p.end - performance.timeOrigin, detail: { cached } });
   }
 }
 

@@ -4,14 +4,18 @@
 
 import { compiledModule, FoonPlanner, initPlanner, PlannerError, toPlannerError } from "../planner/index";
 import type { PlanRequest } from "../planner/types";
+import { buildDigest, cacheKey, KbCache, loadThroughCache } from "./kb-cache";
 import { LatestOnly } from "./latest";
 import type { KnowledgeBaseSource, LoadedKnowledgeBase, LoadPhase, LoadPhaseName, PlannerCopy, WorkerRequest, WorkerResponse } from "./protocol";
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 
 let planner: FoonPlanner | null = null;
-/** The files of the loaded knowledge base, kept for a copy of the planner on the page's thread. */
-let loadedFiles: Omit<PlannerCopy, "module"> | null = null;
+/**
+ * The loaded knowledge base's files and its snapshot (made and cached once the first plan is out), for a copy
+ * of the planner on the page's thread.
+ */
+let loaded: (Omit<PlannerCopy, "module" | "snapshot"> & { snapshot: () => Promise<Uint8Array | null> }) | null = null;
 
 /**
  * The largest knowledge base (FOON text, bytes) the page may load a copy of: its load blocks the page's thread
@@ -27,20 +31,29 @@ function reply(message: WorkerResponse): void {
 
 /**
  * The module next to the glue code, compiled as it streams in (from its bytes where the host sends another
- * type than `application/wasm`). Compiled here rather than by the glue so that the page can be given it.
+ * type than `application/wasm`), and its bytes' digest, which keys the knowledge-base cache to this build.
+ * Compiled here rather than by the glue so that the page can be given it.
  */
-async function compileModule(): Promise<WebAssembly.Module> {
+async function compileModule(): Promise<{ module: WebAssembly.Module; build: string | null }> {
   const url = new URL("../../wasm/pkg/foon_wasm_bg.wasm", import.meta.url);
   const response = await fetch(url);
   if (!response.ok) throw new PlannerError({ code: "internal", message: `${url.href}: HTTP ${response.status}` });
-  if ((response.headers.get("content-type") ?? "").startsWith("application/wasm")) return WebAssembly.compileStreaming(response);
-  return WebAssembly.compile(await response.arrayBuffer());
+  if ((response.headers.get("content-type") ?? "").startsWith("application/wasm")) {
+    const [module, build] = await Promise.all([WebAssembly.compileStreaming(response.clone()), response.arrayBuffer().then(buildDigest)]);
+    return { module, build };
+  }
+  const bytes = await response.arrayBuffer();
+  return { module: await WebAssembly.compile(bytes), build: await buildDigest(bytes) };
 }
 
 // The module is fetched and compiled from the worker's start, while the page still decides what to load;
 // a failure here is reported by the load that awaits the same promise.
-const wasmReady = compileModule().then((module) => initPlanner(module));
+const wasmReady = compileModule().then(async ({ module, build }) => {
+  await initPlanner(module);
+  return build;
+});
 wasmReady.catch(() => undefined);
+const cacheReady = KbCache.open();
 
 /** Knowledge-base downloads started by a prefetch, each taken by the next load of its URL. */
 const prefetched = new Map<string, Promise<Response>>();
@@ -91,17 +104,21 @@ async function phase<T>(phases: LoadPhase[], name: LoadPhaseName, work: () => Pr
 
 async function load(id: number, source: KnowledgeBaseSource, embeddingsUrl: string | undefined): Promise<void> {
   const phases: LoadPhase[] = [];
-  const [, { name, files }, embeddings] = await Promise.all([
+  const [build, { name, files }, embeddings] = await Promise.all([
     phase(phases, "wasm", () => wasmReady),
     phase(phases, "kb download", () => filesOf(source)),
     phase(phases, "embeddings download", () => embeddingsOf(embeddingsUrl)),
   ]);
   // A failed load keeps the previous knowledge base: the user sees the error and can fix the file.
-  const next = await phase(phases, "kb load", () => FoonPlanner.load(files, embeddings));
+  const next = await phase(phases, "kb load", async () => {
+    const key = build === null ? null : await cacheKey(build, files);
+    return loadThroughCache(await cacheReady, key, files, embeddings);
+  });
   planner?.free();
-  planner = next;
-  loadedFiles = { files, embeddings };
-  const kb: LoadedKnowledgeBase = { name, stats: next.stats(), vocabulary: next.vocabulary(), warnings: next.warnings(), embeddings: embeddings !== undefined, phases };
+  planner = next.planner;
+  let snapshot: Promise<Uint8Array | null> | null = null;
+  loaded = { files, embeddings, snapshot: () => (snapshot ??= next.save().catch(() => null)) };
+  const kb: LoadedKnowledgeBase = { name, stats: planner.stats(), vocabulary: planner.vocabulary(), warnings: planner.warnings(), embeddings: embeddings !== undefined, cached: next.cached, phases };
   reply({ type: "loaded", id, kb });
 }
 
@@ -114,9 +131,20 @@ function runLatestPlan(): void {
     const started = performance.now();
     const plan = planner.plan(job.request);
     reply({ type: "planned", id: job.id, plan, ms: performance.now() - started });
+    // the knowledge base is cached once its first plan is out, not before
+    void loaded?.snapshot();
   } catch (e) {
     reply({ type: "error", id: job.id, error: toPlannerError(e).toJSON() });
   }
+}
+
+/** What the page needs for its copy of the planner; null when nothing is loaded or it is too large to load there. */
+async function copy(): Promise<PlannerCopy | null> {
+  const module = compiledModule();
+  const current = loaded;
+  const size = current?.files.reduce((sum, f) => sum + f.bytes.byteLength, 0) ?? Infinity;
+  if (module === null || current === null || size > MAX_COPY_BYTES) return null;
+  return { module, files: current.files, embeddings: current.embeddings, snapshot: await current.snapshot() };
 }
 
 scope.onmessage = (event: MessageEvent<WorkerRequest>): void => {
@@ -144,12 +172,9 @@ scope.onmessage = (event: MessageEvent<WorkerRequest>): void => {
         setTimeout(runLatestPlan, 0);
       }
       break;
-    case "copy": {
-      const module = compiledModule();
-      const size = loadedFiles?.files.reduce((sum, f) => sum + f.bytes.byteLength, 0) ?? Infinity;
-      reply({ type: "copied", id: message.id, copy: module === null || loadedFiles === null || size > MAX_COPY_BYTES ? null : { module, ...loadedFiles } });
+    case "copy":
+      void copy().then((copy) => reply({ type: "copied", id: message.id, copy }));
       break;
-    }
     case "export":
       try {
         if (planner === null) throw new PlannerError({ code: "not_initialised", message: "no knowledge base is loaded yet" });

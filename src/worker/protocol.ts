@@ -22,6 +22,8 @@ export interface LoadedKnowledgeBase {
   warnings: FoonErrorData[];
   /** Whether the embedding table was loaded (else substitutes are found by exact names only). */
   embeddings: boolean;
+  /** Whether the parsed knowledge base came from the browser's cache (`kb-cache.ts`) rather than its files. */
+  cached: boolean;
   /** How long each phase of this load took, on the wall clock (the worker and the page share it). */
   phases: LoadPhase[];
 }
@@ -35,15 +37,20 @@ export interface LoadPhase {
 
 /**
  * `wasm`: the module fetched and compiled as it streams in (once per worker); `kb download` and
- * `embeddings download`: the files fetched (the table once per URL); `kb load`: parse, merge, index.
+ * `embeddings download`: the files fetched (the table once per URL); `kb load`: parse and merge (or read the
+ * cached snapshot), index.
  */
 export type LoadPhaseName = "wasm" | "kb download" | "embeddings download" | "kb load";
 
-/** What the page needs to load the same planner itself: the module (compiled once, shared) and the same files. */
+/**
+ * What the page needs to load the same planner itself: the module (compiled once, shared), the knowledge base's
+ * snapshot (null: none could be made; then the same files are loaded).
+ */
 export interface PlannerCopy {
   module: WebAssembly.Module;
   files: KnowledgeBaseFile[];
   embeddings?: Uint8Array;
+  snapshot: Uint8Array | null;
 }
 
 export type WorkerResponse =

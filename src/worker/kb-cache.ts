@@ -1,0 +1,125 @@
+// The parsed and merged knowledge base kept in IndexedDB between visits: the planner's snapshot of it
+// (`FoonPlanner.snapshot()`), keyed by a SHA-256 of the planner module's bytes and of the knowledge base's
+// files, so that a second visit skips parsing and merging. Another build or other files give another key;
+// a damaged entry, or one the module cannot read, is parsed again and replaced. Where there is no
+// IndexedDB (private browsing in some browsers) or no WebCrypto (a page not served over HTTPS), nothing is
+// cached and nothing is said: the files are parsed as before.
+
+import { FoonPlanner } from "../planner/index";
+import type { KnowledgeBaseFile } from "../planner/types";
+import { done, request } from "../eval/storage";
+
+export const CACHE_DB_NAME = "foon-planner-kb-cache";
+const STORE = "snapshots";
+/** Snapshots kept (the bundled knowledge base and a user's own, say): the one stored longest ago goes first. */
+export const MAX_ENTRIES = 3;
+
+interface Entry {
+  snapshot: Uint8Array;
+  storedAt: number;
+}
+
+export class KbCache {
+  private constructor(private readonly db: IDBDatabase) {}
+
+  /** The cache, or null where IndexedDB is missing or refuses (then the planner parses as before). */
+  static async open(factory: IDBFactory | undefined = globalThis.indexedDB): Promise<KbCache | null> {
+    if (factory === undefined) return null;
+    try {
+      const req = factory.open(CACHE_DB_NAME, 1);
+      req.onupgradeneeded = () => req.result.createObjectStore(STORE);
+      const db = await request(req);
+      db.onversionchange = () => db.close();
+      return new KbCache(db);
+    } catch {
+      return null;
+    }
+  }
+
+  /** The snapshot stored under `key`, or null. */
+  async get(key: string): Promise<Uint8Array | null> {
+    try {
+      const entry = (await request(this.db.transaction(STORE).objectStore(STORE).get(key))) as Entry | undefined;
+      return entry?.snapshot instanceof Uint8Array ? entry.snapshot : null;
+    } catch {
+      return null;
+    }
+  }
+
+  /** Stores a snapshot under `key` and drops the ones stored longest ago beyond `MAX_ENTRIES`. */
+  async put(key: string, snapshot: Uint8Array, now = Date.now()): Promise<void> {
+    try {
+      const tx = this.db.transaction(STORE, "readwrite");
+      const store = tx.objectStore(STORE);
+      store.put({ snapshot, storedAt: now } satisfies Entry, key);
+      const keys = (await request(store.getAllKeys())) as string[];
+      const entries = (await request(store.getAll())) as Entry[];
+      const newestFirst = keys.map((k, i) => ({ k, storedAt: entries[i]?.storedAt ?? 0 })).sort((a, b) => b.storedAt - a.storedAt);
+      for (const { k } of newestFirst.slice(MAX_ENTRIES)) store.delete(k);
+      await done(tx);
+    } catch {
+      // a full disk or a closed database: the next visit parses again
+    }
+  }
+}
+
+/**
+ * The cache key of `files` loaded by the planner module `build` (its bytes' SHA-256, hex): a SHA-256 over the
+ * build and each file's name and bytes. Null where WebCrypto is missing.
+ */
+export async function cacheKey(build: string, files: readonly KnowledgeBaseFile[]): Promise<string | null> {
+  const subtle = globalThis.crypto?.subtle;
+  if (subtle === undefined) return null;
+  const encoder = new TextEncoder();
+  const parts: Uint8Array[] = [encoder.encode(`${build}\n`)];
+  for (const f of files) parts.push(encoder.encode(`${f.name}\n${f.bytes.byteLength}\n`), f.bytes);
+  const all = new Uint8Array(parts.reduce((n, p) => n + p.byteLength, 0));
+  let at = 0;
+  for (const p of parts) {
+    all.set(p, at);
+    at += p.byteLength;
+  }
+  return hex(await subtle.digest("SHA-256", all));
+}
+
+/** The SHA-256 of a planner module's bytes, hex (the build part of the cache key); null without WebCrypto. */
+export async function buildDigest(moduleBytes: BufferSource): Promise<string | null> {
+  const subtle = globalThis.crypto?.subtle;
+  return subtle === undefined ? null : hex(await subtle.digest("SHA-256", moduleBytes));
+}
+
+const hex = (digest: ArrayBuffer): string => [...new Uint8Array(digest)].map((b) => b.toString(16).padStart(2, "0")).join("");
+
+/** A planner loaded through the cache: whether it came from it, and its snapshot when one is at hand. */
+export interface CachedLoad {
+  planner: FoonPlanner;
+  cached: boolean;
+  /** The snapshot read from the cache; null when the files were parsed (`save` makes and stores one). */
+  snapshot: Uint8Array | null;
+  /** Stores the snapshot of a parsed knowledge base (nothing when it came from the cache); resolves with it. */
+  save: () => Promise<Uint8Array | null>;
+}
+
+/**
+ * Loads the planner of `files`: from the snapshot cached under `key` when there is one the module reads, else
+ * by parsing and merging the files (`save` then stores its snapshot: call it once the first plan is out).
+ */
+export async function loadThroughCache(
+  cache: KbCache | null,
+  key: string | null,
+  files: readonly KnowledgeBaseFile[],
+  embeddings: Uint8Array | undefined,
+): Promise<CachedLoad> {
+  const stored = cache !== null && key !== null ? await cache.get(key) : null;
+  const fromCache = stored === null ? null : FoonPlanner.fromSnapshot(stored, embeddings);
+  if (fromCache !== null) {
+    return { planner: fromCache, cached: true, snapshot: stored, save: () => Promise.resolve(stored) };
+  }
+  const planner = FoonPlanner.load(files, embeddings);
+  const save = async (): Promise<Uint8Array | null> => {
+    const snapshot = planner.snapshot();
+    if (cache !== null && key !== null) await cache.put(key, snapshot);
+    return snapshot;
+  };
+  return { planner, cached: false, snapshot: null, save };
+}
