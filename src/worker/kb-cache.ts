@@ -1,9 +1,11 @@
-// The parsed and merged knowledge base kept in IndexedDB between visits: the planner's snapshot of it
-// (`FoonPlanner.snapshot()`), keyed by a SHA-256 of the planner module's bytes and of the knowledge base's
-// files, so that a second visit skips parsing and merging. Another build or other files give another key;
-// a damaged entry, or one the module cannot read, is parsed again and replaced. Where there is no
-// IndexedDB (private browsing in some browsers) or no WebCrypto (a page not served over HTTPS), nothing is
-// cached and nothing is said: the files are parsed as before.
+// Loading a knowledge base without parsing and merging its files, from the planner's snapshot of it
+// (`FoonPlanner.snapshot()`): for the bundled knowledge base, the snapshot `npm run build:kb` ships beside
+// its text; for any other, the snapshot kept in IndexedDB after its first load, keyed by a SHA-256 of the
+// planner module's bytes and of the files, so that a second visit skips parsing and merging. Another build
+// or other files give another key; a damaged snapshot, or one the module cannot read, is not used (the files
+// are parsed, and the cache entry replaced). Where there is no IndexedDB (private browsing in some browsers)
+// or no WebCrypto (a page not served over HTTPS), nothing is cached and nothing is said: the files are
+// parsed as before.
 
 import { FoonPlanner } from "../planner/index";
 import type { KnowledgeBaseFile } from "../planner/types";
@@ -90,13 +92,33 @@ export async function buildDigest(moduleBytes: BufferSource): Promise<string | n
 
 const hex = (digest: ArrayBuffer): string => [...new Uint8Array(digest)].map((b) => b.toString(16).padStart(2, "0")).join("");
 
-/** A planner loaded through the cache: whether it came from it, and its snapshot when one is at hand. */
+/** The digest's length in a shipped snapshot (hex SHA-256). */
+const BUILD_LENGTH = 64;
+
+/** A snapshot shipped with the build (`npm run build:kb`): the digest of the module that wrote it, then the snapshot. */
+export function shippedSnapshot(build: string, snapshot: Uint8Array): Uint8Array {
+  const out = new Uint8Array(BUILD_LENGTH + snapshot.byteLength);
+  out.set(new TextEncoder().encode(build.slice(0, BUILD_LENGTH)));
+  out.set(snapshot, BUILD_LENGTH);
+  return out;
+}
+
+/** The snapshot a shipped file holds when this module (`build`) wrote it, else null. */
+export function snapshotOfBuild(build: string, file: Uint8Array): Uint8Array | null {
+  const writer = new TextDecoder().decode(file.subarray(0, BUILD_LENGTH));
+  return writer === build ? file.subarray(BUILD_LENGTH) : null;
+}
+
+/** Where a knowledge base was loaded from: its files (parsed and merged), the browser's cache, or the build's snapshot. */
+export type LoadedFrom = "files" | "cache" | "build";
+
+/** A loaded planner, where it came from, and its snapshot when one is at hand. */
 export interface CachedLoad {
   planner: FoonPlanner;
-  cached: boolean;
-  /** The snapshot read from the cache; null when the files were parsed (`save` makes and stores one). */
-  snapshot: Uint8Array | null;
-  /** Stores the snapshot of a parsed knowledge base (nothing when it came from the cache); resolves with it. */
+  from: LoadedFrom;
+  /** The files it was loaded from; none when it came from the build's snapshot. */
+  files: KnowledgeBaseFile[];
+  /** Stores the snapshot of a parsed knowledge base (nothing when it came from a snapshot); resolves with the snapshot. */
   save: () => Promise<Uint8Array | null>;
 }
 
@@ -107,19 +129,35 @@ export interface CachedLoad {
 export async function loadThroughCache(
   cache: KbCache | null,
   key: string | null,
-  files: readonly KnowledgeBaseFile[],
+  files: KnowledgeBaseFile[],
   embeddings: Uint8Array | undefined,
 ): Promise<CachedLoad> {
   const stored = cache !== null && key !== null ? await cache.get(key) : null;
   const fromCache = stored === null ? null : FoonPlanner.fromSnapshot(stored, embeddings);
-  if (fromCache !== null) {
-    return { planner: fromCache, cached: true, snapshot: stored, save: () => Promise.resolve(stored) };
-  }
+  if (fromCache !== null) return { planner: fromCache, from: "cache", files, save: () => Promise.resolve(stored) };
   const planner = FoonPlanner.load(files, embeddings);
   const save = async (): Promise<Uint8Array | null> => {
     const snapshot = planner.snapshot();
     if (cache !== null && key !== null) await cache.put(key, snapshot);
     return snapshot;
   };
-  return { planner, cached: false, snapshot: null, save };
+  return { planner, from: "files", files, save };
+}
+
+/** A downloaded knowledge base: the build's snapshot of it, if it has one, and its files (fetched when asked for). */
+export interface Download {
+  shipped: Uint8Array | null;
+  files: () => Promise<KnowledgeBaseFile[]>;
+}
+
+/**
+ * Loads a downloaded knowledge base: from the snapshot shipped with it when this module (`build`, null where
+ * it cannot be told) wrote it, else its files through the cache.
+ */
+export async function loadKnowledgeBase(cache: KbCache | null, build: string | null, download: Download, embeddings: Uint8Array | undefined): Promise<CachedLoad> {
+  const shipped = build === null || download.shipped === null ? null : snapshotOfBuild(build, download.shipped);
+  const planner = shipped === null ? null : FoonPlanner.fromSnapshot(shipped, embeddings);
+  if (planner !== null) return { planner, from: "build", files: [], save: () => Promise.resolve(shipped) };
+  const files = await download.files();
+  return loadThroughCache(cache, build === null ? null : await cacheKey(build, files), files, embeddings);
 }

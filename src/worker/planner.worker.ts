@@ -4,7 +4,7 @@
 
 import { compiledModule, FoonPlanner, initPlanner, PlannerError, toPlannerError } from "../planner/index";
 import type { PlanRequest } from "../planner/types";
-import { buildDigest, cacheKey, KbCache, loadThroughCache } from "./kb-cache";
+import { buildDigest, type Download, KbCache, loadKnowledgeBase } from "./kb-cache";
 import { LatestOnly } from "./latest";
 import type { KnowledgeBaseSource, LoadedKnowledgeBase, LoadPhase, LoadPhaseName, PlannerCopy, WorkerRequest, WorkerResponse } from "./protocol";
 
@@ -18,10 +18,12 @@ let planner: FoonPlanner | null = null;
 let loaded: (Omit<PlannerCopy, "module" | "snapshot"> & { snapshot: () => Promise<Uint8Array | null> }) | null = null;
 
 /**
- * The largest knowledge base (FOON text, bytes) the page may load a copy of: its load blocks the page's thread
- * (0.1-0.3 s for the 0.7 MB starter on a loaded 2-core VM), and its memory is held twice.
+ * The largest knowledge base the page may load a copy of, by its snapshot (or else its FOON text): its load
+ * blocks the page's thread (60-70 ms from the 88 kB snapshot of the 0.7 MB starter, 0.1-0.3 s from its text,
+ * on a loaded 2-core VM), and its memory is held twice.
  */
-const MAX_COPY_BYTES = 2_000_000;
+const MAX_COPY_SNAPSHOT_BYTES = 250_000;
+const MAX_COPY_TEXT_BYTES = 2_000_000;
 const pendingPlans = new LatestOnly<{ id: number; request: PlanRequest }>();
 let planScheduled = false;
 
@@ -55,24 +57,53 @@ const wasmReady = compileModule().then(async ({ module, build }) => {
 wasmReady.catch(() => undefined);
 const cacheReady = KbCache.open();
 
+/**
+ * The bundled knowledge base, and the snapshot of it that `npm run build:kb` writes with this build's module:
+ * loading the bundled one downloads and reads the snapshot instead of its text (which stays the source, for
+ * authoring and export, and is loaded instead when the snapshot is another build's).
+ */
+const BUNDLED_KB = new URL("../../public/kb/default.foon", import.meta.url).href;
+const BUNDLED_SNAPSHOT = new URL("../../public/kb/default.kb", import.meta.url).href;
+
+/** What a load of `url` downloads first: the bundled knowledge base's snapshot, else the URL itself. */
+const firstDownload = (url: string): string => (url === BUNDLED_KB ? BUNDLED_SNAPSHOT : url);
+
 /** Knowledge-base downloads started by a prefetch, each taken by the next load of its URL. */
 const prefetched = new Map<string, Promise<Response>>();
 
-async function filesOf(source: KnowledgeBaseSource): Promise<{ name: string; files: { name: string; bytes: Uint8Array }[] }> {
-  if (source.kind === "files") {
-    prefetched.clear(); // the page restored the user's own files: what it fetched in case it did not is not needed
-    return { name: source.files.map((f) => f.name).join(", "), files: source.files };
-  }
-  const early = prefetched.get(source.url);
-  prefetched.delete(source.url);
-  const response = await (early ?? fetch(source.url));
-  if (!response.ok) throw new PlannerError({ code: "internal", message: `${source.url}: HTTP ${response.status}` });
-  const name = new URL(source.url).pathname.split("/").pop() ?? "knowledge base";
+async function fetchFile(url: string): Promise<Response> {
+  const early = prefetched.get(url);
+  prefetched.delete(url);
+  const response = await (early ?? fetch(url));
+  if (!response.ok) throw new PlannerError({ code: "internal", message: `${url}: HTTP ${response.status}` });
   // hosts with a page fallback answer a missing file with their index page: say so, not "unknown line"
   if ((response.headers.get("content-type") ?? "").includes("text/html")) {
-    throw new PlannerError({ code: "internal", message: `${source.url}: not found (the server sent a web page, not a FOON file)` });
+    throw new PlannerError({ code: "internal", message: `${url}: not found (the server sent a web page, not a FOON file)` });
   }
-  return { name, files: [{ name, bytes: new Uint8Array(await response.arrayBuffer()) }] };
+  return response;
+}
+
+async function textFiles(url: string): Promise<{ name: string; bytes: Uint8Array }[]> {
+  const response = await fetchFile(url);
+  const name = new URL(url).pathname.split("/").pop() ?? "knowledge base";
+  return [{ name, bytes: new Uint8Array(await response.arrayBuffer()) }];
+}
+
+async function download(source: KnowledgeBaseSource): Promise<{ name: string } & Download> {
+  if (source.kind === "files") {
+    prefetched.clear(); // the page restored the user's own files: what it fetched in case it did not is not needed
+    return { name: source.files.map((f) => f.name).join(", "), shipped: null, files: () => Promise.resolve(source.files) };
+  }
+  const name = new URL(source.url).pathname.split("/").pop() ?? "knowledge base";
+  if (source.url === BUNDLED_KB) {
+    const shipped = await fetchFile(BUNDLED_SNAPSHOT).then(
+      async (r) => new Uint8Array(await r.arrayBuffer()),
+      () => null, // built without one: the text is loaded
+    );
+    return { name, shipped, files: () => textFiles(source.url) };
+  }
+  const files = await textFiles(source.url);
+  return { name, shipped: null, files: () => Promise.resolve(files) };
 }
 
 // The embedding table is fetched once per URL and reused for every knowledge base loaded after it.
@@ -104,21 +135,26 @@ async function phase<T>(phases: LoadPhase[], name: LoadPhaseName, work: () => Pr
 
 async function load(id: number, source: KnowledgeBaseSource, embeddingsUrl: string | undefined): Promise<void> {
   const phases: LoadPhase[] = [];
-  const [build, { name, files }, embeddings] = await Promise.all([
+  const [build, downloaded, embeddings] = await Promise.all([
     phase(phases, "wasm", () => wasmReady),
-    phase(phases, "kb download", () => filesOf(source)),
+    phase(phases, "kb download", () => download(source)),
     phase(phases, "embeddings download", () => embeddingsOf(embeddingsUrl)),
   ]);
   // A failed load keeps the previous knowledge base: the user sees the error and can fix the file.
-  const next = await phase(phases, "kb load", async () => {
-    const key = build === null ? null : await cacheKey(build, files);
-    return loadThroughCache(await cacheReady, key, files, embeddings);
-  });
+  const next = await phase(phases, "kb load", async () => loadKnowledgeBase(await cacheReady, build, downloaded, embeddings));
   planner?.free();
   planner = next.planner;
   let snapshot: Promise<Uint8Array | null> | null = null;
-  loaded = { files, embeddings, snapshot: () => (snapshot ??= next.save().catch(() => null)) };
-  const kb: LoadedKnowledgeBase = { name, stats: planner.stats(), vocabulary: planner.vocabulary(), warnings: planner.warnings(), embeddings: embeddings !== undefined, cached: next.cached, phases };
+  loaded = { files: next.files, embeddings, snapshot: () => (snapshot ??= next.save().catch(() => null)) };
+  const kb: LoadedKnowledgeBase = {
+    name: downloaded.name,
+    stats: planner.stats(),
+    vocabulary: planner.vocabulary(),
+    warnings: planner.warnings(),
+    embeddings: embeddings !== undefined,
+    from: next.from,
+    phases,
+  };
   reply({ type: "loaded", id, kb });
 }
 
@@ -142,9 +178,11 @@ function runLatestPlan(): void {
 async function copy(): Promise<PlannerCopy | null> {
   const module = compiledModule();
   const current = loaded;
-  const size = current?.files.reduce((sum, f) => sum + f.bytes.byteLength, 0) ?? Infinity;
-  if (module === null || current === null || size > MAX_COPY_BYTES) return null;
-  return { module, files: current.files, embeddings: current.embeddings, snapshot: await current.snapshot() };
+  if (module === null || current === null) return null;
+  const snapshot = await current.snapshot();
+  const tooLarge =
+    snapshot === null ? current.files.reduce((sum, f) => sum + f.bytes.byteLength, 0) > MAX_COPY_TEXT_BYTES : snapshot.byteLength > MAX_COPY_SNAPSHOT_BYTES;
+  return tooLarge ? null : { module, files: current.files, embeddings: current.embeddings, snapshot };
 }
 
 scope.onmessage = (event: MessageEvent<WorkerRequest>): void => {
@@ -154,10 +192,13 @@ scope.onmessage = (event: MessageEvent<WorkerRequest>): void => {
       load(message.id, message.source, message.embeddingsUrl).catch((e: unknown) => reply({ type: "error", id: message.id, error: toPlannerError(e).toJSON() }));
       break;
     case "prefetch":
-      if (!prefetched.has(message.kbUrl)) {
-        const download = fetch(message.kbUrl);
-        download.catch(() => undefined); // a failure is the load's to report, if one comes
-        prefetched.set(message.kbUrl, download);
+      {
+        const url = firstDownload(message.kbUrl);
+        if (!prefetched.has(url)) {
+          const early = fetch(url);
+          early.catch(() => undefined); // a failure is the load's to report, if one comes
+          prefetched.set(url, early);
+        }
       }
       void embeddingsOf(message.embeddingsUrl);
       break;

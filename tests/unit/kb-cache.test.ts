@@ -1,11 +1,12 @@
 // The parsed knowledge base cached in IndexedDB (fake-indexeddb) with the real WASM planner: a second load
 // comes from the cache and plans the same; a damaged or other-version entry, other files or another build
 // are parsed again (never a wrong plan); without IndexedDB or WebCrypto nothing is cached and the files load.
+// The snapshot shipped with the build is read when this build wrote it, else the files are loaded.
 import { describe, expect, it, vi } from "vitest";
 import { IDBFactory } from "fake-indexeddb";
 import { FoonPlanner, type KnowledgeBaseFile, type PlanRequest } from "../../src/planner/index";
 import { initPlannerFromDisk, readEmbeddings, readKnowledgeBase, STARTER_KB_DIR } from "../../src/planner/node";
-import { cacheKey, KbCache, loadThroughCache, MAX_ENTRIES } from "../../src/worker/kb-cache";
+import { cacheKey, KbCache, loadKnowledgeBase, loadThroughCache, MAX_ENTRIES, shippedSnapshot } from "../../src/worker/kb-cache";
 import { encode } from "./helpers";
 
 initPlannerFromDisk();
@@ -31,9 +32,9 @@ describe("knowledge-base cache", () => {
   it("parses on the first load and reads the cache on the second, with the same plans", async () => {
     const cache = await freshCache();
     const first = await load(cache);
-    expect(first.cached).toBe(false);
+    expect(first.from).toBe("files");
     const second = await load(cache);
-    expect(second.cached).toBe(true);
+    expect(second.from).toBe("cache");
     expect(JSON.stringify(second.planner.plan(REQUEST))).toBe(expected);
     expect(second.planner.stats()).toEqual(first.planner.stats());
   });
@@ -49,7 +50,7 @@ describe("knowledge-base cache", () => {
     for (const entry of [damaged, good.slice(0, good.length >> 1), otherVersion, encode("not a snapshot"), new Uint8Array()]) {
       await cache.put(key, entry);
       const loaded = await load(cache);
-      expect(loaded.cached).toBe(false);
+      expect(loaded.from).toBe("files");
       expect(JSON.stringify(loaded.planner.plan(REQUEST))).toBe(expected);
       expect(await cache.get(key)).toEqual(good);
     }
@@ -65,8 +66,8 @@ describe("knowledge-base cache", () => {
     // another knowledge base cached meanwhile is not taken for this one
     const cache = await freshCache();
     await load(cache, FILES.slice(1));
-    expect((await load(cache)).cached).toBe(false);
-    expect((await load(cache, FILES, "build-b")).cached).toBe(false);
+    expect((await load(cache)).from).toBe("files");
+    expect((await load(cache, FILES, "build-b")).from).toBe("files");
   });
 
   it("keeps the entries stored last", async () => {
@@ -79,16 +80,36 @@ describe("knowledge-base cache", () => {
   it("loads the files without IndexedDB or WebCrypto", async () => {
     expect(await KbCache.open(undefined)).toBeNull();
     const loaded = await load(null);
-    expect(loaded.cached).toBe(false);
+    expect(loaded.from).toBe("files");
     expect(JSON.stringify(loaded.planner.plan(REQUEST))).toBe(expected);
     vi.stubGlobal("crypto", {});
     try {
       expect(await cacheKey(BUILD, FILES)).toBeNull();
       const cache = await freshCache();
-      expect((await load(cache)).cached).toBe(false);
-      expect((await load(cache)).cached).toBe(false);
+      expect((await load(cache)).from).toBe("files");
+      expect((await load(cache)).from).toBe("files");
     } finally {
       vi.unstubAllGlobals();
+    }
+  });
+
+  it("reads the build's snapshot when this build wrote it, and loads the files when not", async () => {
+    const snapshot = FoonPlanner.load(FILES, EMBEDDINGS).snapshot();
+    const damaged = snapshot.slice();
+    damaged[100]! ^= 0x04;
+    const cases = [
+      { shipped: shippedSnapshot(BUILD.padEnd(64, "0"), snapshot), from: "build" },
+      { shipped: shippedSnapshot("build-b".padEnd(64, "0"), snapshot), from: "files" },
+      { shipped: shippedSnapshot(BUILD.padEnd(64, "0"), damaged), from: "files" },
+      { shipped: snapshot, from: "files" },
+    ];
+    for (const { shipped, from } of cases) {
+      let asked = 0;
+      const files = (): Promise<KnowledgeBaseFile[]> => Promise.resolve(FILES).finally(() => asked++);
+      const loaded = await loadKnowledgeBase(await freshCache(), BUILD.padEnd(64, "0"), { shipped, files }, EMBEDDINGS);
+      expect(loaded.from).toBe(from);
+      expect(asked).toBe(from === "build" ? 0 : 1);
+      expect(JSON.stringify(loaded.planner.plan(REQUEST))).toBe(expected);
     }
   });
 });

@@ -21,7 +21,7 @@ class FakeWorker implements CopyablePlanner {
   constructor(private copyOf: (module: WebAssembly.Module) => PlannerCopy | null = (module) => ({ module, files: FILES, embeddings: EMBEDDINGS, snapshot: this.planner.snapshot() })) {}
 
   private loaded(): Promise<LoadedKnowledgeBase> {
-    return Promise.resolve({ name: "kb", stats: this.planner.stats(), vocabulary: this.planner.vocabulary(), warnings: [], embeddings: true, cached: false, phases: [] });
+    return Promise.resolve({ name: "kb", stats: this.planner.stats(), vocabulary: this.planner.vocabulary(), warnings: [], embeddings: true, from: "files", phases: [] });
   }
   loadUrl(): Promise<LoadedKnowledgeBase> {
     return this.loaded();
