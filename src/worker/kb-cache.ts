@@ -13,7 +13,7 @@ import { done, request } from "../eval/storage";
 
 export const CACHE_DB_NAME = "foon-planner-kb-cache";
 const STORE = "snapshots";
-/** Snapshots kept (the bundled knowledge base and a user's own, say): the one stored longest ago goes first. */
+/** Snapshots kept (a user's own knowledge bases, or versions of one): the one stored longest ago goes first. */
 export const MAX_ENTRIES = 3;
 
 interface Entry {

@@ -83,10 +83,11 @@ async function fetchFile(url: string): Promise<Response> {
   return response;
 }
 
+const fileName = (url: string): string => new URL(url).pathname.split("/").pop() ?? "knowledge base";
+
 async function textFiles(url: string): Promise<{ name: string; bytes: Uint8Array }[]> {
   const response = await fetchFile(url);
-  const name = new URL(url).pathname.split("/").pop() ?? "knowledge base";
-  return [{ name, bytes: new Uint8Array(await response.arrayBuffer()) }];
+  return [{ name: fileName(url), bytes: new Uint8Array(await response.arrayBuffer()) }];
 }
 
 async function download(source: KnowledgeBaseSource): Promise<{ name: string } & Download> {
@@ -94,7 +95,7 @@ async function download(source: KnowledgeBaseSource): Promise<{ name: string } &
     prefetched.clear(); // the page restored the user's own files: what it fetched in case it did not is not needed
     return { name: source.files.map((f) => f.name).join(", "), shipped: null, files: () => Promise.resolve(source.files) };
   }
-  const name = new URL(source.url).pathname.split("/").pop() ?? "knowledge base";
+  const name = fileName(source.url);
   if (source.url === BUNDLED_KB) {
     const shipped = await fetchFile(BUNDLED_SNAPSHOT).then(
       async (r) => new Uint8Array(await r.arrayBuffer()),
