@@ -13,6 +13,8 @@ import { done, request } from "../eval/storage";
 
 export const CACHE_DB_NAME = "foon-planner-kb-cache";
 const STORE = "snapshots";
+/** The store's index of entries by when they were stored. */
+const BY_AGE = "storedAt";
 /** Snapshots kept (a user's own knowledge bases, or versions of one): the one stored longest ago goes first. */
 export const MAX_ENTRIES = 3;
 
@@ -29,7 +31,7 @@ export class KbCache {
     if (factory === undefined) return null;
     try {
       const req = factory.open(CACHE_DB_NAME, 1);
-      req.onupgradeneeded = () => req.result.createObjectStore(STORE);
+      req.onupgradeneeded = () => req.result.createObjectStore(STORE).createIndex(BY_AGE, "storedAt");
       const db = await request(req);
       db.onversionchange = () => db.close();
       return new KbCache(db);
@@ -54,10 +56,8 @@ export class KbCache {
       const tx = this.db.transaction(STORE, "readwrite");
       const store = tx.objectStore(STORE);
       store.put({ snapshot, storedAt: now } satisfies Entry, key);
-      const keys = (await request(store.getAllKeys())) as string[];
-      const entries = (await request(store.getAll())) as Entry[];
-      const newestFirst = keys.map((k, i) => ({ k, storedAt: entries[i]?.storedAt ?? 0 })).sort((a, b) => b.storedAt - a.storedAt);
-      for (const { k } of newestFirst.slice(MAX_ENTRIES)) store.delete(k);
+      const oldestFirst = await request(store.index(BY_AGE).getAllKeys());
+      for (const k of oldestFirst.slice(0, Math.max(0, oldestFirst.length - MAX_ENTRIES))) store.delete(k);
       await done(tx);
     } catch {
       // a full disk or a closed database: the next visit parses again
