@@ -1,9 +1,10 @@
 // `npm run bench:browser`: the built page (dist/, or BENCH_DIST) in headless Chromium from a local static
 // server, cold (a fresh profile: nothing cached) and warm (the same profile again, its service worker in
-// control), and the widget page the same way. Prints each load phase as the median over BENCH_ROUNDS visits
-// (default 5), the download before the first plan in gzip bytes, and re-plans after an edit in the page: request to the views on
-// screen drawn, its parts (each view's drawing, the plan and the planner's call in it) and request to
-// the end of the next frame. Figures are printed, never asserted.
+// control, the parsed knowledge base cached), and the widget page the same way. Prints each load phase as the
+// median over BENCH_ROUNDS visits (default 5) and where the knowledge base was loaded from (its files, the
+// browser's cache or the build's snapshot), the download before the first plan in gzip bytes, and re-plans
+// after an edit in the page: request to the views on screen drawn, its parts (each view's drawing, the plan
+// and the planner's call in it) and request to the end of the next frame. Figures are printed, never asserted.
 
 import { existsSync, readFileSync } from "node:fs";
 import { join, resolve } from "node:path";
@@ -48,8 +49,11 @@ async function visit(page: Page, url: string): Promise<Visit> {
     phases.domContentLoaded = navigation?.domContentLoadedEventEnd ?? -1;
     for (const m of performance.getEntriesByType("measure")) if (m.name.startsWith("foon:")) phases[m.name] = m.startTime + m.duration;
     phases["first plan"] = performance.getEntriesByName("foon:first-plan")[0]?.startTime ?? -1;
-    // how long parsing, merging and indexing took (what a cache of the parsed knowledge base would save)
-    phases["kb load took"] = performance.getEntriesByName("foon:kb load")[0]?.duration ?? -1;
+    // how long parsing and merging (or reading the cached knowledge base) and indexing took, and which it was
+    const kbLoad = performance.getEntriesByName("foon:kb load")[0] as PerformanceMeasure | undefined;
+    phases["kb load took"] = kbLoad?.duration ?? -1;
+    // 0: parsed from its files, 1: the browser's cache, 2: the build's snapshot
+    phases["kb from"] = ["files", "cache", "build"].indexOf((kbLoad?.detail as { from?: string } | undefined)?.from ?? "");
     return phases;
   });
   return { phases, files: fetched };
@@ -129,7 +133,8 @@ function gzipBytes(files: string[]): { total: number; biggest: [string, number][
 function report(name: string, visits: Visit[]): void {
   const line = PHASES.map((p) => `${p.replace("foon:", "")} ${median(visits.map((v) => v.phases[p] ?? NaN)).toFixed(0)}`).join(", ");
   const kbLoad = median(visits.map((v) => v.phases["kb load took"] ?? NaN)).toFixed(0);
-  console.log(`  ${name} (median of ${visits.length}, ms after navigation to the end of each phase): ${line}; the kb load took ${kbLoad}`);
+  const from = ["files", "cache", "build"].map((f, i) => [f, visits.filter((v) => v.phases["kb from"] === i).length] as const).filter(([, n]) => n > 0);
+  console.log(`  ${name} (median of ${visits.length}, ms after navigation to the end of each phase): ${line}; the kb load took ${kbLoad} (from ${from.map(([f, n]) => `${f} ${n}`).join(", ")} of ${visits.length})`);
 }
 
 function reportDownload(name: string, visit: Visit): void {

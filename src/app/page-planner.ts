@@ -3,8 +3,9 @@
 // copy of the planner on the page's own thread makes the re-plans. A re-plan through the worker waits for
 // the browser to render the edit's frame before the answer is handled (5-15 ms on a loaded 2-core VM);
 // planned here, the plan is drawn in the same task as the edit. The copy instantiates the worker's compiled
-// module (no second compile: the code is shared) and loads the same files; a knowledge base too large to
-// load here without blocking the page stays in the worker only.
+// module (no second compile: the code is shared) and loads the worker's snapshot of the parsed knowledge base
+// (else the same files); a knowledge base too large to load here without blocking the page stays in the
+// worker only.
 
 import { toPlannerError } from "../planner/errors";
 import type { FoonPlanner } from "../planner/index";
@@ -104,7 +105,8 @@ export class PagePlanner implements PlannerService {
       await planner.initPlanner(copy.module);
       if (generation !== this.generation) return;
       const started = performance.now();
-      this.local = planner.FoonPlanner.load(copy.files, copy.embeddings);
+      const fromSnapshot = copy.snapshot === null ? null : planner.FoonPlanner.fromSnapshot(copy.snapshot, copy.embeddings);
+      this.local = fromSnapshot ?? planner.FoonPlanner.load(copy.files, copy.embeddings);
       performance.measure(COPY_MEASURE, { start: started });
     } catch {
       // the worker goes on planning: a copy is only a shortcut

@@ -55,7 +55,7 @@ export function localPlanner(): CheckPlanner {
       const next = FoonPlanner.load(files);
       planner?.free();
       planner = next;
-      return { name: files.map((f) => f.name).join(", "), stats: next.stats(), vocabulary: next.vocabulary(), warnings: next.warnings(), embeddings: false, phases: [] };
+      return { name: files.map((f) => f.name).join(", "), stats: next.stats(), vocabulary: next.vocabulary(), warnings: next.warnings(), embeddings: false, from: "files", phases: [] };
     },
     async plan(request) {
       if (planner === null) throw toPlannerError(new Error("no knowledge base is loaded"));

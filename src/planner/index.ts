@@ -1,7 +1,7 @@
 // The one module that owns the WASM planner: initialisation behind a single promise, typed calls,
 // and errors as `PlannerError` with a stable code. Views and the CLI use only this module.
 
-import initWasmModule, { initSync, KnowledgeBaseLoader, type Planner as WasmPlanner } from "../../wasm/pkg/foon_wasm.js";
+import initWasmModule, { initSync, KnowledgeBaseLoader, Planner as WasmPlanner } from "../../wasm/pkg/foon_wasm.js";
 import type { ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanNode, PlanRequest, PlanUnit, SimilarResult, Stats, Vocabulary } from "./types";
 import { PlannerError, toPlannerError } from "./errors";
 
@@ -170,6 +170,25 @@ export class FoonPlanner {
     } catch (thrown) {
       throw toPlannerError(thrown);
     }
+  }
+
+  /**
+   * The planner of a knowledge base saved with `snapshot()`, without parsing and merging its files again; null
+   * when the bytes are damaged or were written by another version of the module (load the files then).
+   */
+  static fromSnapshot(snapshot: Uint8Array, embeddings?: Uint8Array): FoonPlanner | null {
+    assertInitialised();
+    try {
+      const handle = WasmPlanner.fromSnapshot(snapshot, embeddings);
+      return handle === undefined ? null : new FoonPlanner(handle);
+    } catch (thrown) {
+      throw toPlannerError(thrown);
+    }
+  }
+
+  /** The loaded (parsed and merged) knowledge base as bytes, for `fromSnapshot`. */
+  snapshot(): Uint8Array {
+    return this.handle.snapshot();
   }
 
   /** Dish classes with their recipes, labels and states of the loaded files (for the query editor). */

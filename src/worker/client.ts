@@ -3,6 +3,7 @@
 
 import { PlannerError } from "../planner/errors";
 import type { ExportFormat, KnowledgeBaseFile, Plan, PlanRequest } from "../planner/types";
+import type { LoadedFrom } from "./kb-cache";
 import type { KnowledgeBaseSource, LoadedKnowledgeBase, LoadPhase, PlannerCopy, WorkerRequest, WorkerResponse } from "./protocol";
 import plannerWorkerUrl from "./planner.worker.ts?worker&url";
 
@@ -179,7 +180,7 @@ export class WorkerPlanner implements PlannerService {
   private async load(source: KnowledgeBaseSource, embeddingsUrl: string | undefined): Promise<LoadedKnowledgeBase> {
     const response = await this.send({ type: "load", id: this.nextId++, source, embeddingsUrl });
     if (response.type !== "loaded") throw errorOf(response);
-    measurePhases(response.kb.phases);
+    measurePhases(response.kb.phases, response.kb.from);
     return response.kb;
   }
 
@@ -224,10 +225,10 @@ export class WorkerPlanner implements PlannerService {
   }
 }
 
-/** The worker's load phases on the page's Performance timeline, as `foon:<phase>` measures. */
-function measurePhases(phases: readonly LoadPhase[]): void {
+/** The worker's load phases on the page's Performance timeline, as `foon:<phase>` measures (`detail.from`: files, cache or build). */
+function measurePhases(phases: readonly LoadPhase[], from: LoadedFrom): void {
   for (const p of phases) {
-    performance.measure(`foon:${p.name}`, { start: p.start - performance.timeOrigin, end: p.end - performance.timeOrigin });
+    performance.measure(`foon:${p.name}`, { start: p.start - performance.timeOrigin, end: p.end - performance.timeOrigin, detail: { from } });
   }
 }
 

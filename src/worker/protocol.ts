@@ -1,5 +1,6 @@
 // Messages between the page and the planner worker. Everything is structured-cloneable data.
 
+import type { LoadedFrom } from "./kb-cache";
 import type { ExportFormat, FoonErrorData, KnowledgeBaseFile, Plan, PlanRequest, Stats, Vocabulary } from "../planner/types";
 
 export type KnowledgeBaseSource = { kind: "url"; url: string } | { kind: "files"; files: KnowledgeBaseFile[] };
@@ -22,6 +23,8 @@ export interface LoadedKnowledgeBase {
   warnings: FoonErrorData[];
   /** Whether the embedding table was loaded (else substitutes are found by exact names only). */
   embeddings: boolean;
+  /** Whether the knowledge base was parsed from its files or read from a snapshot, the browser's or the build's (`kb-cache.ts`). */
+  from: LoadedFrom;
   /** How long each phase of this load took, on the wall clock (the worker and the page share it). */
   phases: LoadPhase[];
 }
@@ -35,15 +38,20 @@ export interface LoadPhase {
 
 /**
  * `wasm`: the module fetched and compiled as it streams in (once per worker); `kb download` and
- * `embeddings download`: the files fetched (the table once per URL); `kb load`: parse, merge, index.
+ * `embeddings download`: the files (or the bundled knowledge base's snapshot) and the table fetched (the table
+ * once per URL); `kb load`: parse and merge (or read a snapshot), index.
  */
 export type LoadPhaseName = "wasm" | "kb download" | "embeddings download" | "kb load";
 
-/** What the page needs to load the same planner itself: the module (compiled once, shared) and the same files. */
+/**
+ * What the page needs to load the same planner itself: the module (compiled once, shared), the knowledge base's
+ * snapshot (null: none could be made; then the same files are loaded, none when it came from the build's snapshot).
+ */
 export interface PlannerCopy {
   module: WebAssembly.Module;
   files: KnowledgeBaseFile[];
   embeddings?: Uint8Array;
+  snapshot: Uint8Array | null;
 }
 
 export type WorkerResponse =

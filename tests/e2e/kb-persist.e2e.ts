@@ -1,10 +1,13 @@
 // The user's own knowledge base survives a reload (IndexedDB), two tabs learn of each other's choice
-// (BroadcastChannel), and a full storage keeps the files in memory with an offer to download them.
+// (BroadcastChannel), and a full storage keeps the files in memory with an offer to download them. A reload
+// loads the user's files from the browser's cache of the parsed knowledge base (the bundled one from the
+// build's snapshot).
 import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
 import type { Browser, BrowserContext, Page } from "playwright-core";
 import { launch, screenshot, watchErrors } from "./browser";
 import { downloadOf, waitForPlan } from "./app-helpers";
 import { KB_DB_NAME, KB_KEY, KB_STORE } from "../../src/app/kb-store";
+import { CACHE_DB_NAME } from "../../src/worker/kb-cache";
 
 let browser: Browser;
 beforeAll(async () => {
@@ -60,21 +63,57 @@ async function waitForSaved(page: Page, choice: "custom" | "bundled"): Promise<v
   );
 }
 
+/** Where the last knowledge base was loaded from: its files, the browser's cache of its snapshot, or the build's snapshot. */
+const loadedFrom = (page: Page): Promise<unknown> =>
+  page.evaluate(() => (performance.getEntriesByName("foon:kb load").at(-1) as PerformanceMeasure | undefined)?.detail?.from);
+
+/** Waits until the planner has cached `n` parsed knowledge bases (it does so after their first plan). */
+async function waitForCached(page: Page, n: number): Promise<void> {
+  await page.waitForFunction(
+    async ([dbName, n]) => {
+      const db = await new Promise<IDBDatabase>((resolve, reject) => {
+        const req = indexedDB.open(dbName);
+        req.onsuccess = () => resolve(req.result);
+        req.onerror = () => reject(req.error);
+      });
+      try {
+        const names = [...db.objectStoreNames];
+        if (names.length === 0) return false;
+        const count = await new Promise<number>((resolve, reject) => {
+          const req = db.transaction(names).objectStore(names[0]!).count();
+          req.onsuccess = () => resolve(req.result);
+          req.onerror = () => reject(req.error);
+        });
+        return count >= n;
+      } finally {
+        db.close();
+      }
+    },
+    [CACHE_DB_NAME, n] as const,
+    { polling: 50 },
+  );
+}
+
 describe("the user's knowledge base persists", () => {
   it("is restored after a reload and forgotten after switching back to the bundled one", async () => {
     const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
     const { page, errors } = await newPage(context);
     await page.goto(`${inject("baseUrl")}${QUERY}`);
     await waitForPlan(page);
+    expect(await loadedFrom(page)).toBe("build"); // the bundled knowledge base: the snapshot shipped with it
     await loadFile(page, HOSTILE, kb("My own toast", "toast"));
     await page.locator(".kb-status[data-source='custom']").waitFor();
     await waitForPlan(page);
     expect(await goal(page)).toBe("My own toast");
+    expect(await loadedFrom(page)).toBe("files");
     await waitForSaved(page, "custom");
+    await waitForCached(page, 1);
 
+    // restored from the browser's cache of the parsed files, with the same plan
     await page.reload();
     await page.locator(".kb-status[data-source='custom']").waitFor();
     await waitForPlan(page);
+    expect(await loadedFrom(page)).toBe("cache");
     expect(await page.locator(".kb-notice").textContent()).toBe("Your knowledge base (1 file) restored.");
     expect(await page.locator(".kb-status").textContent()).toContain(HOSTILE); // as text, not markup
     expect(await page.locator(".panel-kb b").count()).toBe(0);

@@ -1,5 +1,6 @@
 // The page's planner: the worker plans until the page has its own copy, then the copy makes the re-plans
-// (the same plans), and a new knowledge base, a copy refused or a copy that cannot load leave it to the worker.
+// (the same plans, loaded from the worker's snapshot or else its files), and a new knowledge base, a copy
+// refused or a copy that cannot load leave it to the worker.
 
 import { describe, expect, it } from "vitest";
 import { CopyablePlanner, PagePlanner } from "../../src/app/page-planner";
@@ -17,17 +18,17 @@ const REQUEST: PlanRequest = { query: { type: "salad", ingredients: [{ object: "
 class FakeWorker implements CopyablePlanner {
   plans = 0;
   private planner = FoonPlanner.load(FILES, EMBEDDINGS);
-  constructor(private copyOf: (module: WebAssembly.Module) => PlannerCopy | null = (module) => ({ module, files: FILES, embeddings: EMBEDDINGS })) {}
+  constructor(private copyOf: (module: WebAssembly.Module) => PlannerCopy | null = (module) => ({ module, files: FILES, embeddings: EMBEDDINGS, snapshot: this.planner.snapshot() })) {}
 
   private loaded(): Promise<LoadedKnowledgeBase> {
-    return Promise.resolve({ name: "kb", stats: this.planner.stats(), vocabulary: this.planner.vocabulary(), warnings: [], embeddings: true, phases: [] });
+    return Promise.resolve({ name: "kb", stats: this.planner.stats(), vocabulary: this.planner.vocabulary(), warnings: [], embeddings: true, from: "files", phases: [] });
   }
   loadUrl(): Promise<LoadedKnowledgeBase> {
     return this.loaded();
   }
   loadFiles(files: KnowledgeBaseFile[]): Promise<LoadedKnowledgeBase> {
     this.planner = FoonPlanner.load(files, EMBEDDINGS);
-    this.copyOf = (module) => ({ module, files, embeddings: EMBEDDINGS });
+    this.copyOf = (module) => ({ module, files, embeddings: EMBEDDINGS, snapshot: this.planner.snapshot() });
     return this.loaded();
   }
   prefetch(): void {}
@@ -73,8 +74,29 @@ describe("the page's planner", () => {
     expect(JSON.stringify(fromCopy?.plan)).toBe(JSON.stringify(fromWorker?.plan));
   });
 
+  it("loads its copy from the worker's snapshot, and from the files when the snapshot cannot be read", async () => {
+    const bad = [{ name: "bad.txt", bytes: encode("S\tin\t[bowl\n") }];
+    const snapshot = FoonPlanner.load(FILES, EMBEDDINGS).snapshot();
+    const damaged = snapshot.slice();
+    damaged[damaged.length >> 1]! ^= 0xff;
+    const copies = [
+      (module: WebAssembly.Module) => ({ module, files: bad, embeddings: EMBEDDINGS, snapshot }), // the files are not read
+      (module: WebAssembly.Module) => ({ module, files: FILES, embeddings: EMBEDDINGS, snapshot: damaged }),
+    ];
+    for (const copyOf of copies) {
+      const worker = new FakeWorker(copyOf);
+      const page = new PagePlanner(worker);
+      const fromWorker = await page.plan(REQUEST);
+      await page.copied();
+      expect(page.onPage).toBe(true);
+      const fromCopy = await page.plan(REQUEST);
+      expect(worker.plans).toBe(1);
+      expect(JSON.stringify(fromCopy?.plan)).toBe(JSON.stringify(fromWorker?.plan));
+    }
+  });
+
   it("leaves every plan to the worker when the worker gives no copy or the copy cannot load", async () => {
-    for (const copyOf of [() => null, (module: WebAssembly.Module) => ({ module, files: [{ name: "bad.txt", bytes: encode("S\tin\t[bowl\n") }] })]) {
+    for (const copyOf of [() => null, (module: WebAssembly.Module) => ({ module, files: [{ name: "bad.txt", bytes: encode("S\tin\t[bowl\n") }], snapshot: null })]) {
       const worker = new FakeWorker(copyOf);
       const page = new PagePlanner(worker);
       await page.plan(REQUEST);

@@ -31,7 +31,7 @@ class FakeWorker {
   }
 }
 
-const KB = { name: "kb", stats: {} as never, vocabulary: {} as never, warnings: [], embeddings: false, phases: [] };
+const KB = { name: "kb", stats: {} as never, vocabulary: {} as never, warnings: [], embeddings: false, from: "files" as const, phases: [] };
 const PLAN = { units: [] } as unknown as Plan;
 const REQUEST = { query: { type: "salad", ingredients: [{ object: "tomato", state: "" }] } };
 

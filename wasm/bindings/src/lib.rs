@@ -2,8 +2,8 @@
 //! knowledge-base files; requests and results cross the boundary as JSON text, errors as JS `Error`s
 //! carrying a stable `code` and, for file errors, `file`, `line` and `column`.
 
-use foon_core::foon::bundle;
 use foon_core::foon::read::{parse_bytes, Subgraph};
+use foon_core::foon::{bundle, snapshot};
 use foon_core::similarity::{ExactMatch, Similarity};
 use foon_core::{
     EmbeddingSimilarity, ErrorCode, FoonError, KnowledgeBase, Plan, PlanRequest, PlannerIndex,
@@ -101,23 +101,10 @@ impl KnowledgeBaseLoader {
     /// Merges the files into a universal FOON and returns the planner handle. With `embeddings` (the
     /// food embedding table) ingredients are matched by meaning, otherwise by exact name only.
     pub fn finish(self, embeddings: Option<Vec<u8>>) -> Result<Planner, JsValue> {
-        let similarity: Box<dyn Similarity> = match embeddings {
-            Some(bytes) => {
-                Box::new(EmbeddingSimilarity::from_bytes(&bytes).map_err(|e| js_error(&e))?)
-            }
-            None => Box::new(ExactMatch),
-        };
         let kb = KnowledgeBase::merge(&self.graphs).map_err(|e| js_error(&e))?;
-        let index = PlannerIndex::new(&kb);
-        Ok(Planner {
-            kb,
-            index,
-            similarity,
-            text: RefCell::default(),
-        })
+        Planner::new(kb, embeddings)
     }
 }
-
 /// A loaded knowledge base and everything the planner needs with it.
 #[wasm_bindgen]
 pub struct Planner {
@@ -129,8 +116,43 @@ pub struct Planner {
     text: RefCell<Vec<u8>>,
 }
 
+impl Planner {
+    fn new(kb: KnowledgeBase, embeddings: Option<Vec<u8>>) -> Result<Planner, JsValue> {
+        let similarity: Box<dyn Similarity> = match embeddings {
+            Some(bytes) => {
+                Box::new(EmbeddingSimilarity::from_bytes(&bytes).map_err(|e| js_error(&e))?)
+            }
+            None => Box::new(ExactMatch),
+        };
+        let index = PlannerIndex::new(&kb);
+        Ok(Planner {
+            kb,
+            index,
+            similarity,
+            text: RefCell::default(),
+        })
+    }
+}
+
 #[wasm_bindgen]
 impl Planner {
+    /// The planner of a knowledge base saved with `snapshot()`, without parsing and merging its files;
+    /// `undefined` when the bytes are damaged or were written by another format version (load the files).
+    #[wasm_bindgen(js_name = fromSnapshot)]
+    pub fn from_snapshot(
+        bytes: &[u8],
+        embeddings: Option<Vec<u8>>,
+    ) -> Result<Option<Planner>, JsValue> {
+        snapshot::read(bytes)
+            .map(|kb| Planner::new(kb, embeddings))
+            .transpose()
+    }
+
+    /// The loaded knowledge base as bytes for `fromSnapshot` (`foon_core::foon::snapshot`).
+    pub fn snapshot(&self) -> Vec<u8> {
+        snapshot::write(&self.kb)
+    }
+
     /// Statistics of the knowledge base, as JSON (`foon_core::Stats`).
     pub fn stats(&self) -> Result<String, JsValue> {
         to_json(&foon_core::stats(&self.kb))

@@ -1,9 +1,9 @@
 //! Typed errors: every failure of the core is one of these, never a panic.
 //! `code` is stable (the bindings and the app match on it); `message` is for people.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ErrorCode {
     /// The bytes of a file are not UTF-8.

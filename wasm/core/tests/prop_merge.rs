@@ -1,9 +1,9 @@
 //! Properties of the universal FOON on random graphs: the merge gives the same knowledge base for any file
 //! order (and for one bundle holding the same files); its indexes agree with its units; exported as a
-//! bundle and read back, it is the same knowledge base.
+//! bundle and read back, or as a snapshot, it is the same knowledge base.
 
 mod gen;
-use foon_core::foon::write;
+use foon_core::foon::{snapshot, write};
 use foon_core::{load, KnowledgeBase};
 use proptest::prelude::*;
 
@@ -65,6 +65,7 @@ proptest! {
     ) {
         let kb = load(&as_files(&files)).unwrap();
         assert_indexes_agree(&kb);
+        prop_assert_eq!(snapshot::read(&snapshot::write(&kb)), Some(kb.clone()));
         // a permutation drawn from the seed, and the reverse order
         let mut shuffled = files.clone();
         let mut state = seed | 1;

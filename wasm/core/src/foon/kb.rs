@@ -95,8 +95,11 @@ impl KnowledgeBase {
     /// Merges subgraphs into one universal FOON.
     pub fn merge(subgraphs: &[Subgraph]) -> Result<KnowledgeBase> {
         let units_before_merge = unit_count(subgraphs)?;
-        let (nodes, node_index) = numbered_nodes(subgraphs);
-        let (merged, goal_marks) = merged_units(subgraphs, &node_index);
+        let nodes = numbered_nodes(subgraphs);
+        // by reference here: the knowledge base's own index is made once its nodes are moved into it
+        let numbers: FxHashMap<&ObjectNode, NodeId> =
+            nodes.iter().zip(NodeId::all(nodes.len())).collect();
+        let (merged, goal_marks) = merged_units(subgraphs, &numbers);
         let mut units = Vec::with_capacity(merged.len());
         let mut provenance = Vec::with_capacity(merged.len());
         for ((_, motion, _), (mut inputs, mut outputs, files)) in merged {
@@ -109,12 +112,6 @@ impl KnowledgeBase {
             });
             provenance.push(files.into_iter().collect());
         }
-        let (producers, consumers) = producers_and_consumers(nodes.len(), &units);
-        let kitchen = NodeId::all(nodes.len())
-            .zip(&nodes)
-            .map(|(i, n)| producers[i].is_empty() || is_raw(n))
-            .collect();
-
         let mut subgraph_infos: Vec<SubgraphInfo> = subgraphs
             .iter()
             .map(|g| SubgraphInfo {
@@ -130,19 +127,15 @@ impl KnowledgeBase {
             .flat_map(|g| g.warnings.iter().cloned())
             .collect();
         warnings.sort_by(|a, b| (&a.file, a.line, &a.message).cmp(&(&b.file, b.line, &b.message)));
-        let mut kb = KnowledgeBase {
+        let mut kb = KnowledgeBase::from_merged(
             nodes,
             units,
             provenance,
-            producers,
-            consumers,
-            kitchen,
-            goals: Vec::new(),
-            subgraphs: subgraph_infos,
+            Vec::new(),
+            subgraph_infos,
             units_before_merge,
             warnings,
-            node_index,
-        };
+        );
         let by_subgraph = kb.units_by_subgraph();
         let goals = goal_marks
             .into_iter()
@@ -162,6 +155,37 @@ impl KnowledgeBase {
             .collect();
         kb.goals = goals;
         Ok(kb)
+    }
+
+    /// A knowledge base from its merged parts (a merge's, or a snapshot's), with what is derived from
+    /// them: producers, consumers, the kitchen and the node index.
+    pub(crate) fn from_merged(
+        nodes: Vec<ObjectNode>,
+        units: Vec<FunctionalUnit>,
+        provenance: Vec<Arc<[String]>>,
+        goals: Vec<Goal>,
+        subgraphs: Vec<SubgraphInfo>,
+        units_before_merge: usize,
+        warnings: Vec<FoonError>,
+    ) -> KnowledgeBase {
+        let (producers, consumers) = producers_and_consumers(nodes.len(), &units);
+        let kitchen = NodeId::all(nodes.len())
+            .zip(&nodes)
+            .map(|(i, n)| producers[i].is_empty() || is_raw(n))
+            .collect();
+        KnowledgeBase {
+            node_index: node_index(&nodes),
+            nodes,
+            units,
+            provenance,
+            producers,
+            consumers,
+            kitchen,
+            goals,
+            subgraphs,
+            units_before_merge,
+            warnings,
+        }
     }
 
     pub fn node_id(&self, node: &ObjectNode) -> Option<NodeId> {
@@ -261,8 +285,8 @@ fn producers_and_consumers(
 }
 
 /// The distinct object nodes of all subgraphs, numbered in sorted order so that ids do not depend on
-/// file order, and each node's number.
-fn numbered_nodes(subgraphs: &[Subgraph]) -> (Vec<ObjectNode>, FxHashMap<ObjectNode, NodeId>) {
+/// file order.
+fn numbered_nodes(subgraphs: &[Subgraph]) -> Vec<ObjectNode> {
     let distinct: FxHashSet<&ObjectNode> = subgraphs
         .iter()
         .flat_map(|g| g.units.iter())
@@ -271,20 +295,23 @@ fn numbered_nodes(subgraphs: &[Subgraph]) -> (Vec<ObjectNode>, FxHashMap<ObjectN
         .collect();
     let mut all: Vec<&ObjectNode> = distinct.into_iter().collect();
     all.sort_unstable();
-    let nodes: Vec<ObjectNode> = all.into_iter().cloned().collect();
-    let node_index: FxHashMap<ObjectNode, NodeId> = nodes
+    all.into_iter().cloned().collect()
+}
+
+/// Each node's number.
+fn node_index(nodes: &[ObjectNode]) -> FxHashMap<ObjectNode, NodeId> {
+    nodes
         .iter()
         .cloned()
         .zip(NodeId::all(nodes.len()))
-        .collect();
-    (nodes, node_index)
+        .collect()
 }
 
 /// The union of all subgraphs' units keyed by (inputs, motion, outputs), motion flags OR-ed over
 /// duplicates, with the files each comes from; and the goal marks as (file, node, dish class).
 fn merged_units(
     subgraphs: &[Subgraph],
-    node_index: &FxHashMap<ObjectNode, NodeId>,
+    node_index: &FxHashMap<&ObjectNode, NodeId>,
 ) -> (BTreeMap<UnitKey, MergedUnit>, BTreeSet<GoalMarkOf>) {
     let mut merged: BTreeMap<UnitKey, MergedUnit> = BTreeMap::new();
     let mut goal_marks: BTreeSet<GoalMarkOf> = BTreeSet::new();
@@ -320,7 +347,7 @@ fn merged_units(
 
 fn objects(
     list: &[crate::foon::read::ParsedObject],
-    index: &FxHashMap<ObjectNode, NodeId>,
+    index: &FxHashMap<&ObjectNode, NodeId>,
 ) -> Vec<UnitObject> {
     let mut out: Vec<UnitObject> = list
         .iter()

@@ -6,4 +6,5 @@ pub mod kb;
 pub mod label;
 pub mod model;
 pub mod read;
+pub mod snapshot;
 pub mod write;
