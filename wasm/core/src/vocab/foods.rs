@@ -613,6 +613,8 @@ mod tests {
         assert_eq!(state_once_heated("olive oil"), None);
         assert!(cooked_first("bacon") && cooked_first("italian sausage"));
         assert!(joins_served("jelly") && !joins_served("cherry pie filling"));
+        assert!(joins_before_heat("thyme") && joins_before_heat("cumin"));
+        assert!(joins_before_heat("dried basil") && !joins_before_heat("basil"));
         assert!(!cooked_first("chicken breast") && !cooked_first("ground beef"));
         assert!(shows_cooking("carrot") && shows_cooking("flour") && shows_cooking("rice"));
         // a garnish joins the served dish; its flag wins over its category's heat (chives, an allium)
