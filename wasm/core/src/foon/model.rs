@@ -38,9 +38,7 @@ impl State {
             Some(StateArg::Ingredients(list)) => Some(format!("{{{}}}", list.join(","))),
         }
     }
-}
 
-impl State {
     /// The state as FOON writes it, `in [bowl]` or `contains {egg,milk}`.
     pub fn text(&self) -> SmolStr {
         match self.arg {

@@ -545,23 +545,13 @@ fn drop_dead(
 /// Every planned ingredient must be in the plan as shown (a label or in a list of contents); one the
 /// ordering had to drop is reported unplannable with the reason rather than claimed.
 pub(crate) fn confirm_planned(tree: &Tree, order: &[TUnitId], outcomes: &mut [IngredientOutcome]) {
-    // the plan's slots, each once
-    let mut in_plan = vec![false; tree.slots.len()];
-    let mut slots = Vec::with_capacity(tree.slots.len());
-    for &u in order {
-        let unit = &tree.units[u];
-        for &(x, _) in unit.inputs.iter().chain(unit.outputs.iter()) {
-            if !in_plan[x] {
-                in_plan[x] = true;
-                slots.push(x);
-            }
-        }
-    }
-    // a few ingredients against a few dozen nodes: looked up directly rather than hashed
     let present = |object: &str| {
-        slots.iter().any(|&s| {
-            let node = &tree.slots[s].node;
-            node.label == object || node.listed().any(|i| i == object)
+        order.iter().any(|&u| {
+            let unit = &tree.units[u];
+            unit.inputs.iter().chain(&unit.outputs).any(|&(x, _)| {
+                let node = &tree.slots[x].node;
+                node.label == object || node.listed().any(|i| i == object)
+            })
         })
     };
     for o in outcomes.iter_mut() {

@@ -4,7 +4,7 @@
 use crate::foon::label::normalize_word;
 use crate::foon::model::ObjectNode;
 use rustc_hash::FxHashMap as HashMap;
-use smol_str::{SmolStr, SmolStrBuilder};
+use smol_str::SmolStr;
 use std::cell::RefCell;
 use std::sync::OnceLock;
 
@@ -47,40 +47,32 @@ pub enum Category {
     Other,
 }
 
+/// Each category with its name in `states.tsv`.
+const CATEGORY_NAMES: [(Category, &str); 12] = [
+    (Category::Whole, "whole"),
+    (Category::Trimmed, "trimmed"),
+    (Category::Cut, "cut"),
+    (Category::FinelyCut, "finely cut"),
+    (Category::Ground, "ground"),
+    (Category::Liquid, "liquid"),
+    (Category::Mixed, "mixed"),
+    (Category::Cooked, "cooked"),
+    (Category::Preserved, "preserved"),
+    (Category::Shaped, "shaped"),
+    (Category::Coated, "coated"),
+    (Category::Other, "other"),
+];
+
 impl Category {
     pub fn name(self) -> &'static str {
-        match self {
-            Category::Whole => "whole",
-            Category::Trimmed => "trimmed",
-            Category::Cut => "cut",
-            Category::FinelyCut => "finely cut",
-            Category::Ground => "ground",
-            Category::Liquid => "liquid",
-            Category::Mixed => "mixed",
-            Category::Cooked => "cooked",
-            Category::Preserved => "preserved",
-            Category::Shaped => "shaped",
-            Category::Coated => "coated",
-            Category::Other => "other",
-        }
+        CATEGORY_NAMES[self as usize].1
     }
 
     fn parse(text: &str) -> Option<Category> {
-        Some(match text {
-            "whole" => Category::Whole,
-            "trimmed" => Category::Trimmed,
-            "cut" => Category::Cut,
-            "finely cut" => Category::FinelyCut,
-            "ground" => Category::Ground,
-            "liquid" => Category::Liquid,
-            "mixed" => Category::Mixed,
-            "cooked" => Category::Cooked,
-            "preserved" => Category::Preserved,
-            "shaped" => Category::Shaped,
-            "coated" => Category::Coated,
-            "other" => Category::Other,
-            _ => return None,
-        })
+        CATEGORY_NAMES
+            .iter()
+            .find(|(_, n)| *n == text)
+            .map(|(c, _)| *c)
     }
 
     /// A starting state: what an ingredient is like when it comes from the store.
@@ -203,8 +195,7 @@ pub(crate) fn node_category(node: &ObjectNode) -> Category {
     food_state_category(node).unwrap_or(Category::Whole)
 }
 
-/// `node_category`, `None` for a node without food states (each state looked up once, where
-/// `has_food_state` and then `node_category` would look up some twice).
+/// `node_category`, `None` for a node without food states.
 pub(crate) fn food_state_category(node: &ObjectNode) -> Option<Category> {
     node.physical_states()
         .map(category)
@@ -273,14 +264,7 @@ fn undone(node: &ObjectNode, s: &str) -> bool {
 }
 
 fn comma_separated<'a>(states: impl Iterator<Item = &'a str>) -> SmolStr {
-    let mut out = SmolStrBuilder::new();
-    for (k, s) in states.enumerate() {
-        if k > 0 {
-            out.push_str(", ");
-        }
-        out.push_str(s);
-    }
-    out.finish()
+    states.collect::<Vec<_>>().join(", ").into()
 }
 
 #[cfg(test)]

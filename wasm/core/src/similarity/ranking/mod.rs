@@ -102,8 +102,6 @@ pub struct EmbeddingSimilarity {
     member_vectors: Vec<f32>,
     /// The category of each member of `member_vectors`, in its order.
     member_categories: Vec<usize>,
-    /// Below this similarity a substitute is flagged as low confidence (calibrated on the dev set).
-    confident_from: f32,
     profiles: Memo<String, Arc<Profile>, PROFILE_CACHE_LIMIT>,
     /// Answers of `rank_in_set` per (query, candidate set, top): ranking every label of a knowledge base
     /// is the costliest step of planning, and ingredient names recur from query to query.
@@ -187,7 +185,6 @@ impl EmbeddingSimilarity {
             options,
             member_vectors,
             member_categories,
-            confident_from: CONFIDENT_FROM,
             profiles: Memo::default(),
             ranked: Memo::default(),
             set_profiles: Mutex::new(Vec::new()),
@@ -478,7 +475,7 @@ impl Similarity for EmbeddingSimilarity {
         }
         let (q, c) = (self.profile(query), self.profile(label));
         let needed = if q.listed {
-            self.confident_from
+            CONFIDENT_FROM
         } else {
             UNLISTED_CONFIDENT_FROM
         };
