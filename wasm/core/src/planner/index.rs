@@ -595,12 +595,12 @@ impl PlannerIndex {
         })
     }
 
-    /// The motion most used to reach `state` (or a state of its category); `None` for starting states.
     /// The motion most used to bring an object into exactly the state word `state`, if any unit does.
     pub(crate) fn motion_making(&self, state: &str) -> Option<&str> {
         self.motion_for_state.get(state).map(String::as_str)
     }
 
+    /// The motion most used to reach `state` (or a state of its category); `None` for starting states.
     pub(crate) fn motion_for(&self, state: &str) -> Option<String> {
         let cat = category(state);
         if cat.is_starting() || cat == Category::Other {
