@@ -94,11 +94,10 @@ impl FoonError {
         message: impl Into<String>,
     ) -> FoonError {
         FoonError {
-            code,
-            message: message.into(),
             file: Some(file.to_string()),
             line: Some(line),
             column: Some(column),
+            ..FoonError::new(code, message)
         }
     }
 }

@@ -4,6 +4,7 @@
 
 use crate::contract::plan::{Performer, Plan, RobotOptions, RobotUnit, RobotView};
 use crate::error::{ErrorCode, FoonError, Result};
+use crate::vocab::taxonomy::data_lines;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
@@ -25,22 +26,15 @@ fn table() -> &'static BTreeMap<String, MotionFigures> {
 }
 
 fn parse_table(text: &str) -> BTreeMap<String, MotionFigures> {
-    let mut out = BTreeMap::new();
-    for (i, line) in text.lines().enumerate() {
-        if line.starts_with('#') || line.trim().is_empty() {
-            continue;
-        }
-        let fields: Vec<&str> = line.split('\t').collect();
-        let number = |k: usize| fields.get(k).and_then(|f| f.trim().parse::<f64>().ok());
-        match (number(1), number(2)) {
-            (Some(cost), Some(success_rate)) => {
-                out.insert(fields[0].to_string(), MotionFigures { cost, success_rate });
-            }
-            // the table is the project's own and tested; a bad row is a build-time mistake
-            _ => debug_assert!(false, "robot_motions.tsv:{}: bad row", i + 1),
-        }
-    }
-    out
+    // the table is the project's own: its test checks that every row reads
+    data_lines(text)
+        .filter_map(|line| {
+            let fields: Vec<&str> = line.split('\t').map(str::trim).collect();
+            let cost = fields.get(1)?.parse().ok()?;
+            let success_rate = fields.get(2)?.parse().ok()?;
+            Some((fields[0].to_string(), MotionFigures { cost, success_rate }))
+        })
+        .collect()
 }
 
 /// The figures the request's options give each motion: its own figures first, then the table's.
@@ -100,13 +94,10 @@ impl<'a> Motions<'a> {
             .map(|&r| r as f64)
             .or(listed.map(|f| f.success_rate));
         let default = table()["*"];
-        match (cost, rate) {
-            (None, None) => None,
-            (cost, rate) => Some(MotionFigures {
-                cost: cost.unwrap_or(default.cost),
-                success_rate: rate.unwrap_or(default.success_rate),
-            }),
-        }
+        (cost.is_some() || rate.is_some()).then(|| MotionFigures {
+            cost: cost.unwrap_or(default.cost),
+            success_rate: rate.unwrap_or(default.success_rate),
+        })
     }
 }
 
@@ -170,10 +161,7 @@ mod tests {
 
     #[test]
     fn the_table_reads_whole_and_has_a_default_row() {
-        let rows = MOTIONS_TSV
-            .lines()
-            .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
-            .count();
+        let rows = data_lines(MOTIONS_TSV).count();
         assert_eq!(table().len(), rows, "every row reads");
         assert!(table().contains_key("*"));
         for (m, f) in table() {

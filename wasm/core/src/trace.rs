@@ -106,7 +106,7 @@ pub struct NameMatch {
 
 /// How the equivalent was found: `override` (the caller's), `exact` (a FOON label), `tree` (most
 /// similar in the reference tree), `foon` (most similar in the universal FOON) or `none`.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct IngredientTrace {
     pub object: String,
     pub state: String,

@@ -81,25 +81,4 @@ mod tests {
         assert_eq!(parts, expected);
         assert!(split_bundle_bytes(b"O\ta\t1\n").is_empty());
     }
-
-    #[test]
-    fn a_bundle_with_a_non_utf8_file_names_that_file() {
-        let mut bytes = join_bundle([("good.txt", "O\ta\t1\nM\tm\nO\tb\t1\n")]).into_bytes();
-        bytes.extend_from_slice(b"#@file bad.txt\nO\ta\xff\t1\n");
-        let e = load(&[("kb.foon".into(), bytes)]).unwrap_err();
-        assert_eq!(
-            (e.code, e.file.as_deref(), e.line),
-            (crate::ErrorCode::InvalidUtf8, Some("bad.txt"), Some(1))
-        );
-    }
-
-    #[test]
-    fn errors_in_a_bundle_name_the_inner_file_and_line() {
-        let text = join_bundle([
-            ("good.txt", "O\ta\t1\nM\tm\nO\tb\t1\n"),
-            ("bad.txt", "O\ta\t1\nS\tin\t[bowl\n"),
-        ]);
-        let e = load(&[("kb.foon".into(), text.into_bytes())]).unwrap_err();
-        assert_eq!((e.file.as_deref(), e.line), (Some("bad.txt"), Some(2)));
-    }
 }

@@ -438,18 +438,4 @@ mod tests {
         // no contains {…} on the goal: derived from the subgraph's starting ingredients, utensils left out
         assert_eq!(k.goals[0].ingredients, vec!["tomato"]);
     }
-
-    #[test]
-    fn merge_does_not_depend_on_file_order() {
-        assert_eq!(
-            kb(&[("a.txt", A), ("b.txt", B)]),
-            kb(&[("b.txt", B), ("a.txt", A)])
-        );
-    }
-
-    #[test]
-    fn an_empty_knowledge_base_is_an_error() {
-        let e = KnowledgeBase::merge(&[parse_str("e.txt", "# nothing\n").unwrap()]).unwrap_err();
-        assert_eq!(e.code, ErrorCode::EmptyKnowledgeBase);
-    }
 }

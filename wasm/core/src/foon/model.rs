@@ -38,9 +38,7 @@ impl State {
             Some(StateArg::Ingredients(list)) => Some(format!("{{{}}}", list.join(","))),
         }
     }
-}
 
-impl State {
     /// The state as FOON writes it, `in [bowl]` or `contains {egg,milk}`.
     pub fn text(&self) -> SmolStr {
         match self.arg {
@@ -96,20 +94,18 @@ impl ObjectNode {
 
     /// Ingredients the object holds (`contains {…}`) as written (may repeat).
     pub fn contents(&self) -> impl Iterator<Item = &str> {
-        self.states
-            .iter()
-            .filter(|s| s.name == "contains")
-            .filter_map(|s| match &s.arg {
-                Some(StateArg::Ingredients(list)) => Some(list.iter().map(SmolStr::as_str)),
-                _ => None,
-            })
-            .flatten()
+        self.lists(|s| s.name == "contains")
     }
 
     /// Every name in any of the object's lists (`contains {…}`, `greased {…}`, ...).
     pub fn listed(&self) -> impl Iterator<Item = &str> {
+        self.lists(|_| true)
+    }
+
+    fn lists<'a>(&'a self, of: impl Fn(&State) -> bool + 'a) -> impl Iterator<Item = &'a str> {
         self.states
             .iter()
+            .filter(move |s| of(s))
             .filter_map(|s| match &s.arg {
                 Some(StateArg::Ingredients(list)) => Some(list.iter().map(SmolStr::as_str)),
                 _ => None,
@@ -140,15 +136,11 @@ impl ObjectNode {
 impl std::fmt::Display for ObjectNode {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(&self.label)?;
-        for (i, s) in self.states.iter().enumerate() {
-            f.write_str(if i == 0 { " (" } else { ", " })?;
-            write!(f, "{s}")?;
-        }
         if self.states.is_empty() {
-            Ok(())
-        } else {
-            f.write_str(")")
+            return Ok(());
         }
+        let states: Vec<String> = self.states.iter().map(State::to_string).collect();
+        write!(f, " ({})", states.join(", "))
     }
 }
 

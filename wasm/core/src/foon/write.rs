@@ -4,40 +4,30 @@
 
 use crate::foon::bundle::FILE_MARK;
 use crate::foon::kb::KnowledgeBase;
-use crate::foon::model::{NodeId, ObjectNode, State, StateArg};
+use crate::foon::model::{NodeId, ObjectNode, State};
 use crate::foon::read::{GoalMark, ParsedObject, Subgraph};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
 fn state_line(out: &mut String, s: &State) {
-    match &s.arg {
-        None => {
-            let _ = writeln!(out, "S\t{}", s.name);
-        }
-        Some(StateArg::Container(c)) => {
-            let _ = writeln!(out, "S\t{}\t[{c}]", s.name);
-        }
-        Some(StateArg::Ingredients(list)) => {
-            let _ = writeln!(out, "S\t{}\t{{{}}}", s.name, list.join(","));
-        }
-    }
+    let _ = match s.arg_text() {
+        None => writeln!(out, "S\t{}", s.name),
+        Some(arg) => writeln!(out, "S\t{}\t{arg}", s.name),
+    };
+}
+
+/// An object line; a goal carries its dish class, or a leading `!` without one.
+pub(crate) fn object_line(out: &mut String, label: &str, moves: bool, goal: Option<Option<u32>>) {
+    let (bang, class) = match goal {
+        None => ("", String::new()),
+        Some(None) => ("!", String::new()),
+        Some(Some(c)) => ("", format!("\t{c}")),
+    };
+    let _ = writeln!(out, "{bang}O\t{label}\t{}{class}", u8::from(moves));
 }
 
 fn object_lines(out: &mut String, node: &ObjectNode, moves: bool, goal: Option<&GoalMark>) {
-    let flag = u8::from(moves);
-    match goal {
-        None => {
-            let _ = writeln!(out, "O\t{}\t{flag}", node.label);
-        }
-        Some(GoalMark { dish_class: None }) => {
-            let _ = writeln!(out, "!O\t{}\t{flag}", node.label);
-        }
-        Some(GoalMark {
-            dish_class: Some(c),
-        }) => {
-            let _ = writeln!(out, "O\t{}\t{flag}\t{c}", node.label);
-        }
-    }
+    object_line(out, &node.label, moves, goal.map(|g| g.dish_class));
     for s in &node.states {
         state_line(out, s);
     }

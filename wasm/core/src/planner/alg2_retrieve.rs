@@ -14,7 +14,6 @@ use crate::foon::model::{NodeId, UnitId};
 use crate::trace::{CandidateUnit, Expansion, Outcome};
 use fixedbitset::FixedBitSet;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
-use std::cell::RefCell;
 use std::cmp::Ordering;
 use std::collections::VecDeque;
 
@@ -28,10 +27,8 @@ pub(crate) struct Retrieved {
     pub blocked: Vec<NodeId>,
 }
 
-/// The search's tables, kept by the thread and cleared for each retrieval: case 4 retrieves for many
-/// candidates.
-#[derive(Default)]
-pub(crate) struct Search {
+/// The state of one retrieval.
+struct Search {
     /// The unit chosen to make each node, handed to the result when the search completes.
     chosen: HashMap<NodeId, UnitId>,
     /// The nodes `chosen` makes: most inputs asked about are kitchen items nothing chosen makes.
@@ -40,82 +37,65 @@ pub(crate) struct Search {
     visited: FixedBitSet,
     /// Each node to expand with the unit that needs it (None for the root).
     queue: VecDeque<(NodeId, Option<UnitId>)>,
-    /// A unit's inputs, sorted.
-    inputs: Vec<NodeId>,
-    /// `depends_on`'s walk.
-    stack: Vec<NodeId>,
-    seen: HashSet<NodeId>,
-    /// `execution_order`'s units placed, nodes reached, and DFS stack.
-    done: FixedBitSet,
-    reached: FixedBitSet,
-    order_stack: Vec<(NodeId, Option<UnitId>)>,
 }
 
 impl Search {
-    /// Whether `target` can be reached from `from` following chosen producers (node → unit → inputs).
-    /// Inlined: the search asks it of every input of every candidate unit, and most are answered
-    /// without the walk.
-    #[inline]
-    fn depends_on(&mut self, kb: &KnowledgeBase, from: NodeId, target: NodeId) -> bool {
-        from == target || (self.made.contains(from.0) && self.walk_to(kb, from, target))
+    fn new(kb: &KnowledgeBase, root: NodeId) -> Search {
+        let mut visited = FixedBitSet::with_capacity(kb.nodes.len());
+        visited.insert(root.0);
+        Search {
+            chosen: HashMap::default(),
+            made: FixedBitSet::with_capacity(kb.nodes.len()),
+            in_tree: FixedBitSet::with_capacity(kb.units.len()),
+            visited,
+            queue: VecDeque::from([(root, None)]),
+        }
     }
 
-    /// `depends_on`'s walk from a made node, through made nodes only (the others lead nowhere).
-    fn walk_to(&mut self, kb: &KnowledgeBase, from: NodeId, target: NodeId) -> bool {
-        self.stack.clear();
-        self.seen.clear();
-        self.stack.push(from);
-        while let Some(n) = self.stack.pop() {
-            if !self.seen.insert(n) {
-                continue;
+    /// Whether `target` can be reached from `from` following chosen producers (node → unit → inputs);
+    /// only made nodes lead on.
+    fn depends_on(&self, kb: &KnowledgeBase, from: NodeId, target: NodeId) -> bool {
+        let mut stack = vec![from];
+        let mut seen = HashSet::default();
+        while let Some(n) = stack.pop() {
+            if n == target {
+                return true;
             }
-            for i in kb.units[self.chosen[&n]].input_nodes() {
-                if i == target {
-                    return true;
-                }
-                if self.made.contains(i.0) {
-                    self.stack.push(i);
-                }
+            if self.made.contains(n.0) && seen.insert(n) {
+                stack.extend(kb.units[self.chosen[&n]].input_nodes());
             }
         }
         false
     }
 
     /// Post-order of the chosen units from `root`: each unit after the units making its inputs.
-    fn execution_order(&mut self, kb: &KnowledgeBase, root: NodeId) -> Vec<UnitId> {
-        let mut order = Vec::with_capacity(self.chosen.len());
-        self.done.clear();
-        self.done.grow(kb.units.len());
-        self.reached.clear();
-        self.reached.grow(kb.nodes.len());
+    fn execution_order(&self, kb: &KnowledgeBase, root: NodeId) -> Vec<UnitId> {
+        let mut order = Vec::new();
+        let mut done = FixedBitSet::with_capacity(kb.units.len());
+        let mut reached = FixedBitSet::with_capacity(kb.nodes.len());
         // iterative DFS over made nodes: (node, its unit once its inputs are pushed)
-        let stack = &mut self.order_stack;
-        stack.clear();
+        let mut stack: Vec<(NodeId, Option<UnitId>)> = Vec::new();
         if self.made.contains(root.0) {
             stack.push((root, None));
         }
         while let Some((node, expanded)) = stack.pop() {
             if let Some(u) = expanded {
-                if !self.done.put(u.0) {
+                if !done.put(u.0) {
                     order.push(u);
                 }
                 continue;
             }
             let u = self.chosen[&node];
-            if self.reached.put(node.0) || self.done.contains(u.0) {
+            if reached.put(node.0) || done.contains(u.0) {
                 continue;
             }
             stack.push((node, Some(u)));
-            self.inputs.clear();
-            let made = &self.made;
-            self.inputs
-                .extend(kb.units[u].input_nodes().filter(|&n| made.contains(n.0)));
-            self.inputs.sort_unstable();
-            for &n in self.inputs.iter().rev() {
-                if !self.reached.contains(n.0) {
-                    stack.push((n, None));
-                }
-            }
+            let mut inputs: Vec<NodeId> = kb.units[u]
+                .input_nodes()
+                .filter(|&n| self.made.contains(n.0) && !reached.contains(n.0))
+                .collect();
+            inputs.sort_unstable();
+            stack.extend(inputs.into_iter().rev().map(|n| (n, None)));
         }
         order
     }
@@ -261,72 +241,60 @@ fn search(
     allowed: impl Fn(UnitId) -> bool,
     trace: &Recorder,
 ) -> Option<Retrieved> {
-    TABLES.with(|tables| {
-        // tables of its own should a retrieval ever run inside another (a panic would kill the WASM
-        // module)
-        let mut own = None;
-        let mut shared = tables.try_borrow_mut().ok();
-        let s = match shared.as_deref_mut() {
-            Some(s) => s,
-            None => own.insert(Search::default()),
-        };
-        s.start(kb, root);
-        let mut blocked = Vec::new();
-        while let Some((node, parent)) = s.queue.pop_front() {
-            if node != root && kb.kitchen.get(node.0).copied().unwrap_or(true) {
-                trace.record(|t| t.retrieval.push(taken(kb, node, Outcome::Kitchen)));
-                continue;
-            }
-            // a starting item of the recipe that needs it is taken from the kitchen, as that recipe did
-            if parent.is_some_and(|p| index.starts_in_recipe_of(p, node)) {
-                trace.record(|t| t.retrieval.push(taken(kb, node, Outcome::RecipeStart)));
-                continue;
-            }
-            if kb.producers.get(node.0).is_none_or(Vec::is_empty) {
-                continue;
-            }
-            let ctx = (kb, index, scorer);
-            let contest = s.contest(ctx, node, parent, prefer, trace);
-            let expansion =
-                |outcome, chosen| weigh(kb, scorer, node, outcome, contest.weighed, chosen);
-            let Some(Candidate {
-                unit: u,
-                same_recipe,
-                ..
-            }) = contest.best
-            else {
-                if contest.cyclic && !contest.cyclic_in_recipe {
-                    blocked.push(node);
-                }
-                let outcome = if contest.cyclic_in_recipe {
-                    Outcome::HadFromStart
-                } else {
-                    Outcome::Cycle
-                };
-                trace.record(|t| t.retrieval.push(expansion(outcome, None)));
-                continue;
-            };
-            if contest.cyclic_in_recipe && !same_recipe {
-                // the recipe only makes it again later (a lid put back): it had it from the start, and
-                // another recipe's way of making it would bring that recipe along
-                trace.record(|t| t.retrieval.push(expansion(Outcome::HadFromStart, None)));
-                continue;
-            }
-            trace.record(|t| {
-                t.retrieval
-                    .push(expansion(Outcome::Expanded, Some((u, index))))
-            });
-            if !allowed(u) {
-                return None;
-            }
-            s.expand(kb, node, u);
+    let mut s = Search::new(kb, root);
+    let mut blocked = Vec::new();
+    while let Some((node, parent)) = s.queue.pop_front() {
+        if node != root && kb.kitchen.get(node.0).copied().unwrap_or(true) {
+            trace.record(|t| t.retrieval.push(taken(kb, node, Outcome::Kitchen)));
+            continue;
         }
-        let units = s.execution_order(kb, root);
-        Some(Retrieved {
-            units,
-            chosen: std::mem::take(&mut s.chosen),
-            blocked,
-        })
+        // a starting item of the recipe that needs it is taken from the kitchen, as that recipe did
+        if parent.is_some_and(|p| index.starts_in_recipe_of(p, node)) {
+            trace.record(|t| t.retrieval.push(taken(kb, node, Outcome::RecipeStart)));
+            continue;
+        }
+        if kb.producers.get(node.0).is_none_or(Vec::is_empty) {
+            continue;
+        }
+        let ctx = (kb, index, scorer);
+        let contest = s.contest(ctx, node, parent, prefer, trace);
+        let expansion = |outcome, chosen| weigh(kb, scorer, node, outcome, contest.weighed, chosen);
+        let Some(Candidate {
+            unit: u,
+            same_recipe,
+            ..
+        }) = contest.best
+        else {
+            if contest.cyclic && !contest.cyclic_in_recipe {
+                blocked.push(node);
+            }
+            let outcome = if contest.cyclic_in_recipe {
+                Outcome::HadFromStart
+            } else {
+                Outcome::Cycle
+            };
+            trace.record(|t| t.retrieval.push(expansion(outcome, None)));
+            continue;
+        };
+        if contest.cyclic_in_recipe && !same_recipe {
+            // the recipe only makes it again later (a lid put back): it had it from the start, and
+            // another recipe's way of making it would bring that recipe along
+            trace.record(|t| t.retrieval.push(expansion(Outcome::HadFromStart, None)));
+            continue;
+        }
+        trace.record(|t| {
+            t.retrieval
+                .push(expansion(Outcome::Expanded, Some((u, index))))
+        });
+        if !allowed(u) {
+            return None;
+        }
+        s.expand(kb, node, u);
+    }
+    Some(Retrieved {
+        units: s.execution_order(kb, root),
+        chosen: s.chosen,
+        blocked,
     })
 }
 
@@ -341,22 +309,6 @@ struct Contest {
 }
 
 impl Search {
-    /// Cleared for a retrieval from `root` (the last complete retrieval took the table `chosen`).
-    fn start(&mut self, kb: &KnowledgeBase, root: NodeId) {
-        self.chosen.clear();
-        for (set, len) in [
-            (&mut self.made, kb.nodes.len()),
-            (&mut self.in_tree, kb.units.len()),
-            (&mut self.visited, kb.nodes.len()),
-        ] {
-            set.clear();
-            set.grow(len);
-        }
-        self.queue.clear();
-        self.queue.push_back((root, None));
-        self.visited.insert(root.0);
-    }
-
     /// The best of the units making `node`, needed by unit `parent` (`None` for the root, where units
     /// of subgraph `prefer` count as the recipe's).
     fn contest(
@@ -412,10 +364,9 @@ impl Search {
         self.chosen.insert(node, u);
         self.made.insert(node.0);
         self.in_tree.insert(u.0);
-        self.inputs.clear();
-        self.inputs.extend(kb.units[u].input_nodes());
-        self.inputs.sort_unstable();
-        for &n in &self.inputs {
+        let mut inputs: Vec<NodeId> = kb.units[u].input_nodes().collect();
+        inputs.sort_unstable();
+        for n in inputs {
             if !self.visited.put(n.0) {
                 self.queue.push_back((n, Some(u)));
             }
@@ -475,8 +426,4 @@ fn weigh(
         chosen: at,
         why,
     }
-}
-
-thread_local! {
-    static TABLES: RefCell<Search> = RefCell::default();
 }

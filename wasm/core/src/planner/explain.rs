@@ -107,15 +107,9 @@ impl Trace {
             let matched = self.ingredients.iter().find(|i| same(i));
             let record = IngredientTrace {
                 object: object.to_string(),
-                state: String::new(),
-                route: String::new(),
                 tree_match: matched.and_then(|m| m.tree_match.clone()),
                 foon_match: matched.and_then(|m| m.foon_match.clone()),
-                case: None,
-                planned: false,
-                reason: None,
-                state_choice: None,
-                attached: None,
+                ..IngredientTrace::default()
             };
             self.ingredients.push(record);
             self.ingredients.len() - 1

@@ -104,15 +104,10 @@ static NEXT_ID: AtomicU64 = AtomicU64::new(1);
 /// Occurrences per dish class (`None`: all classes).
 type ClassCounts = HashMap<Option<u32>, u32>;
 
+/// The key with the highest count; ties to the smallest key, whatever the order counts came in.
 fn best<K: Ord + Clone>(counts: &BTreeMap<K, u32>) -> Option<K> {
-    // highest count; ties to the smallest key (BTreeMap order), independent of insertion order
-    let mut out: Option<(&K, u32)> = None;
-    for (k, &c) in counts {
-        if out.is_none_or(|(_, b)| c > b) {
-            out = Some((k, c));
-        }
-    }
-    out.map(|(k, _)| k.clone())
+    let ranked = counts.iter().max_by(|a, b| a.1.cmp(b.1).then(b.0.cmp(a.0)));
+    ranked.map(|(k, _)| k.clone())
 }
 
 /// Counts per (word, class) counted on borrowed words, as owned word -> class -> count.
@@ -595,12 +590,12 @@ impl PlannerIndex {
         })
     }
 
-    /// The motion most used to reach `state` (or a state of its category); `None` for starting states.
     /// The motion most used to bring an object into exactly the state word `state`, if any unit does.
     pub(crate) fn motion_making(&self, state: &str) -> Option<&str> {
         self.motion_for_state.get(state).map(String::as_str)
     }
 
+    /// The motion most used to reach `state` (or a state of its category); `None` for starting states.
     pub(crate) fn motion_for(&self, state: &str) -> Option<String> {
         let cat = category(state);
         if cat.is_starting() || cat == Category::Other {

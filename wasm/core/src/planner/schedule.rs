@@ -152,8 +152,7 @@ pub(crate) fn schedule(tree: &mut Tree, value: &[usize], order: Vec<TUnitId>) ->
 /// Drops every unit equal in value to an earlier one (its products are the earlier one's).
 fn drop_duplicates(tree: &mut Tree, units: &mut Vec<TUnitId>, shapes: &Shapes) {
     let mut dropped = Vec::new();
-    let mut seen: HashSet<(&str, &[Value], &[Value])> =
-        HashSet::with_capacity_and_hasher(units.len(), Default::default());
+    let mut seen: HashSet<(&str, &[Value], &[Value])> = HashSet::default();
     units.retain(|&u| {
         let key = (
             tree.units[u].motion.as_ref(),
@@ -172,51 +171,39 @@ fn drop_duplicates(tree: &mut Tree, units: &mut Vec<TUnitId>, shapes: &Shapes) {
     }
 }
 
-/// "Made before used" edges: (consumer, maker, value) by positions in the unit list, grouped by
-/// consumer; `from[v]..from[v + 1]` are the edges into `v`.
+/// "Made before used" edges by position in the unit list: `into[v]` holds (maker, value) for each input
+/// of unit `v` that another unit makes.
 struct Needs {
-    edges: Vec<(usize, usize, Value)>,
-    from: Vec<usize>,
+    into: Vec<Vec<(usize, Value)>>,
 }
 
 impl Needs {
     /// Every maker of every input that is not a kitchen item.
     fn new(units: &[TUnitId], shapes: &Shapes, vals: &Values) -> Needs {
-        // the makers of each value, by position (values are dense: a counting sort)
-        let made = units.iter().flat_map(|&u| shapes.made(u).iter().copied());
-        let first = offsets(vals.start.len(), made);
-        let mut makers = vec![0usize; first[first.len() - 1]];
-        let mut next = first.clone();
+        let mut makers: Vec<Vec<usize>> = vec![Vec::new(); vals.start.len()];
         for (i, &u) in units.iter().enumerate() {
             for &m in shapes.made(u) {
-                makers[next[m]] = i;
-                next[m] += 1;
+                makers[m].push(i);
             }
         }
-        let mut edges = Vec::with_capacity(2 * units.len());
+        let mut into = vec![Vec::new(); units.len()];
         for (i, &u) in units.iter().enumerate() {
-            // inputs are sorted: a repeated value follows its first use
-            let mut last = None;
-            for &x in shapes.inputs(u) {
-                if vals.start[x] || last.replace(x) == Some(x) {
-                    continue;
-                }
-                for &p in &makers[first[x]..first[x + 1]] {
-                    if p != i {
-                        edges.push((i, p, x));
-                    }
-                }
+            let mut inputs = shapes.inputs(u).to_vec();
+            inputs.dedup(); // sorted: a repeated value follows its first use
+            for x in inputs.into_iter().filter(|&x| !vals.start[x]) {
+                into[i].extend(makers[x].iter().filter(|&&p| p != i).map(|&p| (p, x)));
             }
         }
-        let mut needs = Needs {
-            from: offsets(units.len(), edges.iter().map(|e| e.0)),
-            edges,
-        };
-        let remade = (0..vals.start.len()).filter(|&x| first[x + 1] - first[x] > 1);
-        for x in remade {
-            needs.first_making(units, shapes, x, &makers[first[x]..first[x + 1]]);
+        let mut needs = Needs { into };
+        for (x, makers) in makers.iter().enumerate().filter(|(_, m)| m.len() > 1) {
+            needs.first_making(units, shapes, x, makers);
         }
         needs
+    }
+
+    /// Every edge as (consumer, maker, value).
+    fn edges(&self) -> impl Iterator<Item = (usize, usize, Value)> + '_ {
+        (self.into.iter().enumerate()).flat_map(|(v, e)| e.iter().map(move |&(p, x)| (v, p, x)))
     }
 
     /// A value made again by a unit that needs one of its takers (the open pot made again by the uncover,
@@ -228,11 +215,10 @@ impl Needs {
                 && shapes.outputs(u).binary_search(&x).is_err()
         };
         let takers: Vec<bool> = units.iter().map(|&u| takes(u)).collect();
-        let mut walk = Walk::new(units.len());
         let again: Vec<usize> = makers
             .iter()
             .copied()
-            .filter(|&m| self.needs_any(&mut walk, m, x, |v| takers[v]))
+            .filter(|&m| self.needs_any(m, x, |v| takers[v]))
             .collect();
         if again.is_empty() || again.len() == makers.len() {
             return;
@@ -240,74 +226,37 @@ impl Needs {
         // the takers the making again comes after: the cover, not every taker (FOON's stir takes the pot
         // without giving it back, and the uncover does not need it)
         let detour: Vec<bool> = (0..units.len())
-            .map(|t| {
-                takers[t]
-                    && again
-                        .iter()
-                        .any(|&m| self.needs_any(&mut walk, m, x, |v| v == t))
-            })
+            .map(|t| takers[t] && again.iter().any(|&m| self.needs_any(m, x, |v| v == t)))
             .collect();
         let early: Vec<bool> = (0..units.len())
-            .map(|c| !self.needs_any(&mut walk, c, x, |v| detour[v]))
+            .map(|c| !self.needs_any(c, x, |v| detour[v]))
             .collect();
-        let before = self.edges.len();
-        self.edges
-            .retain(|&(c, m, v)| !(v == x && early[c] && again.contains(&m)));
-        if self.edges.len() != before {
-            self.from = offsets(self.from.len() - 1, self.edges.iter().map(|e| e.0));
+        for (_, edges) in self.into.iter_mut().enumerate().filter(|(c, _)| early[*c]) {
+            edges.retain(|&(m, v)| !(v == x && again.contains(&m)));
         }
     }
 
     /// Whether unit `from` is, or needs (directly or through others, other than for the value `x`), a
     /// unit `found` accepts.
-    fn needs_any(
-        &self,
-        walk: &mut Walk,
-        from: usize,
-        x: Value,
-        found: impl Fn(usize) -> bool,
-    ) -> bool {
-        walk.finds(from, found, |v, next| {
-            next.extend(self.of(v).iter().filter(|e| e.2 != x).map(|e| e.1));
+    fn needs_any(&self, from: usize, x: Value, found: impl Fn(usize) -> bool) -> bool {
+        walk_finds(self.into.len(), from, found, |v, next| {
+            next.extend(self.into[v].iter().filter(|e| e.1 != x).map(|e| e.0));
         })
-    }
-
-    fn of(&self, v: usize) -> &[(usize, usize, Value)] {
-        &self.edges[self.from[v]..self.from[v + 1]]
     }
 
     /// Drops each edge inside a cycle whose value the consumer also gets from a maker outside it.
     /// False when there is none.
     fn relax(&mut self, comp: &[usize]) -> bool {
-        let inner = |&(v, p, _): &(usize, usize, Value)| comp[p] == comp[v];
-        let redundant: Vec<bool> = self
-            .edges
-            .iter()
-            .map(|e| inner(e) && self.of(e.0).iter().any(|f| f.2 == e.2 && !inner(f)))
-            .collect();
-        if !redundant.contains(&true) {
-            return false;
+        let mut changed = false;
+        for (v, edges) in self.into.iter_mut().enumerate() {
+            let inner = |&(p, _): &(usize, Value)| comp[p] == comp[v];
+            let outside: Vec<Value> = edges.iter().filter(|e| !inner(e)).map(|e| e.1).collect();
+            let before = edges.len();
+            edges.retain(|e| !(inner(e) && outside.contains(&e.1)));
+            changed |= edges.len() != before;
         }
-        let mut k = 0;
-        self.edges.retain(|_| {
-            k += 1;
-            !redundant[k - 1]
-        });
-        self.from = offsets(self.from.len() - 1, self.edges.iter().map(|e| e.0));
-        true
+        changed
     }
-}
-
-/// Where each group of a table grouped by key starts: group `k` of `0..n` is `from[k]..from[k + 1]`.
-fn offsets(n: usize, keys: impl Iterator<Item = usize>) -> Vec<usize> {
-    let mut from = vec![0usize; n + 1];
-    for k in keys {
-        from[k + 1] += 1;
-    }
-    for k in 1..=n {
-        from[k] += from[k - 1];
-    }
-    from
 }
 
 /// Kahn's order over "made before used" edges, ties in the tree's own order. A consumer whose input is
@@ -330,17 +279,16 @@ fn topological(
         // a cycle (an edge inside a component: there are no loops): break the edge into its earliest
         // consumer from its latest maker
         let worst = needs
-            .edges
-            .iter()
-            .filter(|&&(v, p, _)| comp[p] == comp[v])
-            .min_by_key(|&&(v, p, x)| (v, std::cmp::Reverse(p), x));
-        if let Some(&(v, p, x)) = worst {
+            .edges()
+            .filter(|&(v, p, _)| comp[p] == comp[v])
+            .min_by_key(|&(v, p, x)| (v, std::cmp::Reverse(p), x));
+        if let Some((v, p, x)) = worst {
             return Err((units[p], units[v], x));
         }
         break;
     }
     // each maker's users, once per pair: (maker, consumer) sorted by maker
-    let mut arcs: Vec<(usize, usize)> = needs.edges.iter().map(|&(v, p, _)| (p, v)).collect();
+    let mut arcs: Vec<(usize, usize)> = needs.edges().map(|(v, p, _)| (p, v)).collect();
     arcs.sort_unstable();
     arcs.dedup();
     users_before_change(units, shapes, &mut arcs);
@@ -390,7 +338,6 @@ fn users_before_change(units: &[TUnitId], shapes: &Shapes, arcs: &mut Vec<(usize
     passed.dedup();
     // the arcs added, apart from the sorted ones until the end
     let mut added: Vec<(usize, usize)> = Vec::new();
-    let mut walk = Walk::new(units.len());
     // along the arcs (sorted) and those added, from a unit to those after it
     let after = |v: usize, next: &mut Vec<usize>, added: &[(usize, usize)]| {
         let out = arcs.partition_point(|a| a.0 < v)..arcs.partition_point(|a| a.0 <= v);
@@ -406,7 +353,9 @@ fn users_before_change(units: &[TUnitId], shapes: &Shapes, arcs: &mut Vec<(usize
             let from = passed.partition_point(|e| e.0 < x);
             for &(_, p) in passed[from..].iter().take_while(|e| e.0 == x) {
                 // never closing a cycle: `p` must not come after `c` already
-                if p != c && !walk.finds(c, |v| v == p, |v, next| after(v, next, &added)) {
+                if p != c
+                    && !walk_finds(units.len(), c, |v| v == p, |v, next| after(v, next, &added))
+                {
                     added.push((p, c));
                 }
             }
@@ -419,41 +368,25 @@ fn users_before_change(units: &[TUnitId], shapes: &Shapes, arcs: &mut Vec<(usize
     }
 }
 
-/// Buffers for walks over the units by position: a flag per unit, and the units still to visit.
-struct Walk {
-    seen: Vec<bool>,
-    stack: Vec<usize>,
-}
-
-impl Walk {
-    fn new(n: usize) -> Walk {
-        Walk {
-            seen: vec![false; n],
-            stack: Vec::new(),
+/// Whether a walk over the units by position from `from` (of `n`), going on from each unit to those
+/// `next` adds, comes to a unit `found` accepts.
+fn walk_finds(
+    n: usize,
+    from: usize,
+    found: impl Fn(usize) -> bool,
+    next: impl Fn(usize, &mut Vec<usize>),
+) -> bool {
+    let mut seen = vec![false; n];
+    let mut stack = vec![from];
+    while let Some(v) = stack.pop() {
+        if found(v) {
+            return true;
+        }
+        if !std::mem::replace(&mut seen[v], true) {
+            next(v, &mut stack);
         }
     }
-
-    /// Whether a walk from `from`, going on from each unit to those `next` adds, comes to a unit `found`
-    /// accepts.
-    fn finds(
-        &mut self,
-        from: usize,
-        found: impl Fn(usize) -> bool,
-        next: impl Fn(usize, &mut Vec<usize>),
-    ) -> bool {
-        self.seen.fill(false);
-        self.stack.clear();
-        self.stack.push(from);
-        while let Some(v) = self.stack.pop() {
-            if found(v) {
-                return true;
-            }
-            if !std::mem::replace(&mut self.seen[v], true) {
-                next(v, &mut self.stack);
-            }
-        }
-        false
-    }
+    false
 }
 
 /// Strongly connected components of the "needs" graph (Tarjan, iterative): a component id per unit.
@@ -481,7 +414,7 @@ fn components(n: usize, needs: &Needs) -> Vec<usize> {
                 stack.push(v);
                 on_stack[v] = true;
             }
-            if let Some(&(_, w, _)) = needs.of(v).get(*e) {
+            if let Some(&(w, _)) = needs.into[v].get(*e) {
                 *e += 1;
                 if index[w] == usize::MAX {
                     work.push((w, 0));
@@ -545,23 +478,13 @@ fn drop_dead(
 /// Every planned ingredient must be in the plan as shown (a label or in a list of contents); one the
 /// ordering had to drop is reported unplannable with the reason rather than claimed.
 pub(crate) fn confirm_planned(tree: &Tree, order: &[TUnitId], outcomes: &mut [IngredientOutcome]) {
-    // the plan's slots, each once
-    let mut in_plan = vec![false; tree.slots.len()];
-    let mut slots = Vec::with_capacity(tree.slots.len());
-    for &u in order {
-        let unit = &tree.units[u];
-        for &(x, _) in unit.inputs.iter().chain(unit.outputs.iter()) {
-            if !in_plan[x] {
-                in_plan[x] = true;
-                slots.push(x);
-            }
-        }
-    }
-    // a few ingredients against a few dozen nodes: looked up directly rather than hashed
     let present = |object: &str| {
-        slots.iter().any(|&s| {
-            let node = &tree.slots[s].node;
-            node.label == object || node.listed().any(|i| i == object)
+        order.iter().any(|&u| {
+            let unit = &tree.units[u];
+            unit.inputs.iter().chain(&unit.outputs).any(|&(x, _)| {
+                let node = &tree.slots[x].node;
+                node.label == object || node.listed().any(|i| i == object)
+            })
         })
     };
     for o in outcomes.iter_mut() {

@@ -8,10 +8,9 @@
 use crate::foon::kb::KnowledgeBase;
 use crate::foon::model::ObjectNode;
 use crate::vocab::foods;
+use crate::vocab::states::{akin, is_food_state};
 use crate::vocab::taxonomy::is_utensil;
 use rustc_hash::FxHashMap as HashMap;
-
-use crate::vocab::states::{akin, is_food_state};
 
 /// Below this many transitions of a form the model says nothing of it (too few recipes to tell).
 const MIN_EVIDENCE: u32 = 20;
@@ -72,18 +71,14 @@ impl Transitions {
     ) {
         *self.handled.entry((form, motion.to_string())).or_insert(0) += 1;
         *self.evidence.entry(form).or_insert(0) += 1;
-        let mut any = false;
-        for s in gained {
-            any = true;
-            *self
-                .reached
-                .entry((form, motion.to_string(), s.to_string()))
-                .or_insert(0) += 1;
+        let mut states: Vec<String> = gained.map(str::to_string).collect();
+        if states.is_empty() {
+            states.push(String::new());
         }
-        if !any {
+        for s in states {
             *self
                 .reached
-                .entry((form, motion.to_string(), String::new()))
+                .entry((form, motion.to_string(), s))
                 .or_insert(0) += 1;
         }
     }

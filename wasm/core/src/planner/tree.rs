@@ -104,17 +104,25 @@ pub(crate) fn rename_item(list: &mut Vec<SmolStr>, from: &str, to: &str) {
     }
 }
 
-/// Keeps the first use of each slot, in order. In place: a unit has a handful of inputs, and this runs
-/// for every unit of every round of `drop_redundant_units`.
+/// Keeps the first use of each slot, in order.
 pub(crate) fn dedup_slots(uses: &mut Vec<(SlotId, bool)>) {
-    let mut kept = 0;
-    for j in 0..uses.len() {
-        if !uses[..kept].iter().any(|x| x.0 == uses[j].0) {
-            uses.swap(kept, j);
-            kept += 1;
+    let mut seen = HashSet::default();
+    uses.retain(|x| seen.insert(x.0));
+}
+
+/// Replaces each use of a slot by the slot standing for it in `alias` (the end of its chain), keeping
+/// the first use of each.
+fn follow_aliases(uses: &mut Vec<(SlotId, bool)>, alias: &HashMap<SlotId, SlotId>) {
+    for i in uses.iter_mut() {
+        // bounded, should the aliases ever form a cycle
+        for _ in 0..64 {
+            match alias.get(&i.0) {
+                Some(&a) if a != i.0 => i.0 = a,
+                _ => break,
+            }
         }
     }
-    uses.truncate(kept);
+    dedup_slots(uses);
 }
 
 /// What a unit does, in values (see `Tree::values`): its motion's id, its inputs' values sorted, a
@@ -361,18 +369,11 @@ impl<'kb> Tree<'kb> {
         (0..self.slots.len()).filter(move |&s| live[s])
     }
 
-    /// Live slots with the label, in slot order (asked many times per plan, often of a label the tree
-    /// lacks: the labels are compared before the units are walked, and only for the few that match).
+    /// Live slots with the label, in slot order.
     pub fn slots_with_label(&self, label: &str) -> Vec<SlotId> {
-        let mut with: Vec<SlotId> = self
-            .slots
-            .iter()
-            .enumerate()
-            .filter(|(_, x)| x.node.label == label)
-            .map(|(s, _)| s)
-            .collect();
-        with.retain(|&s| self.is_live(s));
-        with
+        (0..self.slots.len())
+            .filter(|&s| self.slots[s].node.label == label && self.is_live(s))
+            .collect()
     }
 
     /// Whether the slot is used by a live unit, or is the goal (its live producer's outputs are looked
@@ -641,17 +642,7 @@ impl<'kb> Tree<'kb> {
             }
             // apply the last aliases to every live unit, then forget units the goal no longer needs
             for unit in self.units.iter_mut().filter(|u| u.alive) {
-                for i in unit.inputs.iter_mut() {
-                    let mut guard = 0;
-                    while let Some(&a) = alias.get(&i.0) {
-                        if a == i.0 || guard > 64 {
-                            break;
-                        }
-                        i.0 = a;
-                        guard += 1;
-                    }
-                }
-                dedup_slots(&mut unit.inputs);
+                follow_aliases(&mut unit.inputs, &alias);
             }
             order = self.order();
             self.keep_only(&order);
@@ -679,18 +670,7 @@ impl<'kb> Tree<'kb> {
         }
         let mut first: HashMap<Vec<usize>, TUnitId> = HashMap::default();
         for (pos, &u) in order.iter().enumerate() {
-            {
-                let unit = &mut self.units[u];
-                for i in unit.inputs.iter_mut() {
-                    while let Some(&a) = alias.get(&i.0) {
-                        if a == i.0 {
-                            break;
-                        }
-                        i.0 = a;
-                    }
-                }
-                dedup_slots(&mut unit.inputs);
-            }
+            follow_aliases(&mut self.units[u].inputs, alias);
             let unit = &self.units[u];
             let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
             let key = value_key(unit, motion[u], value);
@@ -742,8 +722,7 @@ impl<'kb> Tree<'kb> {
 
     /// An id per unit, equal for units with the same motion.
     fn motion_ids(&self) -> Vec<usize> {
-        let mut ids: HashMap<&str, usize> =
-            HashMap::with_capacity_and_hasher(self.units.len(), Default::default());
+        let mut ids: HashMap<&str, usize> = HashMap::default();
         self.units
             .iter()
             .map(|u| {
@@ -758,8 +737,7 @@ impl<'kb> Tree<'kb> {
     /// only among their slots): every other slot gets an id of its own.
     fn values(&self) -> Vec<usize> {
         let live = self.live_marks();
-        let mut ids: HashMap<&ObjectNode, usize> =
-            HashMap::with_capacity_and_hasher(self.slots.len(), Default::default());
+        let mut ids: HashMap<&ObjectNode, usize> = HashMap::default();
         let mut next = 0;
         self.slots
             .iter()

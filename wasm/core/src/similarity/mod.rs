@@ -2,7 +2,6 @@
 //! retrieval heuristic and substitution all go through it), so the embedding table can replace the
 //! exact-match default without touching the planner.
 
-mod cones;
 pub mod ranking;
 pub mod table;
 

@@ -4,8 +4,7 @@
 use crate::foon::label::normalize_word;
 use crate::foon::model::ObjectNode;
 use rustc_hash::FxHashMap as HashMap;
-use smol_str::{SmolStr, SmolStrBuilder};
-use std::cell::RefCell;
+use smol_str::SmolStr;
 use std::sync::OnceLock;
 
 const STATES_TSV: &str = include_str!("../../data/states.tsv");
@@ -47,40 +46,32 @@ pub enum Category {
     Other,
 }
 
+/// Each category with its name in `states.tsv`.
+const CATEGORY_NAMES: [(Category, &str); 12] = [
+    (Category::Whole, "whole"),
+    (Category::Trimmed, "trimmed"),
+    (Category::Cut, "cut"),
+    (Category::FinelyCut, "finely cut"),
+    (Category::Ground, "ground"),
+    (Category::Liquid, "liquid"),
+    (Category::Mixed, "mixed"),
+    (Category::Cooked, "cooked"),
+    (Category::Preserved, "preserved"),
+    (Category::Shaped, "shaped"),
+    (Category::Coated, "coated"),
+    (Category::Other, "other"),
+];
+
 impl Category {
     pub fn name(self) -> &'static str {
-        match self {
-            Category::Whole => "whole",
-            Category::Trimmed => "trimmed",
-            Category::Cut => "cut",
-            Category::FinelyCut => "finely cut",
-            Category::Ground => "ground",
-            Category::Liquid => "liquid",
-            Category::Mixed => "mixed",
-            Category::Cooked => "cooked",
-            Category::Preserved => "preserved",
-            Category::Shaped => "shaped",
-            Category::Coated => "coated",
-            Category::Other => "other",
-        }
+        CATEGORY_NAMES[self as usize].1
     }
 
     fn parse(text: &str) -> Option<Category> {
-        Some(match text {
-            "whole" => Category::Whole,
-            "trimmed" => Category::Trimmed,
-            "cut" => Category::Cut,
-            "finely cut" => Category::FinelyCut,
-            "ground" => Category::Ground,
-            "liquid" => Category::Liquid,
-            "mixed" => Category::Mixed,
-            "cooked" => Category::Cooked,
-            "preserved" => Category::Preserved,
-            "shaped" => Category::Shaped,
-            "coated" => Category::Coated,
-            "other" => Category::Other,
-            _ => return None,
-        })
+        CATEGORY_NAMES
+            .iter()
+            .find(|(_, n)| *n == text)
+            .map(|(c, _)| *c)
     }
 
     /// A starting state: what an ingredient is like when it comes from the store.
@@ -156,46 +147,19 @@ pub(crate) fn akin(a: &str, b: &str) -> bool {
 /// The category of a state word (normalised or not). Unlisted words are classified by their parts
 /// ("thinly sliced" → cut, "whole wheat" → whole); anything else is `Other`.
 pub fn category(state: &str) -> Category {
-    // planning asks for the same few dozen states thousands of times per plan
-    thread_local! {
-        static SEEN: RefCell<HashMap<String, Category>> = RefCell::new(HashMap::default());
-    }
-    if let Some(e) = table().get(state) {
+    let table = table();
+    if let Some(e) = table.get(state) {
         return e.category;
     }
-    if let Some(c) = SEEN.with(|m| m.borrow().get(state).copied()) {
-        return c;
-    }
-    let c = classify(state);
-    if state.len() <= MAX_REMEMBERED_STATE {
-        SEEN.with(|m| {
-            let mut m = m.borrow_mut();
-            if m.len() >= MAX_REMEMBERED_STATES {
-                m.clear();
-            }
-            m.insert(state.to_string(), c);
-        });
-    }
-    c
-}
-
-/// Bounds of the memo of `category` (a hostile knowledge base may have any number of states).
-const MAX_REMEMBERED_STATES: usize = 4096;
-const MAX_REMEMBERED_STATE: usize = 64;
-
-fn classify(state: &str) -> Category {
     let word = normalize_word(state);
-    if let Some(e) = table().get(&word) {
+    if let Some(e) = table.get(&word) {
         return e.category;
     }
     // the last listed word decides ("finely chopped", "cooked and sliced")
-    let mut found = None;
-    for part in word.split([' ', '-', ',']) {
-        if let Some(e) = table().get(part) {
-            found = Some(e.category);
-        }
-    }
-    found.unwrap_or(Category::Other)
+    word.split([' ', '-', ','])
+        .rev()
+        .find_map(|part| table.get(part))
+        .map_or(Category::Other, |e| e.category)
 }
 
 /// The category a node's food states put it in (the furthest along; whole when it has none).
@@ -203,8 +167,7 @@ pub(crate) fn node_category(node: &ObjectNode) -> Category {
     food_state_category(node).unwrap_or(Category::Whole)
 }
 
-/// `node_category`, `None` for a node without food states (each state looked up once, where
-/// `has_food_state` and then `node_category` would look up some twice).
+/// `node_category`, `None` for a node without food states.
 pub(crate) fn food_state_category(node: &ObjectNode) -> Option<Category> {
     node.physical_states()
         .map(category)
@@ -273,14 +236,7 @@ fn undone(node: &ObjectNode, s: &str) -> bool {
 }
 
 fn comma_separated<'a>(states: impl Iterator<Item = &'a str>) -> SmolStr {
-    let mut out = SmolStrBuilder::new();
-    for (k, s) in states.enumerate() {
-        if k > 0 {
-            out.push_str(", ");
-        }
-        out.push_str(s);
-    }
-    out.finish()
+    states.collect::<Vec<_>>().join(", ").into()
 }
 
 #[cfg(test)]

@@ -6,41 +6,22 @@ mod pddl;
 
 pub use pddl::{action_name, pddl, Pddl};
 
-use crate::contract::plan::{Plan, PlanNode};
+use crate::contract::plan::{Plan, PlanNode, ProgressLine};
+use crate::foon::write::object_line;
 use crate::vocab::taxonomy::is_utensil;
-use serde::Serialize;
-use smol_str::SmolStr;
+use serde_json::json;
 use std::fmt::Write;
 
 fn foon_object(out: &mut String, n: &PlanNode, moves: bool, goal_class: Option<Option<u32>>) {
-    // the plain dialect marks a goal with its dish class; without a class, with a leading '!'
-    match goal_class {
-        None => {
-            let _ = write!(out, "O\t{}\t{}", n.label, u8::from(moves));
-        }
-        Some(None) => {
-            let _ = write!(out, "!O\t{}\t{}", n.label, u8::from(moves));
-        }
-        Some(Some(c)) => {
-            let _ = write!(out, "O\t{}\t{}\t{c}", n.label, u8::from(moves));
-        }
-    }
-    out.push('\n');
+    object_line(out, &n.label, moves, goal_class);
     for s in &n.states {
         // "in [bowl]" -> "S\tin\t[bowl]"; "contains {a,b}" -> "S\tcontains\t{a,b}"
-        match s
-            .find([' '])
-            .filter(|_| s.ends_with(']') || s.ends_with('}'))
-        {
-            Some(_) => {
-                let at = s.rfind(" [").or_else(|| s.rfind(" {")).unwrap_or(s.len());
-                let (name, arg) = s.split_at(at);
-                let _ = writeln!(out, "S\t{}\t{}", name, arg.trim_start());
-            }
-            None => {
-                let _ = writeln!(out, "S\t{s}");
-            }
-        }
+        let arg_at = (s.contains(' ') && s.ends_with([']', '}']))
+            .then(|| s.rfind(" [").or_else(|| s.rfind(" {")).unwrap_or(s.len()));
+        let _ = match arg_at {
+            Some(at) => writeln!(out, "S\t{}\t{}", &s[..at], s[at..].trim_start()),
+            None => writeln!(out, "S\t{s}"),
+        };
     }
 }
 
@@ -77,39 +58,21 @@ pub fn foon_text(plan: &Plan) -> String {
     out
 }
 
-#[derive(Serialize)]
-struct PublishedState<'a> {
-    physical_state: &'a str,
-    location: &'a str,
-}
-
-#[derive(Serialize)]
-struct PublishedLine<'a> {
-    ingredient: &'a str,
-    state: Vec<PublishedState<'a>>,
-    motion: &'a [SmolStr],
-    end_product: &'a str,
-}
-
 /// Progress lines in the published visualiser's shape:
 /// `[{ingredient, state:[{physical_state, location}], motion:[...], end_product}]`.
 pub fn progress_json(plan: &Plan) -> serde_json::Value {
-    let lines: Vec<PublishedLine> = plan
-        .progress_lines
-        .iter()
-        .map(|l| PublishedLine {
-            ingredient: &l.ingredient,
-            state: l
-                .state
-                .iter()
-                .map(|s| PublishedState {
-                    physical_state: &s.physical_state,
-                    location: &s.location,
-                })
-                .collect(),
-            motion: &l.motion,
-            end_product: &l.end_product,
+    let line = |l: &ProgressLine| {
+        let state: Vec<serde_json::Value> = l
+            .state
+            .iter()
+            .map(|s| json!({"physical_state": s.physical_state, "location": s.location}))
+            .collect();
+        json!({
+            "ingredient": l.ingredient,
+            "state": state,
+            "motion": l.motion,
+            "end_product": l.end_product,
         })
-        .collect();
-    serde_json::to_value(lines).unwrap_or(serde_json::Value::Null)
+    };
+    plan.progress_lines.iter().map(line).collect()
 }
