@@ -82,14 +82,21 @@ fn check_size(name: &str, bytes: usize) -> Result<()> {
     Err(e)
 }
 
+/// Which block of the current unit the reader is filling.
+#[derive(PartialEq)]
+enum Block {
+    Inputs,
+    Outputs,
+}
+
 /// An object line whose state lines are still being read: label, flag, goal mark, line, states.
 type OpenObject = (SmolStr, bool, Option<GoalMark>, usize, Vec<State>);
 
 struct UnitBuilder {
     inputs: Vec<ParsedObject>,
     motion: Option<(String, Vec<String>, usize)>,
-    /// Inputs until the motion line, outputs after it.
     outputs: Vec<ParsedObject>,
+    block: Block,
     /// States of the object being read, before it is closed into a node.
     open: Option<OpenObject>,
 }
@@ -100,6 +107,7 @@ impl UnitBuilder {
             inputs: Vec::new(),
             motion: None,
             outputs: Vec::new(),
+            block: Block::Inputs,
             open: None,
         }
     }
@@ -119,9 +127,9 @@ impl UnitBuilder {
                 goal,
                 line,
             };
-            match self.motion {
-                None => self.inputs.push(object),
-                Some(_) => self.outputs.push(object),
+            match self.block {
+                Block::Inputs => self.inputs.push(object),
+                Block::Outputs => self.outputs.push(object),
             }
         }
     }
@@ -536,6 +544,9 @@ impl Reader<'_> {
     /// `O<TAB>label<TAB>flag[<TAB>dish class]`: opens an object (`!` marks a goal).
     fn object(&mut self, line: &Line, bang: bool) -> Result<()> {
         self.unit.close_object();
+        if self.unit.motion.is_some() {
+            self.unit.block = Block::Outputs;
+        }
         let (lcol, raw_label) = line.field(1, "object label after 'O'")?;
         let label = label_of(raw_label);
         check_text(line.file, line.no, lcol, "object label", &label)?;

@@ -117,7 +117,7 @@ impl<'a> Scorer<'a> {
         best_to.resize(self.query.len(), 0.0);
         for &l in labels {
             for (q, to) in best_to.iter_mut().enumerate() {
-                *to = to.max(self.both(q, l).0);
+                *to = larger(*to, self.both(q, l).0);
             }
         }
         let exact = |id: &Option<u32>| id.is_some_and(|id| labels.contains(&id));
@@ -158,8 +158,8 @@ impl GoalFits<'_, '_> {
             let mut best_from = 0.0f32;
             for (q, to) in best_to.iter_mut().enumerate() {
                 let (there, back) = self.pair(q, s);
-                *to = to.max(there);
-                best_from = best_from.max(back);
+                *to = larger(*to, there);
+                best_from = larger(best_from, back);
             }
             precision += if self.exact_at.contains(&Some(s)) {
                 1.0
@@ -202,4 +202,13 @@ fn sum_with_exact<T>(query: &[T], best: &[f32], exact: impl Fn(&T) -> bool) -> f
         .iter()
         .zip(best)
         .fold(0.0, |sum, (q, b)| sum + if exact(q) { 1.0 } else { *b })
+}
+
+/// The larger of two similarities (never NaN): `f32::max` is a libm call in WASM, for its NaN rule.
+fn larger(a: f32, b: f32) -> f32 {
+    if b > a {
+        b
+    } else {
+        a
+    }
 }

@@ -8,9 +8,10 @@
 use crate::foon::kb::KnowledgeBase;
 use crate::foon::model::ObjectNode;
 use crate::vocab::foods;
-use crate::vocab::states::{akin, is_food_state};
 use crate::vocab::taxonomy::is_utensil;
 use rustc_hash::FxHashMap as HashMap;
+
+use crate::vocab::states::{akin, is_food_state};
 
 /// Below this many transitions of a form the model says nothing of it (too few recipes to tell).
 const MIN_EVIDENCE: u32 = 20;
@@ -71,14 +72,18 @@ impl Transitions {
     ) {
         *self.handled.entry((form, motion.to_string())).or_insert(0) += 1;
         *self.evidence.entry(form).or_insert(0) += 1;
-        let mut states: Vec<String> = gained.map(str::to_string).collect();
-        if states.is_empty() {
-            states.push(String::new());
-        }
-        for s in states {
+        let mut any = false;
+        for s in gained {
+            any = true;
             *self
                 .reached
-                .entry((form, motion.to_string(), s))
+                .entry((form, motion.to_string(), s.to_string()))
+                .or_insert(0) += 1;
+        }
+        if !any {
+            *self
+                .reached
+                .entry((form, motion.to_string(), String::new()))
                 .or_insert(0) += 1;
         }
     }

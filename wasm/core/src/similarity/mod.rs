@@ -2,6 +2,7 @@
 //! retrieval heuristic and substitution all go through it), so the embedding table can replace the
 //! exact-match default without touching the planner.
 
+mod cones;
 pub mod ranking;
 pub mod table;
 

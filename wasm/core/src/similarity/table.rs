@@ -365,4 +365,16 @@ mod tests {
             vec!["jalapeno", "five", "spice"]
         );
     }
+
+    #[test]
+    fn garbage_is_an_error_not_a_panic() {
+        for bytes in [
+            &b""[..],
+            b"FOONEMB\0",
+            b"FOONEMB\0\x01\0\0\0zzzzzzzzzzzzzzzzzzzz",
+        ] {
+            let e = EmbeddingTable::from_bytes(bytes).unwrap_err();
+            assert_eq!(e.code, ErrorCode::BadEmbeddings);
+        }
+    }
 }

@@ -5,6 +5,7 @@ use crate::foon::label::normalize_word;
 use crate::foon::model::ObjectNode;
 use rustc_hash::FxHashMap as HashMap;
 use smol_str::SmolStr;
+use std::cell::RefCell;
 use std::sync::OnceLock;
 
 const STATES_TSV: &str = include_str!("../../data/states.tsv");
@@ -147,19 +148,46 @@ pub(crate) fn akin(a: &str, b: &str) -> bool {
 /// The category of a state word (normalised or not). Unlisted words are classified by their parts
 /// ("thinly sliced" → cut, "whole wheat" → whole); anything else is `Other`.
 pub fn category(state: &str) -> Category {
-    let table = table();
-    if let Some(e) = table.get(state) {
+    // planning asks for the same few dozen states thousands of times per plan
+    thread_local! {
+        static SEEN: RefCell<HashMap<String, Category>> = RefCell::new(HashMap::default());
+    }
+    if let Some(e) = table().get(state) {
         return e.category;
     }
+    if let Some(c) = SEEN.with(|m| m.borrow().get(state).copied()) {
+        return c;
+    }
+    let c = classify(state);
+    if state.len() <= MAX_REMEMBERED_STATE {
+        SEEN.with(|m| {
+            let mut m = m.borrow_mut();
+            if m.len() >= MAX_REMEMBERED_STATES {
+                m.clear();
+            }
+            m.insert(state.to_string(), c);
+        });
+    }
+    c
+}
+
+/// Bounds of the memo of `category` (a hostile knowledge base may have any number of states).
+const MAX_REMEMBERED_STATES: usize = 4096;
+const MAX_REMEMBERED_STATE: usize = 64;
+
+fn classify(state: &str) -> Category {
     let word = normalize_word(state);
-    if let Some(e) = table.get(&word) {
+    if let Some(e) = table().get(&word) {
         return e.category;
     }
     // the last listed word decides ("finely chopped", "cooked and sliced")
-    word.split([' ', '-', ','])
-        .rev()
-        .find_map(|part| table.get(part))
-        .map_or(Category::Other, |e| e.category)
+    let mut found = None;
+    for part in word.split([' ', '-', ',']) {
+        if let Some(e) = table().get(part) {
+            found = Some(e.category);
+        }
+    }
+    found.unwrap_or(Category::Other)
 }
 
 /// The category a node's food states put it in (the furthest along; whole when it has none).

@@ -1,9 +1,12 @@
-//! Candidate sets: the profiles of a knowledge base's labels laid out for ranking.
+//! Candidate sets: the profiles of a knowledge base's labels laid out for ranking, and what lets a
+//! ranking skip most of them.
 
-use super::profile::{dot, Class, Profile, Traits};
+use super::profile::{Class, Profile, Traits};
 use super::{squash, EmbeddingSimilarity};
+use crate::similarity::cones::{dot, Cones};
 use crate::similarity::Prepared;
-use std::sync::Arc;
+use rustc_hash::FxHashMap as HashMap;
+use std::sync::{Arc, OnceLock};
 
 /// Candidate sets whose profiles are kept (a planner index has two: all labels, ingredient labels).
 pub(super) const SET_PROFILES_KEPT: usize = 4;
@@ -20,6 +23,9 @@ pub(super) struct CandidateSet {
     /// `dims` values per candidate: its unit vector, or zeros when `has_vector` is false.
     vectors: Vec<f32>,
     has_vector: Vec<bool>,
+    /// Hashes of each candidate's name, canonical name, word-stem key and canonical key: only one
+    /// sharing a hash with the query can be an exact match, either way.
+    hashes: Vec<[u64; 4]>,
     composite: Vec<bool>,
     utensil: Vec<bool>,
     known: Vec<bool>,
@@ -27,6 +33,36 @@ pub(super) struct CandidateSet {
     /// Every candidate's `stems`, one after another; candidate i's are `stems[stem_at[i]..stem_at[i + 1]]`.
     stems: Vec<u64>,
     stem_at: Vec<u32>,
+    /// For the rankings of a remembered set (`rank_in_set`), made on the first: the vectors grouped in
+    /// cones, and the candidates by the hashes an exact match is decided on.
+    search: OnceLock<SetSearch>,
+}
+
+/// What lets a ranking skip most of a large candidate set: cones of its vectors (skipped whole when
+/// their bound cannot place), and its candidates by name hash and by stem-key hash (an exact match, which
+/// outranks everything, is then found without a scan).
+pub(super) struct SetSearch {
+    pub(super) cones: Cones,
+    by_name: HashMap<u64, Vec<u32>>,
+    by_key: HashMap<u64, Vec<u32>>,
+}
+
+impl SetSearch {
+    /// Every candidate that `may_match` `q` (and maybe a few more), ascending.
+    pub(super) fn exact_candidates(&self, q: &Profile) -> Vec<usize> {
+        let names = [q.name.hash, q.canonical.hash].map(|h| self.by_name.get(&h));
+        let keys = [q.key.hash, q.canonical_key.hash].map(|h| self.by_key.get(&h));
+        let mut out: Vec<usize> = names
+            .into_iter()
+            .chain(keys)
+            .flatten()
+            .flatten()
+            .map(|&i| i as usize)
+            .collect();
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
 }
 
 impl CandidateSet {
@@ -41,6 +77,17 @@ impl CandidateSet {
             dims,
             vectors,
             has_vector: profiles.iter().map(|p| p.vector.is_some()).collect(),
+            hashes: profiles
+                .iter()
+                .map(|p| {
+                    [
+                        p.name.hash,
+                        p.canonical.hash,
+                        p.key.hash,
+                        p.canonical_key.hash,
+                    ]
+                })
+                .collect(),
             composite: profiles.iter().map(|p| p.composite).collect(),
             utensil: profiles.iter().map(|p| p.utensil).collect(),
             known: profiles.iter().map(|p| p.is_known()).collect(),
@@ -56,14 +103,40 @@ impl CandidateSet {
                 }))
                 .collect(),
             profiles,
+            search: OnceLock::new(),
         }
+    }
+
+    pub(super) fn search(&self) -> &SetSearch {
+        self.search.get_or_init(|| {
+            let mut by_name: HashMap<u64, Vec<u32>> = HashMap::default();
+            let mut by_key: HashMap<u64, Vec<u32>> = HashMap::default();
+            for (i, h) in self.hashes.iter().enumerate() {
+                by_name.entry(h[0]).or_default().push(i as u32);
+                by_key.entry(h[2]).or_default().push(i as u32);
+            }
+            SetSearch {
+                cones: Cones::new(&self.vectors, self.dims, &self.has_vector),
+                by_name,
+                by_key,
+            }
+        })
     }
 
     pub(super) fn len(&self) -> usize {
         self.profiles.len()
     }
 
-    // what a ranking reads of candidate i (in range)
+    /// `may_match` the other way: whether `q` can be an exact match for candidate i.
+    pub(super) fn may_be_matched(&self, q: &Profile, i: usize) -> bool {
+        self.hashes[i]
+            .iter()
+            .any(|&x| x == q.name.hash || x == q.key.hash)
+    }
+}
+
+/// What a ranking reads of candidate i (in range).
+impl CandidateSet {
     pub(super) fn profile(&self, i: usize) -> &Profile {
         &self.profiles[i]
     }
@@ -81,6 +154,12 @@ impl CandidateSet {
             class: self.class[i],
             stems: &self.stems[self.stem_at[i] as usize..self.stem_at[i + 1] as usize],
         }
+    }
+    /// Whether candidate i can be an exact match for `q`, from hashes alone: false is certain, true
+    /// must be confirmed with `is_exact(q, candidate)`.
+    pub(super) fn may_match(&self, sim: &EmbeddingSimilarity, q: &Profile, i: usize) -> bool {
+        let h = &self.hashes[i];
+        sim.exact_rule(q, |x| x.hash == h[0], |x| x.hash == h[2])
     }
     /// `cosine_of(q, candidate i)`, from the laid-out vectors.
     pub(super) fn cosine(&self, q: &Profile, i: usize) -> f32 {
@@ -146,8 +225,11 @@ impl Prepared for PreparedName<'_> {
         if i >= set.len() {
             return (0.0, 0.0);
         }
-        let c = &set.profiles[i];
-        if self.sim.is_exact(q, c) || self.sim.is_exact(c, q) {
+        // the candidate's profile is read only when its hashes allow an exact match: a scan of many
+        // labels then reads the set's arrays in order
+        if (set.may_match(self.sim, q, i) && self.sim.is_exact(q, &set.profiles[i]))
+            || (set.may_be_matched(q, i) && self.sim.is_exact(&set.profiles[i], q))
+        {
             return (self.to(i), self.from(i));
         }
         // neither is exact: the graded score is symmetric, so one comparison serves both

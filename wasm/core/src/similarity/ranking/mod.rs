@@ -24,8 +24,8 @@ use crate::memo::Memo;
 use crate::similarity::table::EmbeddingTable;
 use crate::similarity::{PairMemory, Prepared, Similarity};
 use crate::vocab::food_taxonomy::{aliases, Taxonomy};
-use candidates::{CandidateSet, PreparedName, SetProfiles};
-use profile::{cosine_of, unit, Class, Profile, Traits};
+use candidates::{CandidateSet, PreparedName, SetProfiles, SetSearch};
+use profile::{cosine_of, unit, Class, Hashed, Profile, Traits};
 use rustc_hash::FxHashMap as HashMap;
 use serde::Serialize;
 use std::sync::{Arc, Mutex};
@@ -222,14 +222,24 @@ impl EmbeddingSimilarity {
         &self.taxonomy
     }
 
-    /// Whether `c` is an exact match for `q`: the same name, or (`exact_first`) `q`'s alias or word
-    /// stems are `c`'s name or word stems.
     fn is_exact(&self, q: &Profile, c: &Profile) -> bool {
-        q.name == c.name
+        self.exact_rule(q, |x| *x == c.name, |x| *x == c.key)
+    }
+
+    /// When a candidate is an exact match for `q`, given what its name equals (`name_is`) and what its
+    /// word-stem key equals (`key_is`): `is_exact` asks with the candidate's strings, a ranking first
+    /// with its hashes alone (equal strings have equal hashes).
+    fn exact_rule(
+        &self,
+        q: &Profile,
+        name_is: impl Fn(&Hashed) -> bool,
+        key_is: impl Fn(&Hashed) -> bool,
+    ) -> bool {
+        name_is(&q.name)
             || (self.options.exact_first
-                && (q.canonical == c.name
-                    || (!q.key.is_empty() && q.key == c.key)
-                    || (!q.canonical_key.is_empty() && q.canonical_key == c.key)))
+                && (name_is(&q.canonical)
+                    || (!q.key.is_empty() && key_is(&q.key))
+                    || (!q.canonical_key.is_empty() && key_is(&q.canonical_key))))
     }
 
     /// The unbounded score behind `similarity` (higher is better).
@@ -259,7 +269,9 @@ impl EmbeddingSimilarity {
         s
     }
 
-    /// What `graded` adds for the categories of a pair (0 unless both have one).
+    /// What `graded` adds for the categories of a pair (0 unless both have one): the largest of its
+    /// bonuses and the cheapest, so that a ranking rules many candidates out by it before it reads their
+    /// words and vectors.
     fn category_bonus(&self, q: Class, c: Class) -> f32 {
         let o = &self.options;
         match (q.category, c.category) {
@@ -268,6 +280,13 @@ impl EmbeddingSimilarity {
             (Some(_), Some(_)) => -o.other_group,
             _ => 0.0,
         }
+    }
+
+    /// The most `graded` can add to a cosine: a cone whose bound plus this cannot reach the ranking's
+    /// last place is not visited.
+    fn max_bonus(&self) -> f32 {
+        let o = &self.options;
+        o.same_category.max(o.same_group).max(0.0) + o.same_head.max(0.0) + o.shared_word.max(0.0)
     }
 
     /// Ranks candidates for a query; shared by `rank` and the evaluation.
@@ -282,46 +301,72 @@ impl EmbeddingSimilarity {
             .map(|c| self.profile(c.as_ref()))
             .collect();
         let set = CandidateSet::new(profiles, self.table.dims());
-        self.rank_among(query, candidates, &set, top)
+        self.rank_among(query, candidates, &set, top, None)
     }
 
     /// The `top` best of `candidates` (with their profiles in `set`, same order), best first, ties by
-    /// label, each label once. Keeps only the best few while scanning: a candidate that cannot place is
-    /// not scored in full.
+    /// label, each label once. Keeps only the best few while scanning: a knowledge base has thousands of
+    /// labels, and a candidate that cannot place is not scored. With `search` (of a remembered set,
+    /// ranked again and again), exact matches are looked up by hash and the cones of vectors are visited
+    /// nearest first, until the next cone cannot place; the answer is the full scan's.
     fn rank_among<'c, S: AsRef<str>>(
         &self,
         query: &str,
         candidates: &'c [S],
         set: &CandidateSet,
         top: usize,
+        search: Option<&SetSearch>,
     ) -> Vec<(String, f32)> {
         let q = self.profile(query);
+        let max_bonus = self.max_bonus();
         let better = |a: &(&str, f32), b: &(&str, f32)| {
             b.1.total_cmp(&a.1).then_with(|| a.0.cmp(b.0)) == std::cmp::Ordering::Less
         };
         let mut best: Vec<(&'c str, f32)> = Vec::with_capacity(top + 1);
-        for (i, cand) in candidates
-            .iter()
-            .map(AsRef::as_ref)
-            .enumerate()
-            .take(set.len())
-        {
-            // `most`: the most a score can be (with a margin for rounding)
-            let cannot_place =
-                |most: f32| best.len() == top && best.last().is_some_and(|w| most + 1e-3 < w.1);
-            let Some(score) = self.ranked_score(&q, set, i, cannot_place) else {
-                continue;
+        // `most`: the most a score can be (with a margin for rounding)
+        let cannot_place = |best: &[(&str, f32)], most: f32| {
+            best.len() == top && best.last().is_some_and(|w| most + 1e-3 < w.1)
+        };
+        let consider =
+            |i: usize, may_be_exact: bool, most_cosine: f32, best: &mut Vec<(&'c str, f32)>| {
+                let Some(cand) = candidates.get(i).map(AsRef::as_ref) else {
+                    return;
+                };
+                let place = |most| cannot_place(best, most);
+                let Some(score) = self.ranked_score(&q, set, i, may_be_exact, most_cosine, place)
+                else {
+                    return;
+                };
+                let item = (cand, score);
+                if best.len() == top && best.last().is_none_or(|w| !better(&item, w)) {
+                    return;
+                }
+                if best.iter().any(|b| b.0 == cand) {
+                    return; // the same label listed twice scores the same
+                }
+                let at = best.partition_point(|b| better(b, &item));
+                best.insert(at, item);
+                best.truncate(top);
             };
-            let item = (cand, score);
-            if best.len() == top && best.last().is_none_or(|w| !better(&item, w)) {
-                continue;
+        if let Some(search) = search {
+            for i in search.exact_candidates(&q) {
+                consider(i, true, f32::INFINITY, &mut best);
             }
-            if best.iter().any(|b| b.0 == cand) {
-                continue; // the same label listed twice scores the same
+            if q.is_known() {
+                let cones = &search.cones;
+                for (most, k) in cones.bounds(q.vector.as_deref()) {
+                    if cannot_place(&best, most + max_bonus) {
+                        break; // the cones come nearest first: no later one can place either
+                    }
+                    for &i in cones.members(k) {
+                        consider(i as usize, false, most, &mut best);
+                    }
+                }
             }
-            let at = best.partition_point(|b| better(b, &item));
-            best.insert(at, item);
-            best.truncate(top);
+        } else {
+            for i in 0..set.len() {
+                consider(i, true, f32::INFINITY, &mut best);
+            }
         }
         best.into_iter()
             .map(|(l, s)| (l.to_string(), squash(s)))
@@ -329,15 +374,20 @@ impl EmbeddingSimilarity {
     }
 
     /// Candidate i's score for `q` in a ranking; `None` when it is left out, or when `cannot_place` the
-    /// most its score can be.
+    /// most its score can be. `may_be_exact`: false once every candidate that may be an exact match was
+    /// considered (a second look at one changes nothing: it placed, or `top` exact matches outrank it);
+    /// `most_cosine`: the most its cosine can be.
     fn ranked_score(
         &self,
         q: &Profile,
         set: &CandidateSet,
         i: usize,
+        may_be_exact: bool,
+        most_cosine: f32,
         cannot_place: impl Fn(f32) -> bool,
     ) -> Option<f32> {
-        if self.is_exact(q, set.profile(i)) {
+        // the hashes rule most candidates out without reading their profiles
+        if may_be_exact && set.may_match(self, q, i) && self.is_exact(q, set.profile(i)) {
             return Some(f32::INFINITY);
         }
         let o = &self.options;
@@ -348,9 +398,12 @@ impl EmbeddingSimilarity {
         {
             return None;
         }
-        // a candidate that cannot place with the most its words can add is not graded
+        // many candidates cannot place whatever their cosine and words: neither is read
         let max_words = o.same_head.max(0.0) + o.shared_word.max(0.0);
         let most = self.category_bonus(q.class(), set.class(i)) + max_words;
+        if cannot_place(most_cosine + most) {
+            return None;
+        }
         let cosine = set.cosine(q, i);
         if cannot_place(cosine + most) {
             return None;
@@ -398,7 +451,8 @@ impl Similarity for EmbeddingSimilarity {
         self.ranked
             .get_or_insert_with((query.to_string(), set, top), || {
                 let profiles = self.set_profiles(set, candidates);
-                self.rank_among(query, candidates, &profiles, top).into()
+                self.rank_among(query, candidates, &profiles, top, Some(profiles.search()))
+                    .into()
             })
     }
 

@@ -3,27 +3,53 @@
 use super::words::{is_descriptor, COMPOSITE_GROUPS, UTENSIL_GROUP};
 use super::{EmbeddingSimilarity, MAX_CACHED_NAME};
 use crate::foon::label::normalize_label;
+use crate::similarity::cones::dot;
 use crate::similarity::table::{is_stop_word, words, WordStems};
 use crate::vocab::food_taxonomy::{is_form_stem, stem_key, Category};
 use std::sync::Arc;
 
-/// A word's hash: equal words, equal hashes.
-fn word_hash(word: &str) -> u64 {
-    use std::hash::{BuildHasher, BuildHasherDefault};
-    BuildHasherDefault::<rustc_hash::FxHasher>::default().hash_one(word)
+/// A string with its hash: nearly every comparison of the score is between unequal strings, and those
+/// differ at the first compare.
+#[derive(Clone, Debug)]
+pub(super) struct Hashed {
+    pub(super) hash: u64,
+    pub(super) text: String,
+}
+
+impl Hashed {
+    pub(super) fn new(text: String) -> Hashed {
+        use std::hash::{BuildHasher, BuildHasherDefault};
+        let hash = BuildHasherDefault::<rustc_hash::FxHasher>::default().hash_one(&text);
+        Hashed { hash, text }
+    }
+
+    /// Words joined by a space (words never hold one, so equal lists give equal texts).
+    pub(super) fn words(words: &[String]) -> Hashed {
+        Hashed::new(words.join(" "))
+    }
+
+    pub(super) fn is_empty(&self) -> bool {
+        self.text.is_empty()
+    }
+}
+
+impl PartialEq for Hashed {
+    fn eq(&self, other: &Hashed) -> bool {
+        self.hash == other.hash && self.text == other.text
+    }
 }
 
 /// Everything the score needs about one name, computed once per name.
 #[derive(Clone, Debug)]
 pub(super) struct Profile {
     /// Normal form as given.
-    pub(super) name: String,
+    pub(super) name: Hashed,
     /// The name the embedding and taxonomy use (after the alias list).
-    pub(super) canonical: String,
-    /// Word stems of `name`, joined by a space (words never hold one).
-    pub(super) key: String,
-    /// Word stems of the ingredient part of `canonical`, as the table resolves them, joined so.
-    pub(super) canonical_key: String,
+    pub(super) canonical: Hashed,
+    /// Word stems of `name`.
+    pub(super) key: Hashed,
+    /// Word stems of the ingredient part of `canonical`, as the table resolves them.
+    pub(super) canonical_key: Hashed,
     /// Hashes of the words of `canonical_key`; the last is the head noun.
     pub(super) stems: Vec<u64>,
     pub(super) vector: Option<Vec<f32>>,
@@ -135,11 +161,14 @@ impl EmbeddingSimilarity {
         let utensil =
             listed && category.is_some_and(|c| self.taxonomy.category(c).group == UTENSIL_GROUP);
         Profile {
-            name,
-            canonical,
-            key: key.join(" "),
-            stems: canonical_key.iter().map(|w| word_hash(w)).collect(),
-            canonical_key: canonical_key.join(" "),
+            name: Hashed::new(name),
+            canonical: Hashed::new(canonical),
+            key: Hashed::words(&key),
+            canonical_key: Hashed::words(&canonical_key),
+            stems: canonical_key
+                .into_iter()
+                .map(|w| Hashed::new(w).hash)
+                .collect(),
             vector,
             category,
             group,
@@ -254,25 +283,4 @@ pub(super) fn unit(mut v: Vec<f32>) -> Vec<f32> {
         v.iter_mut().for_each(|x| *x /= n);
     }
     v
-}
-
-/// Dot product in eight fixed lanes (every score adds it up the same way, so equal pairs score equal):
-/// lanes the compiler can keep in vector registers, where one running sum would be a chain of
-/// dependent additions.
-pub(super) fn dot(a: &[f32], b: &[f32]) -> f32 {
-    const LANES: usize = 8;
-    let mut acc = [0f32; LANES];
-    let (ca, cb) = (a.chunks_exact(LANES), b.chunks_exact(LANES));
-    let tail: f32 = ca
-        .remainder()
-        .iter()
-        .zip(cb.remainder())
-        .map(|(x, y)| x * y)
-        .sum();
-    for (x, y) in ca.zip(cb) {
-        for i in 0..LANES {
-            acc[i] += x[i] * y[i];
-        }
-    }
-    acc.iter().sum::<f32>() + tail
 }
