@@ -63,7 +63,9 @@ fn parse(text: &str) -> Forms {
         ) else {
             continue; // a test names the row
         };
-        let (Some(shows), Some(heated)) = (parts.next().map(str::trim), parts.next()) else {
+        let (Some(shows), Some(heated)) =
+            (parts.next().map(str::trim), parts.next().map(str::trim))
+        else {
             continue; // a test names the row
         };
         for c in split_list(categories) {
@@ -76,9 +78,7 @@ fn parse(text: &str) -> Forms {
             never_in: split_list(never).filter(|w| w != "-").collect(),
             state_when_none: Some(none.trim()).filter(|w| *w != "-").map(str::to_string),
             shows_cooking: shows != "no",
-            heated: Some(heated.trim())
-                .filter(|w| *w != "-")
-                .map(str::to_string),
+            heated: Some(heated).filter(|w| *w != "-").map(str::to_string),
         });
     }
     Forms { forms, of_category }

@@ -163,7 +163,6 @@ fn line_from<'t>(
 /// The food's own states once it is heated (butter "cubed, hot" in the pan): `heated`, its form's state
 /// then, beside the heat that made it ("melted, hot"); what it went into ("in omelette") is left as it is.
 fn melted(states: &mut [ProgressState], heated: &str) {
-    let is_heat = |w: &str| category(w) == Category::Cooked && kind(w) == Some("heated");
     for s in states
         .iter_mut()
         .skip_while(|s| !s.physical_state.split(", ").any(is_heat))
@@ -175,11 +174,16 @@ fn melted(states: &mut [ProgressState], heated: &str) {
     }
 }
 
+/// Whether state word `w` says only that the food is hot ("hot", "warm", "heated"), not how it was cooked.
+fn is_heat(w: &str) -> bool {
+    category(w) == Category::Cooked && kind(w) == Some("heated")
+}
+
 /// The food's own states without the cooking of the vessel it sits in, for a food that does not show it
 /// (salt in a pot of rice is not "partly cooked"; oil in a pan is still "hot"); what it went into ("in
 /// rice, cooked") keeps it.
 pub(super) fn unseen_cooking(states: &mut [ProgressState]) {
-    let unseen = |w: &str| category(w) == Category::Cooked && kind(w) != Some("heated");
+    let unseen = |w: &str| category(w) == Category::Cooked && !is_heat(w);
     for s in states
         .iter_mut()
         .filter(|s| !s.physical_state.starts_with("in "))
@@ -658,11 +662,11 @@ pub(super) fn with_vessel_cooking(before: &SmolStr, v: &ObjectNode) -> SmolStr {
     // a food cooked before it went in is not made "partly cooked" or "hot" by the pot (rice toasted
     // first still is)
     let words = || before.split(", ");
-    let heated_before = words().any(|w| category(w) == Category::Cooked);
+    let cooked_before = words().any(|w| category(w) == Category::Cooked);
     let adds = |s: &str| {
         category(s) == Category::Cooked
             && !words().any(|w| w == s || w == "cooked")
-            && !(heated_before && kind(s) == Some("heated"))
+            && !(cooked_before && is_heat(s))
     };
     let cooked = v.physical_states().find(|s| adds(s));
     let Some(cooked) = cooked else {
