@@ -256,7 +256,7 @@ fn timing(tree: &Tree, cooked: &[bool], u: TUnitId, o: &str, food: &str) -> (boo
 /// Whether unit `u` cooks, or what it makes is in a hot pan.
 pub(super) fn heats(tree: &Tree, u: TUnitId) -> bool {
     let unit = &tree.units[u];
-    foods::cooks(&unit.motion)
+    cook_words(tree, u).any(foods::cooks)
         || unit
             .outputs
             .iter()
