@@ -2827,3 +2827,179 @@ fn chocolate_asked_solid_is_chopped_before_it_joins_the_batter() {
         p.units
     );
 }
+
+/// A pizza (class 3): dough kneaded into "pizza dough", shaped into a raw "pizza", baked.
+const PIZZA: &str = "//
+O\tflour\t1
+S\tpowder
+O\twater\t1
+S\tliquid
+O\tbowl\t0
+S\tempty
+M\tmix\t<Assumed>
+O\tdough\t1
+S\tmixed
+S\tcontains\t{flour,water}
+S\tin\t[bowl]
+//
+O\tdough\t1
+S\tmixed
+S\tcontains\t{flour,water}
+S\tin\t[bowl]
+M\tknead\t<Assumed>
+O\tpizza dough\t1
+S\tkneaded
+S\tcontains\t{flour,water}
+S\tin\t[bowl]
+//
+O\tpizza dough\t1
+S\tkneaded
+S\tcontains\t{flour,water}
+S\tin\t[bowl]
+O\tpizza pan\t0
+S\tempty
+M\tpick-and-place\t<Assumed>
+O\tpizza\t1
+S\tuncooked
+S\tcontains\t{flour,water}
+S\tin\t[pizza pan]
+//
+O\tpizza\t1
+S\tuncooked
+S\tcontains\t{flour,water}
+S\tin\t[pizza pan]
+O\toven\t0
+S\ton
+M\tbake\t<Assumed>
+O\tcheese pizza\t1\t3
+S\tbaked
+S\tcontains\t{flour,water}
+S\tin\t[pizza pan]
+//
+";
+
+#[test]
+fn a_bread_made_through_a_pizzas_tree_is_never_called_a_pizza_on_the_way() {
+    let p = plan_of(
+        &[("pizza.txt", PIZZA)],
+        &ExactMatch,
+        &query("bread", &[("flour", "powder"), ("water", "liquid")]),
+    );
+    assert_eq!(p.goal.label, "bread");
+    let states = line_states(&p, "flour");
+    assert!(
+        states.iter().any(|s| s.contains("in bread dough")),
+        "{states:?}"
+    );
+    assert!(states.iter().all(|s| !s.contains("pizza")), "{states:?}");
+    // the pizza's own tree keeps its names
+    let pizza = plan_of(
+        &[("pizza.txt", PIZZA)],
+        &ExactMatch,
+        &query("pizza", &[("flour", "powder"), ("water", "liquid")]),
+    );
+    assert!(line_states(&pizza, "flour")
+        .iter()
+        .any(|s| s.contains("in pizza dough")));
+}
+
+/// Elsewhere in FOON: a zucchini chopped.
+const ZUCCHINI: &str = "//
+O\tzucchini\t1
+S\twhole
+O\tknife\t1
+M\tchop\t<Assumed>
+O\tzucchini\t1
+S\tchopped
+//
+";
+
+#[test]
+fn a_stir_frys_vegetables_go_into_its_pan_not_into_the_sauce_mixed_apart() {
+    // minced garlic in the sauce would draw the chopped zucchini to it as a food of its kind
+    let rice = FRIED_RICE.replace(
+        "O\tsoy sauce\t1\nS\tliquid\nM\tmix",
+        "O\tsoy sauce\t1\nS\tliquid\nO\tgarlic\t1\nS\tminced\nM\tmix",
+    );
+    let p = plan_of(
+        &[("rice.txt", &rice), ("zucchini.txt", ZUCCHINI)],
+        &ExactMatch,
+        &query(
+            "rice",
+            &[
+                ("rice", "cooked"),
+                ("soy sauce", "liquid"),
+                ("garlic", "minced"),
+                ("zucchini", "chopped"),
+            ],
+        ),
+    );
+    let states = line_states(&p, "zucchini");
+    assert!(states.iter().all(|s| !s.contains("sauce")), "{states:?}");
+    assert!(
+        states.last().unwrap().contains("in fried rice"),
+        "{states:?}"
+    );
+    // the soy sauce still goes into the sauce
+    assert!(line_states(&p, "soy sauce")
+        .iter()
+        .any(|s| s.contains("in sauce")));
+}
+
+/// A soup (class 1): broth in a pot, peppercorns ground from the mill into it; elsewhere in FOON cumin is
+/// ground on its own (what makes "ground").
+const PEPPERED_SOUP: &str = "//
+O\tbroth\t1
+S\tliquid
+S\tin\t[pot]
+O\tpepper\t1
+S\tpeppercorn
+S\tin\t[pepper mill]
+M\tgrind\t<Assumed>
+O\tsoup\t1\t1
+S\tcontains\t{broth,pepper}
+S\tin\t[pot]
+//
+O\tcumin\t1
+S\twhole
+O\tmortar\t0
+M\tgrind\t<Assumed>
+O\tcumin\t1
+S\tground
+//
+";
+
+#[test]
+fn peppercorns_ground_into_the_soup_are_ground_as_they_join_not_ground_twice() {
+    let files = [("soup.txt", PEPPERED_SOUP)];
+    let p = plan_of(
+        &files,
+        &ExactMatch,
+        &query("soup", &[("broth", "liquid"), ("pepper", "ground")]),
+    );
+    assert_eq!(line_motions(&p, "pepper"), ["grind"], "{:#?}", p.units);
+    let reason = outcome(&p, "pepper").reason.as_deref().unwrap();
+    assert!(
+        reason.contains("given as it joins the dish: 'grind'"),
+        "{reason}"
+    );
+    // a diced (fresh) pepper asked too shares the one line: it is not chopped into the ground one
+    let both = plan_of(
+        &files,
+        &ExactMatch,
+        &query(
+            "soup",
+            &[
+                ("broth", "liquid"),
+                ("pepper", "diced"),
+                ("pepper", "ground"),
+            ],
+        ),
+    );
+    assert_eq!(
+        line_motions(&both, "pepper"),
+        ["grind"],
+        "{:#?}",
+        both.units
+    );
+}

@@ -9,7 +9,7 @@
 use crate::contract::plan::Query;
 use crate::foon::label::{normalize_label, normalize_word};
 use crate::vocab::food_taxonomy::Taxonomy;
-use rustc_hash::FxHashMap as HashMap;
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::sync::OnceLock;
 
 const FORMS_TSV: &str = include_str!("../../data/food_forms.tsv");
@@ -37,7 +37,7 @@ pub struct Form {
 
 struct Forms {
     forms: Vec<Form>,
-    /// Taxonomy category name -> index into `forms`.
+    /// Taxonomy category name, or a food's own name, -> index into `forms`.
     of_category: HashMap<String, usize>,
 }
 
@@ -89,12 +89,15 @@ fn forms() -> &'static Forms {
     FORMS.get_or_init(|| parse(FORMS_TSV))
 }
 
-/// The form of a food named `food`, from its category in the built-in taxonomy; None when the
-/// taxonomy does not know it or its category has no listed form.
+/// The form of a food named `food`: its own where the forms list it (cocoa is a powder, though a
+/// chocolate), else its category's in the built-in taxonomy; None when neither is listed.
 pub fn form_of(food: &str) -> Option<&'static Form> {
+    let f = forms();
+    if let Some(&i) = f.of_category.get(food) {
+        return Some(&f.forms[i]);
+    }
     let taxonomy = Taxonomy::builtin();
     let category = &taxonomy.category(taxonomy.lookup(food)?).name;
-    let f = forms();
     f.of_category.get(category).map(|&i| &f.forms[i])
 }
 
@@ -231,6 +234,13 @@ pub fn shows_cooking(food: &str) -> bool {
 /// The state `food` is in once heated, in place of its own (butter in a hot pan is "melted").
 pub fn state_once_heated(food: &str) -> Option<&'static str> {
     form_of(food)?.heated.as_deref()
+}
+
+/// Whether `food` is cooked in the dish's pan rather than stirred into a sauce mixed apart for it: a food
+/// of a form that shows cooking (zucchini, beef), or of no form that must be cooked (egg); not soy sauce,
+/// starch or oil.
+pub fn cooks_in_pan(food: &str) -> bool {
+    form_of(food).map_or_else(|| must_cook(food), |f| f.shows_cooking)
 }
 
 /// Whether `food` must be cooked before it is eaten (raw chicken, dry pasta, flour).
@@ -435,15 +445,22 @@ pub fn reading(food: &str, state: &str) -> Option<&'static str> {
         .map(String::as_str)
 }
 
-/// The food each asked name stands for where its state says (`foods::reading`); a name asked twice
-/// (pepper whole and ground) is read by its first state, the one its single line is planned for.
+/// The food each asked name stands for where its state says (`foods::reading`). A name asked twice in
+/// states read as different foods (pepper diced and ground) has no one reading: its single line is
+/// planned for whichever entry settles it.
 pub fn query_readings(query: &Query) -> HashMap<String, &'static str> {
     let mut out: HashMap<String, Option<&'static str>> = HashMap::default();
+    let mut both = HashSet::default();
     for ing in &query.ingredients {
-        out.entry(ing.object.clone())
-            .or_insert_with(|| reading(&ing.object, &ing.state));
+        let r = reading(&ing.object, &ing.state);
+        if *out.entry(ing.object.clone()).or_insert(r) != r {
+            both.insert(ing.object.as_str());
+        }
     }
-    out.into_iter().filter_map(|(o, r)| Some((o, r?))).collect()
+    out.into_iter()
+        .filter(|(o, _)| !both.contains(o.as_str()))
+        .filter_map(|(o, r)| Some((o, r?)))
+        .collect()
 }
 
 #[cfg(test)]
@@ -631,18 +648,43 @@ mod tests {
     }
 
     #[test]
-    fn every_listed_category_is_a_taxonomy_category() {
+    fn every_listed_category_or_food_is_in_the_taxonomy() {
         let taxonomy = Taxonomy::builtin();
-        for category in forms().of_category.keys() {
+        for name in forms().of_category.keys() {
             assert!(
-                taxonomy.categories.iter().any(|c| &c.name == category),
-                "food_forms.tsv names '{category}', which food_taxonomy.tsv lacks"
+                taxonomy.categories.iter().any(|c| &c.name == name)
+                    || taxonomy.lookup(name).is_some(),
+                "food_forms.tsv names '{name}', which food_taxonomy.tsv lacks"
             );
         }
     }
 
     #[test]
-    fn a_query_reads_its_names_by_their_states_a_name_asked_twice_by_its_first() {
+    fn a_food_listed_by_name_has_its_own_form_not_its_categorys() {
+        assert_eq!(form_of("cocoa").map(|f| f.name.as_str()), Some("powder"));
+        assert_eq!(
+            form_of("cocoa powder").map(|f| f.name.as_str()),
+            Some("powder")
+        );
+        assert_eq!(
+            form_of("dark chocolate").map(|f| f.name.as_str()),
+            Some("dry")
+        );
+        assert!(!takes("cocoa", "chop"));
+    }
+
+    #[test]
+    fn foods_that_cook_in_the_pan_are_not_stirred_into_a_sauce_apart() {
+        for food in ["zucchini", "beef", "egg", "cabbage", "shrimp"] {
+            assert!(cooks_in_pan(food), "{food}");
+        }
+        for food in ["soy sauce", "cornstarch", "oil", "salt", "honey"] {
+            assert!(!cooks_in_pan(food), "{food}");
+        }
+    }
+
+    #[test]
+    fn a_query_reads_its_names_by_their_states_not_a_name_asked_as_two_foods() {
         let query: Query = serde_json::from_str(
             r#"{"type": "soup", "ingredients": [{"object": "basil", "state": "dried"},
                {"object": "coriander", "state": "leaves"}, {"object": "pepper", "state": "ground"},
@@ -654,10 +696,14 @@ mod tests {
             (r.get("basil"), r.get("coriander")),
             (Some(&"dried basil"), Some(&"cilantro"))
         );
-        assert_eq!(
-            (r.get("pepper"), r.get("onion")),
-            (Some(&"black pepper"), None)
-        );
+        // pepper ground and diced are two foods: one line cannot be read as both
+        assert_eq!((r.get("pepper"), r.get("onion")), (None, None));
+        let twice: Query = serde_json::from_str(
+            r#"{"type": "soup", "ingredients": [{"object": "pepper", "state": "ground"},
+               {"object": "pepper", "state": "cracked"}]}"#,
+        )
+        .unwrap();
+        assert_eq!(query_readings(&twice).get("pepper"), Some(&"black pepper"));
         assert!(!takes("dried basil", "chop") && !takes("coriander seed", "chop"));
     }
 
@@ -727,6 +773,7 @@ mod tests {
         assert_eq!(reading("oyster", "thick sauce"), Some("oyster sauce"));
         assert_eq!(reading("curry", "ground"), Some("curry powder"));
         assert_eq!(reading("sprout", "bean"), Some("bean sprout"));
+        assert_eq!(reading("cake", "ground"), Some("cake mix"));
         assert_eq!(reading("fish", "fillet"), None);
     }
 }

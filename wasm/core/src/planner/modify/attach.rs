@@ -165,7 +165,10 @@ pub(super) fn attach_point(
     let food = known_as(ctx, o, o);
     // a garnish of a dish that is cooked or heated goes in as late as it can; in a dish nothing heats (a
     // salad, a drink) it joins where the others do
-    let served = foods::joins_served(food) && order.iter().any(|&u| heats(tree, u));
+    let cooked_dish = order.iter().any(|&u| heats(tree, u));
+    let served = foods::joins_served(food) && cooked_dish;
+    // a stir-fry's zucchini and beef go into its pan, not into the sauce mixed apart for it
+    let out_of_sauce = cooked_dish && foods::cooks_in_pan(food);
     // closest to the goal first: a unit further from it must do strictly better, so its kin
     // ingredients are worked out only when they could make it
     let mut best: Option<(TUnitId, AttachKey)> = None;
@@ -186,7 +189,7 @@ pub(super) fn attach_point(
             let x = &tree.slots[i.0];
             i.1 && !x.utensil && x.node.label != goal_label
         });
-        let fits = foods::joins_by(o, &unit.motion);
+        let fits = foods::joins_by(o, &unit.motion) && !(out_of_sauce && mixes_sauce(tree, u));
         let (safe, cool) = timing(tree, cooked, u, o, food);
         let beats = |kin: bool, pref: usize| {
             let key = (reaches, fits, safe, cool, adds, kin, usize::MAX - pref);
@@ -230,6 +233,15 @@ pub(super) fn attach_point(
     best.filter(|(_, key)| key.0)
         .map(|b| b.0)
         .or_else(|| tree.producer.get(tree.goal).copied().flatten())
+}
+
+/// Whether unit `u` mixes a sauce apart, cold (the soy sauce and starch a stir-fry is tossed in).
+fn mixes_sauce(tree: &Tree, u: TUnitId) -> bool {
+    let makes_sauce = tree.units[u]
+        .outputs
+        .iter()
+        .any(|x| foods::kind(&tree.slots[x.0].node.label) == Some("sauce"));
+    makes_sauce && !heats(tree, u)
 }
 
 /// How `attach_point` ranks a unit: reaches the goal, the food joins by its motion, it meets the dish's

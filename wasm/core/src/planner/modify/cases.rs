@@ -65,8 +65,18 @@ pub(super) fn settle_state<'kb>(
 ) {
     let sold = ctx.index.sold_as(eq);
     let in_state = best_state_slot(tree, slots, s, sold);
-    let state_ok = in_state.is_some() || shown_by_form(tree, known_as(ctx, o, eq), s, slots);
+    let joining = shaped_as_it_joins(tree, slots)
+        .filter(|&(_, st)| st == s && in_state.is_none())
+        .map(|(motion, _)| motion);
+    let state_ok = in_state.is_some()
+        || joining.is_some()
+        || shown_by_form(tree, known_as(ctx, o, eq), s, slots);
     w.case = Some(Case::of(o, eq, state_ok));
+    if let Some(motion) = joining {
+        w.reasons.push(format!(
+            "state '{s}' given as it joins the dish: '{motion}'"
+        ));
+    }
     if category(s) == Category::Other && !s.is_empty() {
         w.reasons.push(format!(
             "state '{s}' is not in the state taxonomy: kept the tree's state"
@@ -101,6 +111,22 @@ pub(super) fn settle_state<'kb>(
         .entry(o.to_string())
         .or_insert_with(|| s.to_string());
     w.planned = true;
+}
+
+/// The motion and the state it leaves the food in (`motion_states.tsv`) of a unit that takes the food
+/// into another and shapes it as it goes (peppercorns ground from the mill into the soup, cheese grated
+/// over the dish): no node of the food is left to show that state.
+pub(super) fn shaped_as_it_joins(tree: &Tree, slots: &[SlotId]) -> Option<(String, &'static str)> {
+    let order = tree.order();
+    let label = |x: SlotId| &tree.slots[x].node.label;
+    slots.iter().find_map(|&x| {
+        tree.consumers(x, &order).find_map(|u| {
+            let unit = &tree.units[u];
+            let into_another = unit.outputs.iter().all(|o| label(o.0) != label(x));
+            let state = foods::leaves_in(&unit.motion).filter(|_| into_another)?;
+            Some((unit.motion.to_string(), state))
+        })
+    })
 }
 
 /// Whether state `s` is the one `food`'s form shows it in, and the tree has it only in states its form is

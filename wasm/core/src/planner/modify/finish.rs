@@ -59,7 +59,8 @@ pub(super) fn prepare_kept<'kb>(
             )
         })
     });
-    if slots.is_empty() || !in_piece {
+    // peppercorns ground into the soup are not kept whole
+    if slots.is_empty() || !in_piece || shaped_as_it_joins(tree, &slots).is_some() {
         return None;
     }
     let how = restate(ctx, tree, eq, o, p, &slots).ok()?;

@@ -319,9 +319,14 @@ impl Driver {
         }
     }
 
-    /// What a cook does to each planned ingredient before it is used (`finish`).
+    /// What a cook does to each planned ingredient before it is used (`finish`), once per label: a name
+    /// asked twice has one line.
     fn finish_planned<'kb>(&mut self, ctx: &Context<'kb>, tree: &mut Tree<'kb>) {
+        let mut done: HashSet<String> = HashSet::default();
         for w in self.works.iter_mut().filter(|w| w.planned) {
+            if !done.insert(w.label.clone()) {
+                continue;
+            }
             let eq = w
                 .matched
                 .as_ref()

@@ -28,6 +28,9 @@ pub(super) fn name_for_query(
     let mut in_dish = held.words(&goal);
     in_dish.extend(tree.ingredient_labels().into_iter().flat_map(name_words));
     if let Some(to) = namer.dish(&goal, &in_dish) {
+        for stage in earlier_stages(tree, &goal, &to, &asked) {
+            renames.push((stage, to.clone()));
+        }
         renames.push((goal.clone(), to));
     }
     let mut labels: Vec<&SmolStr> = tree
@@ -59,7 +62,11 @@ pub(super) fn name_for_query(
         .filter_map(|(from, to)| match taken.contains(to.as_str()) {
             false => Some((from, to)),
             true if from == goal => Some((from, format!("{to} dish"))),
-            true => None,
+            // the "dough" a "pizza dough" would merge with: the asked dish's ("bread dough")
+            true => namer
+                .for_class(&to)
+                .filter(|n| !taken.contains(n.as_str()))
+                .map(|n| (from, n)),
         })
         .collect();
     for (from, to) in &renames {
@@ -72,6 +79,25 @@ pub(super) fn name_for_query(
             ));
         }
     }
+}
+
+/// The foods made on the way that bear the goal's head word ("pizza" before the "cheese pizza" is
+/// baked) where the dish is renamed to another class: a bread made through a pizza's tree is never
+/// called a pizza on the way.
+fn earlier_stages(tree: &Tree, goal: &str, to: &str, asked: &HashSet<&str>) -> Vec<SmolStr> {
+    let head = |label: &str| label.rsplit(' ').next().map(str::to_string);
+    if dish_class_of(goal) == dish_class_of(to) {
+        return Vec::new();
+    }
+    let mut stages: Vec<SmolStr> = tree
+        .live_slots()
+        .filter(|&s| !tree.slots[s].utensil && tree.produced(s))
+        .map(|s| tree.slots[s].node.label.clone())
+        .filter(|l| l != goal && !asked.contains(l.as_str()) && head(l) == head(goal))
+        .collect();
+    stages.sort();
+    stages.dedup();
+    stages
 }
 
 /// Gives a unit the cook's word for its motion (`foods::cooks_word`) where it gives a food the state
@@ -157,6 +183,12 @@ struct Namer {
 impl Namer {
     fn names_class(&self, text: &str) -> bool {
         self.class.is_some() && dish_class_of(text) == self.class
+    }
+
+    /// `name` as the asked class's ("dough": "bread dough").
+    fn for_class(&self, name: &str) -> Option<String> {
+        let class = singular(dish_class_name(self.class?)?);
+        (!name.starts_with(&class)).then(|| format!("{class} {name}"))
     }
 
     /// Whether a word may stay in a name: no food, or one held, or the asked dish ("custard").
