@@ -66,6 +66,8 @@ async function visit(page: Page, url: string): Promise<Visit> {
  */
 interface Replan {
   shown: number;
+  /** The same figure as the status line printed it ("Shown in 3.1 ms"). */
+  status: number;
   painted: number;
   drawn: number;
   views: Record<string, number>;
@@ -91,7 +93,8 @@ async function replans(page: Page, edits: number): Promise<Replan[]> {
         const detail = (drawn?.detail ?? {}) as { views?: Record<string, number>; planner?: number };
         const shown = performance.getEntriesByName("foon:plan shown")[0]?.duration ?? NaN;
         const painted = (globalThis as { benchPainted?: number }).benchPainted ?? NaN;
-        return { shown, painted, drawn: drawn?.duration ?? NaN, views: detail.views ?? {}, planner: detail.planner ?? NaN };
+        const status = Number(/Shown in ([\d.]+) ms/.exec(document.querySelector(".plan-status")?.textContent ?? "")?.[1] ?? NaN);
+        return { shown, status, painted, drawn: drawn?.duration ?? NaN, views: detail.views ?? {}, planner: detail.planner ?? NaN };
       }),
     );
   }
@@ -149,7 +152,8 @@ function reportReplans(replans: Replan[], copyLoad: number): void {
   const names = [...new Set(replans.flatMap((r) => Object.keys(r.views)))];
   const views = names.map((v) => `${v} ${ms((r) => r.views[v] ?? 0)}`).join(", ");
   console.log(
-    `  re-plan after an edit (request to the views on screen drawn): median ${ms((r) => r.shown)}, max ${Math.max(...shown).toFixed(1)} ms over ${replans.length}; ` +
+    `  re-plan after an edit (request to the views on screen drawn): median ${ms((r) => r.shown)}, max ${Math.max(...shown).toFixed(1)} ms over ${replans.length} ` +
+      `(the status line showed a median of ${ms((r) => r.status)}); ` +
       `to the end of the next frame (painted) ${ms((r) => r.painted)}; ` +
       `medians of its parts: drawing the views ${ms((r) => r.drawn)} (${views || "none"}), the plan ${ms((r) => r.shown - r.drawn)} (the planner's call in it ${ms((r) => r.planner)}); ` +
       `the planner's copy on the page's thread loaded in ${copyLoad.toFixed(0)} ms (once the page was idle after the first plan)`,

@@ -1,4 +1,5 @@
-// The query in the URL: edits push history entries (a burst of typing is one), back/forward restore.
+// The query in the URL: edits push history entries (a burst of typing is one) once the page is idle,
+// back/forward restore.
 import { describe, expect, it, vi } from "vitest";
 import { EMPTY_QUERY, type AppQuery } from "../../src/app/query";
 import { Store } from "../../src/app/store";
@@ -50,13 +51,18 @@ describe("URL sync", () => {
     syncQueryWithUrl(store, setQuery, win as unknown as Window);
 
     store.set({ query: salad });
+    expect(win.location.search).toBe(""); // not in the edit's task: once the page is idle
+    vi.advanceTimersByTime(0);
     expect(win.location.search).toBe("?dish=salad&i=tomato~diced");
     expect(win.entries).toHaveLength(2);
     // typing right after: the same entry
+    store.set({ query: { ...salad, ingredients: [{ object: "tomato", state: "dic" }] } });
     store.set({ query: { ...salad, ingredients: [{ object: "tomato", state: "dice" }] } });
-    expect(win.entries).toHaveLength(2);
+    vi.advanceTimersByTime(0);
+    expect(win.entries).toEqual(["/app/", "/app/?dish=salad&i=tomato~dice"]);
     vi.advanceTimersByTime(5000);
     store.set({ query: soup });
+    vi.advanceTimersByTime(0);
     expect(win.entries).toHaveLength(3);
     expect(win.location.search).toBe("?dish=soup&i=carrot");
 

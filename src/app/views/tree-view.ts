@@ -99,6 +99,13 @@ function updateNode(node: CollectionReturnValue, def: ElementDefinition): void {
   for (const mark of ["marked", "goal"]) if (node.hasClass(mark) !== classes.has(mark)) node.toggleClass(mark, classes.has(mark));
 }
 
+/** Where the nodes' centres reach: a fitted viewport still fits while it is the same. */
+function extent(cy: Core): string {
+  const xs = cy.nodes().map((n) => n.position("x"));
+  const ys = cy.nodes().map((n) => n.position("y"));
+  return [Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys)].join(" ");
+}
+
 export function mountTreeView(host: HTMLElement, store: StateSource, actions: TreeViewActions): TreeViewHandle {
   const canvas = el("div", { class: "cy", role: "img", "aria-label": "Task tree graph (the Steps list below is the same plan as text)" });
   const fit = el("button", { type: "button", text: "Fit" });
@@ -123,6 +130,8 @@ export function mountTreeView(host: HTMLElement, store: StateSource, actions: Tr
   });
   let graph: TreeGraph = { nodes: [], edges: [] };
   let plan: Plan | null = null;
+  /** The extent the viewport was last fitted to by a plan. */
+  let fitted = "";
 
   cy.on("tap", "node", (event) => actions.select(selectNode(graph, String(event.target.id()))));
   // fit the whole tree, but never blow a small one up past MAX_FIT_ZOOM
@@ -141,7 +150,10 @@ export function mountTreeView(host: HTMLElement, store: StateSource, actions: Tr
     plan = next;
     graph = next === null ? { nodes: [], edges: [] } : planToGraph(next);
     showGraph(cy, graph);
-    fitTree();
+    // fitting measures every element's bounding box: a re-plan that keeps the tree's extent keeps the viewport
+    const reach = extent(cy);
+    if (reach !== fitted) fitTree();
+    fitted = reach;
     canvas.dataset.nodes = String(graph.nodes.length);
     canvas.dataset.edges = String(graph.edges.length);
   }
