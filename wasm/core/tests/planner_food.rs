@@ -3003,3 +3003,94 @@ fn peppercorns_ground_into_the_soup_are_ground_as_they_join_not_ground_twice() {
         both.units
     );
 }
+
+/// Elsewhere in FOON: chips poured from their packet, no state said of them.
+const CHIPS: &str = "//
+O\tchip\t1
+S\tin\t[packet]
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tchip\t1
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn a_food_foon_says_no_state_of_starts_as_it_was_asked_not_blank() {
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("chips.txt", CHIPS)],
+        &ExactMatch,
+        &query("salad", &[("lettuce", "chopped"), ("chip", "pieces")]),
+    );
+    assert_eq!(
+        line_states(&p, "chip").first(),
+        Some(&"pieces"),
+        "{:#?}",
+        p.units
+    );
+    // a liquid's coarse word is shown as the liquid it is
+    let p = plan_of(
+        &[
+            ("salad.txt", LETTUCE_SALAD),
+            ("chips.txt", &CHIPS.replace("chip", "fat")),
+        ],
+        &ExactMatch,
+        &query("salad", &[("lettuce", "chopped"), ("fat", "juice")]),
+    );
+    assert_eq!(
+        line_states(&p, "fat").first(),
+        Some(&"liquid"),
+        "{:#?}",
+        p.units
+    );
+}
+
+/// A drink (class 9) of milk poured into a glass: no blender; elsewhere in FOON a banana is chopped and
+/// a smoothie blended.
+const MILK_DRINK: &str = "//
+O\tmilk\t1
+S\tliquid
+S\tin\t[carton]
+O\tglass\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tmilk drink\t1\t9
+S\tliquid
+S\tcontains\t{milk}
+S\tin\t[glass]
+//
+";
+const BANANA: &str = "//
+O\tbanana\t1
+S\twhole
+O\tknife\t1
+M\tchop\t<Assumed>
+O\tbanana\t1
+S\tchopped
+//
+O\tbanana\t1
+S\tchopped
+O\tblender\t0
+M\tblend\t<Assumed>
+O\tsmoothie\t1
+S\tblended
+S\tcontains\t{banana}
+//
+";
+
+#[test]
+fn a_banana_joins_a_drink_without_a_blender_blended_not_in_pieces() {
+    let p = plan_of(
+        &[("drink.txt", MILK_DRINK), ("banana.txt", BANANA)],
+        &ExactMatch,
+        &query("drinks", &[("milk", "liquid"), ("banana", "chopped")]),
+    );
+    assert_eq!(
+        line_motions(&p, "banana"),
+        ["peel", "chop", "blend", "pour"],
+        "{:#?}",
+        p.units
+    );
+    assert!(line_states(&p, "banana").contains(&"blended"));
+}

@@ -669,7 +669,18 @@ impl<'kb> Tree<'kb> {
             }
         }
         let mut first: HashMap<Vec<usize>, TUnitId> = HashMap::default();
+        // per output of a dropped unit, the foods only it took (see `put_in`)
+        let mut carried: HashMap<SlotId, Vec<SlotId>> = HashMap::default();
         for (pos, &u) in order.iter().enumerate() {
+            let inputs = &self.units[u].inputs;
+            let foods: Vec<SlotId> = inputs
+                .iter()
+                .filter_map(|i| carried.remove(&i.0))
+                .flatten()
+                .collect();
+            self.units[u]
+                .inputs
+                .extend(foods.into_iter().map(|x| (x, true)));
             follow_aliases(&mut self.units[u].inputs, alias);
             let unit = &self.units[u];
             let makes_goal = unit.outputs.iter().any(|o| o.0 == self.goal);
@@ -705,7 +716,9 @@ impl<'kb> Tree<'kb> {
                 }
             }
             if !useful && !makes_goal {
+                let foods = self.put_in(u, |x| last_use[x] != Some(pos));
                 for &(o, _) in &unit.outputs {
+                    carried.entry(o).or_default().extend(&foods);
                     if let Some(&(i, _)) = unit.inputs.iter().find(|i| value[i.0] == value[o]) {
                         if i != o {
                             alias.insert(o, i);
@@ -718,6 +731,25 @@ impl<'kb> Tree<'kb> {
             first.insert(key, u);
         }
         changed
+    }
+
+    /// The foods unit `u` puts in for good: no output of it names them and no later unit takes them
+    /// (`taken_later`). Where the unit is dropped as making nothing new (the egg poured into a bowl pruning
+    /// left empty, which then looks like the egg's own), they go on with the unit that takes what it
+    /// filled, so their lines keep their start.
+    fn put_in(&self, u: TUnitId, taken_later: impl Fn(SlotId) -> bool) -> Vec<SlotId> {
+        let unit = &self.units[u];
+        let named = |x: SlotId| {
+            let label = &self.slots[x].node.label;
+            unit.outputs
+                .iter()
+                .any(|o| self.slots[o.0].node.label == *label)
+        };
+        unit.inputs
+            .iter()
+            .map(|i| i.0)
+            .filter(|&x| !self.slots[x].utensil && !named(x) && !taken_later(x))
+            .collect()
     }
 
     /// An id per unit, equal for units with the same motion.

@@ -33,6 +33,8 @@ pub struct Form {
     pub shows_cooking: bool,
     /// The state a food of this form is in once heated, in place of its own ("melted" butter).
     pub heated: Option<String>,
+    /// The state a food of this form joins a drink in ("blended" banana), if not as it is.
+    pub in_drink: Option<String>,
 }
 
 struct Forms {
@@ -68,6 +70,7 @@ fn parse(text: &str) -> Forms {
         else {
             continue; // a test names the row
         };
+        let in_drink = parts.next().map(str::trim).filter(|w| *w != "-");
         for c in split_list(categories) {
             of_category.entry(c).or_insert(forms.len());
         }
@@ -79,6 +82,7 @@ fn parse(text: &str) -> Forms {
             state_when_none: Some(none.trim()).filter(|w| *w != "-").map(str::to_string),
             shows_cooking: shows != "no",
             heated: Some(heated).filter(|w| *w != "-").map(str::to_string),
+            in_drink: in_drink.map(str::to_string),
         });
     }
     Forms { forms, of_category }
@@ -241,6 +245,13 @@ pub fn state_once_heated(food: &str) -> Option<&'static str> {
 /// starch or oil.
 pub fn cooks_in_pan(food: &str) -> bool {
     form_of(food).map_or_else(|| must_cook(food), |f| f.shows_cooking)
+}
+
+/// The state `food` joins a drink in where it is not in it yet: a fruit or vegetable blended, not in
+/// pieces in the glass; none for a garnish (`top`: mint leaves, whipped cream).
+pub fn state_in_drink(food: &str) -> Option<&'static str> {
+    let form = form_of(food)?;
+    form.in_drink.as_deref().filter(|_| !joins_served(food))
 }
 
 /// Whether `food` must be cooked before it is eaten (raw chicken, dry pasta, flour).
@@ -671,6 +682,16 @@ mod tests {
             Some("dry")
         );
         assert!(!takes("cocoa", "chop"));
+    }
+
+    #[test]
+    fn fruit_and_vegetables_join_a_drink_blended_not_a_powder_or_a_garnish() {
+        for food in ["banana", "mango", "pumpkin", "spinach", "strawberry"] {
+            assert_eq!(state_in_drink(food), Some("blended"), "{food}");
+        }
+        for food in ["milk", "sugar", "ice", "whipped cream", "cinnamon"] {
+            assert_eq!(state_in_drink(food), None, "{food}");
+        }
     }
 
     #[test]

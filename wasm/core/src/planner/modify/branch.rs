@@ -365,6 +365,7 @@ fn join_branch<'kb>(
         } else if foods::cooked_first(food) {
             last = cook_alone(ctx, tree, (o, "before it joins"), last, how);
         }
+        last = blend_for_drink(ctx, tree, (o, eq), last, how);
         tree.units[m].inputs.push((last, true));
         tree.add_contents_downstream(m, o, &order, &carries);
         tree.units[m].origin = Origin::Attached;

@@ -266,12 +266,14 @@ pub(super) fn trim_point(
 
 /// The states of the asked food `o` made to fit its form (`foods::Form`): a state it is never in, taken
 /// over from a substitute (tahini "ground, powder" like the sesame it replaced), goes; a food left with no
-/// state as it starts is shown in its form's ("liquid" oil).
-pub(super) fn fit_states_to_form(ctx: &Context, tree: &mut Tree, o: &str) {
-    let Some(form) = foods::form_of(known_as(ctx, o, o)) else {
-        return;
-    };
-    let misfit = |st: &State| st.arg.is_none() && form.never_in.iter().any(|w| *w == st.name);
+/// state as it starts is shown in its form's ("liquid" oil), else as it was asked (`as_bought`), never blank.
+pub(super) fn fit_states_to_form(ctx: &Context, tree: &mut Tree, o: &str, asked: &str) {
+    let form = foods::form_of(known_as(ctx, o, o));
+    let never_in = |w: &str| form.is_some_and(|f| f.never_in.iter().any(|n| n == w));
+    let misfit = |st: &State| st.arg.is_none() && never_in(&st.name);
+    let when_none = form
+        .and_then(|f| f.state_when_none.as_deref())
+        .or_else(|| as_bought(asked).filter(|s| !never_in(s)));
     for x in tree.slots_with_label(o) {
         let starts = !tree.produced(x);
         let node = &tree.slots[x].node;
@@ -282,13 +284,58 @@ pub(super) fn fit_states_to_form(ctx: &Context, tree: &mut Tree, o: &str) {
             .cloned()
             .collect();
         let bare = !states.iter().any(|st| st.arg.is_none());
-        let shown = form.state_when_none.as_deref().filter(|_| starts && bare);
+        let shown = when_none.filter(|_| starts && bare);
         if states.len() == node.states.len() && shown.is_none() {
             continue;
         }
         states.extend(shown.map(State::plain));
         tree.slots[x].node = Cow::Owned(ObjectNode::new(node.label.clone(), states));
     }
+}
+
+/// The asked state as a food bought so is shown (chips "pieces", "crushed"; a liquid's coarse words,
+/// "juice" or "thick liquid", as "liquid"); none for a state a cook makes (mixed, cooked) or one the
+/// state taxonomy does not know.
+fn as_bought(asked: &str) -> Option<&str> {
+    match category(asked) {
+        Category::Liquid => Some(Category::Liquid.name()),
+        Category::Mixed | Category::Cooked | Category::Other => None,
+        _ => Some(asked).filter(|s| !s.is_empty()),
+    }
+}
+
+/// A fruit or vegetable joining a drink that blends nothing (`foods::state_in_drink`): a unit blends it
+/// first, so the banana or mango is in the drink, not in pieces at the bottom of the glass. A drink
+/// with a blender takes it there. Returns the slot the branch now ends in.
+pub(super) fn blend_for_drink<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    (o, eq): (&str, &str),
+    last: SlotId,
+    how: &mut String,
+) -> SlotId {
+    let drink = ctx.class.and_then(dish_class_name) == Some("drinks");
+    let Some(state) = foods::state_in_drink(known_as(ctx, o, eq)).filter(|_| drink) else {
+        return last;
+    };
+    // the drink's own blender, not one blending another ingredient for it
+    let blender = tree
+        .alive_units()
+        .any(|(_, u)| u.motion.contains("blend") && u.origin != Origin::Grafted);
+    let poured = tree.slots[last]
+        .node
+        .physical_states()
+        .any(|st| matches!(category(st), Category::Liquid | Category::Mixed));
+    if blender || poured {
+        return last;
+    }
+    let motion = ctx
+        .index
+        .motion_for(state)
+        .unwrap_or_else(|| "blend".into());
+    let made = ObjectNode::new(o, vec![State::plain(state)]);
+    let _ = write!(how, ", then '{motion}' to make it '{state}' for the drink");
+    add_state_unit(ctx, tree, last, made, &motion)
 }
 
 /// The dish itself cooked last when what is in it must be cooked (the egg of fresh egg noodles, the flour

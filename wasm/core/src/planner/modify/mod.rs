@@ -164,7 +164,7 @@ pub(crate) fn modify<'kb>(
         tree.drop_unneeded();
         ctx.trace.record(|t| t.pruned_from(tree, &removed));
         d.bring_pending(ctx, tree, query);
-        d.finish_planned(ctx, tree);
+        d.finish_planned(ctx, tree, query);
         cook_dish(ctx, tree, notes);
         name_for_query(ctx, tree, query, notes);
         name_motions(tree);
@@ -321,10 +321,10 @@ impl Driver {
 
     /// What a cook does to each planned ingredient before it is used (`finish`), once per label: a name
     /// asked twice has one line.
-    fn finish_planned<'kb>(&mut self, ctx: &Context<'kb>, tree: &mut Tree<'kb>) {
+    fn finish_planned<'kb>(&mut self, ctx: &Context<'kb>, tree: &mut Tree<'kb>, query: &Query) {
         let mut done: HashSet<String> = HashSet::default();
-        for w in self.works.iter_mut().filter(|w| w.planned) {
-            if !done.insert(w.label.clone()) {
+        for (w, ing) in self.works.iter_mut().zip(&query.ingredients) {
+            if !w.planned || !done.insert(w.label.clone()) {
                 continue;
             }
             let eq = w
@@ -344,7 +344,7 @@ impl Driver {
                     given.join(", then ")
                 ));
             }
-            fit_states_to_form(ctx, tree, &w.label);
+            fit_states_to_form(ctx, tree, &w.label, &ing.state);
         }
     }
 }
