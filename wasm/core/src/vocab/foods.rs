@@ -682,6 +682,8 @@ mod tests {
             Some("dry")
         );
         assert!(!takes("cocoa", "chop"));
+        // a brand of cream cheese is a soft cheese, never grated
+        assert!(!takes("philadelphia", "grate"));
     }
 
     #[test]
