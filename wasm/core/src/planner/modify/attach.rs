@@ -208,18 +208,7 @@ pub(super) fn attach_point(
             best = Some((u, (true, true, true, cool, adds, false, usize::MAX - pref)));
             break;
         }
-        let kin = unit.inputs.iter().any(|i| {
-            let x = &tree.slots[i.0];
-            let n = &x.node;
-            !x.utensil
-                && n.label != o
-                && ((!matches!(c, Category::Whole | Category::Other) && food_category(ctx, n) == c)
-                    || {
-                        let sim = ctx.scorer.pair(o, &n.label);
-                        ctx.sim.accepts(sim) && sim < 1.0
-                    })
-        });
-        if let Some(key) = beats(kin, pref) {
+        if let Some(key) = beats(kin_join(ctx, tree, u, o, c), pref) {
             best = Some((u, key));
             // a unit adding ingredients of the same kind with the dish's first motion into the dish: none
             // beats it
@@ -233,6 +222,22 @@ pub(super) fn attach_point(
     best.filter(|(_, key)| key.0)
         .map(|b| b.0)
         .or_else(|| tree.producer.get(tree.goal).copied().flatten())
+}
+
+/// Whether ingredients of the kind of `o` (asked in category `c`) join unit `u`: a food in the same
+/// state category (salt where the pepper is sprinkled), or one similar to it.
+fn kin_join(ctx: &Context, tree: &Tree, u: TUnitId, o: &str, c: Category) -> bool {
+    tree.units[u].inputs.iter().any(|i| {
+        let x = &tree.slots[i.0];
+        let n = &x.node;
+        !x.utensil
+            && n.label != o
+            && ((!matches!(c, Category::Whole | Category::Other) && food_category(ctx, n) == c)
+                || {
+                    let sim = ctx.scorer.pair(o, &n.label);
+                    ctx.sim.accepts(sim) && sim < 1.0
+                })
+    })
 }
 
 /// Whether unit `u` mixes a sauce apart, cold (the soy sauce and starch a stir-fry is tossed in).

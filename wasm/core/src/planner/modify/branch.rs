@@ -123,6 +123,35 @@ pub(super) fn private_unit(kb: &KnowledgeBase, u: UnitId, eq: &str) -> bool {
     })
 }
 
+/// The node of `eq` a case-4 branch starts from, whether it is in state `s`, and the units making it:
+/// the best few ranked in the state, and always the ingredient as it comes from the kitchen (last). A
+/// branch handling the food as no recipe handles one of its form is kept only as a last resort (tahini
+/// is not ground as the seed it was matched with).
+fn pick_branch(ctx: &Context, o: &str, eq: &str, s: &str) -> Option<(NodeId, bool, Retrieved)> {
+    let candidates = rank_nodes(ctx, eq, s);
+    let count = candidates.len();
+    let tried = candidates
+        .iter()
+        .copied()
+        .enumerate()
+        .filter(|(i, _)| *i < 8 || *i + 1 == count)
+        .map(|x| x.1);
+    let mut misfit = None;
+    for (n, in_state) in tried {
+        if ctx.kb.kitchen[n] {
+            return Some((n, in_state, Default::default()));
+        }
+        let private = |u| private_unit(ctx.kb, u, eq);
+        if let Some(r) = retrieve_within(ctx.kb, ctx.index, ctx.scorer, n, None, private) {
+            if branch_fits(ctx, o, eq, &r) {
+                return Some((n, in_state, r));
+            }
+            misfit.get_or_insert((n, in_state, r));
+        }
+    }
+    misfit
+}
+
 /// Case 4 from the universal FOON: the equivalent's branch for the state, renamed and attached.
 /// Returns the chosen state text and a reason.
 pub(super) fn add_branch<'kb>(
@@ -134,34 +163,7 @@ pub(super) fn add_branch<'kb>(
 ) -> Result<(SmolStr, String), String> {
     let prepared = prepared_state(ctx, o, eq, asked);
     let s = prepared.unwrap_or(asked);
-    let mut picked = None;
-    let mut misfit = None;
-    let candidates = rank_nodes(ctx, eq, s);
-    let count = candidates.len();
-    // the best few in the state, and always the ingredient as it comes from the kitchen (last)
-    let tried = candidates
-        .iter()
-        .copied()
-        .enumerate()
-        .filter(|(i, _)| *i < 8 || *i + 1 == count)
-        .map(|x| x.1);
-    for (n, in_state) in tried {
-        if ctx.kb.kitchen[n] {
-            picked = Some((n, in_state, Default::default()));
-            break;
-        }
-        let private = |u| private_unit(ctx.kb, u, eq);
-        if let Some(r) = retrieve_within(ctx.kb, ctx.index, ctx.scorer, n, None, private) {
-            // a branch handling the food as no recipe handles one of its form is kept only as a last
-            // resort (tahini is not ground as the seed it was matched with)
-            if branch_fits(ctx, o, eq, &r) {
-                picked = Some((n, in_state, r));
-                break;
-            }
-            misfit.get_or_insert((n, in_state, r));
-        }
-    }
-    let picked = picked.or(misfit);
+    let picked = pick_branch(ctx, o, eq, s);
     let node = picked.as_ref().map(|p| (p.0, p.1));
     ctx.trace
         .record(|t| t.state_choice(ctx, (o, asked), eq, s, node));

@@ -101,6 +101,21 @@ struct Work {
     label: String,
 }
 
+impl Work {
+    fn new(label: &str) -> Work {
+        Work {
+            case: None,
+            matched: None,
+            alternatives: Vec::new(),
+            low_confidence: false,
+            overridden: false,
+            planned: false,
+            reasons: Vec::new(),
+            label: label.to_string(),
+        }
+    }
+}
+
 /// The driver's record while it goes through the query's ingredients.
 #[derive(Default)]
 struct Driver {
@@ -194,16 +209,7 @@ impl Driver {
         reference: &ReferenceLabels,
     ) -> Work {
         let (o, s) = (ing.object.as_str(), ing.state.as_str());
-        let mut w = Work {
-            case: None,
-            matched: None,
-            alternatives: Vec::new(),
-            low_confidence: false,
-            overridden: false,
-            planned: false,
-            reasons: Vec::new(),
-            label: o.to_string(),
-        };
+        let mut w = Work::new(o);
         let read = read_as(ctx, o, s);
         if let Some(r) = read {
             w.reasons.push(format!("'{o}' {s} read as '{r}'"));
@@ -239,27 +245,8 @@ impl Driver {
             state: tree_state(tree, &slots, s, ctx.index.sold_as(&eq)),
             similarity: sim,
         });
-        if eq != o {
-            if requested.contains(eq.as_str()) || self.claimed.contains(&eq) {
-                match copy_branch(tree, &eq, o) {
-                    Some(_) => w.reasons.push(format!(
-                        "'{eq}' is also needed: its branch was copied for '{o}'"
-                    )),
-                    None => {
-                        // no branch of its own to copy: one from elsewhere in FOON, after pruning
-                        w.reasons.push(format!(
-                            "'{eq}' is also needed and has no branch of its own to copy"
-                        ));
-                        self.pending
-                            .push((self.works.len(), eq.clone(), s.to_string()));
-                        return w;
-                    }
-                }
-            } else {
-                tree.rename_everywhere(&eq, o);
-                w.reasons.push(format!("'{eq}' substituted with '{o}'"));
-            }
-            self.claimed.insert(eq.clone());
+        if eq != o && !self.substitute(tree, (&eq, o, s), requested, &mut w) {
+            return w;
         }
         self.claimed.insert(o.to_string());
         // renaming or copying gave `o` its slots; else they are the ones found for `eq`
@@ -271,6 +258,36 @@ impl Driver {
         settle_state(ctx, tree, &eq, o, s, &slots, &mut self.settled, &mut w);
         w.planned = true;
         w
+    }
+
+    /// The equivalent `eq` in the tree takes the asked name `o`: renamed, or its branch copied where
+    /// another ingredient needs `eq` too. False when it has no branch of its own to copy: one from
+    /// elsewhere in FOON comes after pruning (`pending`).
+    fn substitute(
+        &mut self,
+        tree: &mut Tree,
+        (eq, o, s): (&str, &str, &str),
+        requested: &HashSet<&str>,
+        w: &mut Work,
+    ) -> bool {
+        if requested.contains(eq) || self.claimed.contains(eq) {
+            if copy_branch(tree, eq, o).is_none() {
+                w.reasons.push(format!(
+                    "'{eq}' is also needed and has no branch of its own to copy"
+                ));
+                self.pending
+                    .push((self.works.len(), eq.to_string(), s.to_string()));
+                return false;
+            }
+            w.reasons.push(format!(
+                "'{eq}' is also needed: its branch was copied for '{o}'"
+            ));
+        } else {
+            tree.rename_everywhere(eq, o);
+            w.reasons.push(format!("'{eq}' substituted with '{o}'"));
+        }
+        self.claimed.insert(eq.to_string());
+        true
     }
 
     /// After pruning: the pending ingredients get their branches from elsewhere in FOON, and so does an
