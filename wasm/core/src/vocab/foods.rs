@@ -40,7 +40,7 @@ pub struct Form {
 struct Forms {
     forms: Vec<Form>,
     /// Taxonomy category name, or a food's own name, -> index into `forms`.
-    of_category: HashMap<String, usize>,
+    by_name: HashMap<String, usize>,
 }
 
 fn split_list(list: &str) -> impl Iterator<Item = String> + '_ {
@@ -52,7 +52,7 @@ fn split_list(list: &str) -> impl Iterator<Item = String> + '_ {
 
 fn parse(text: &str) -> Forms {
     let mut forms = Vec::new();
-    let mut of_category = HashMap::default();
+    let mut by_name = HashMap::default();
     for line in crate::vocab::taxonomy::data_lines(text) {
         let mut parts = line.split('\t');
         let (Some(name), Some(categories), Some(cannot), Some(joins), Some(never), Some(none)) = (
@@ -72,7 +72,7 @@ fn parse(text: &str) -> Forms {
         };
         let in_drink = parts.next().map(str::trim).filter(|w| *w != "-");
         for c in split_list(categories) {
-            of_category.entry(c).or_insert(forms.len());
+            by_name.entry(c).or_insert(forms.len());
         }
         forms.push(Form {
             name: name.trim().to_string(),
@@ -85,7 +85,7 @@ fn parse(text: &str) -> Forms {
             in_drink: in_drink.map(str::to_string),
         });
     }
-    Forms { forms, of_category }
+    Forms { forms, by_name }
 }
 
 fn forms() -> &'static Forms {
@@ -97,12 +97,12 @@ fn forms() -> &'static Forms {
 /// chocolate), else its category's in the built-in taxonomy; None when neither is listed.
 pub fn form_of(food: &str) -> Option<&'static Form> {
     let f = forms();
-    if let Some(&i) = f.of_category.get(food) {
+    if let Some(&i) = f.by_name.get(food) {
         return Some(&f.forms[i]);
     }
     let taxonomy = Taxonomy::builtin();
     let category = &taxonomy.category(taxonomy.lookup(food)?).name;
-    f.of_category.get(category).map(|&i| &f.forms[i])
+    f.by_name.get(category).map(|&i| &f.forms[i])
 }
 
 pub fn motion_words(motion: &str) -> impl Iterator<Item = &str> {
@@ -661,7 +661,7 @@ mod tests {
     #[test]
     fn every_listed_category_or_food_is_in_the_taxonomy() {
         let taxonomy = Taxonomy::builtin();
-        for name in forms().of_category.keys() {
+        for name in forms().by_name.keys() {
             assert!(
                 taxonomy.categories.iter().any(|c| &c.name == name)
                     || taxonomy.lookup(name).is_some(),

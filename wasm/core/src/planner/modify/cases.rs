@@ -65,8 +65,11 @@ pub(super) fn settle_state<'kb>(
 ) {
     let sold = ctx.index.sold_as(eq);
     let in_state = best_state_slot(tree, slots, s, sold);
-    let joining = shaped_as_it_joins(tree, slots)
-        .filter(|&(_, st)| st == s && in_state.is_none())
+    let joining = in_state
+        .is_none()
+        .then(|| shaped_as_it_joins(tree, slots))
+        .flatten()
+        .filter(|&(_, st)| st == s)
         .map(|(motion, _)| motion);
     let state_ok = in_state.is_some()
         || joining.is_some()

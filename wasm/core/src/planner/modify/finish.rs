@@ -329,13 +329,25 @@ pub(super) fn blend_for_drink<'kb>(
     if blender || poured {
         return last;
     }
+    let (made, motion) = bring_to(ctx, tree, (o, state, "blend"), last);
+    let _ = write!(how, ", then '{motion}' to make it '{state}' for the drink");
+    made
+}
+
+/// A unit bringing the branch of `o` that ends at `last` to `state` by the motion FOON's recipes use for
+/// it (`fallback` where they have none). Returns the slot it makes and the motion.
+fn bring_to<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    (o, state, fallback): (&str, &str, &str),
+    last: SlotId,
+) -> (SlotId, String) {
     let motion = ctx
         .index
         .motion_for(state)
-        .unwrap_or_else(|| "blend".into());
+        .unwrap_or_else(|| fallback.into());
     let made = ObjectNode::new(o, vec![State::plain(state)]);
-    let _ = write!(how, ", then '{motion}' to make it '{state}' for the drink");
-    add_state_unit(ctx, tree, last, made, &motion)
+    (add_state_unit(ctx, tree, last, made, &motion), motion)
 }
 
 /// The dish itself cooked last when what is in it must be cooked (the egg of fresh egg noodles, the flour
@@ -402,11 +414,7 @@ pub(super) fn cook_alone<'kb>(
     if !raw || foods::cooking(known_as(ctx, o, o)) != foods::Cooking::Alone {
         return last;
     }
-    let motion = ctx
-        .index
-        .motion_for("cooked")
-        .unwrap_or_else(|| "cook".into());
-    let made = ObjectNode::new(o, vec![State::plain("cooked")]);
+    let (made, motion) = bring_to(ctx, tree, (o, "cooked", "cook"), last);
     let _ = write!(how, ", '{motion}' to make it cooked ({why})");
-    add_state_unit(ctx, tree, last, made, &motion)
+    made
 }

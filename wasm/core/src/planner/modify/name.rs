@@ -85,7 +85,6 @@ pub(super) fn name_for_query(
 /// baked) where the dish is renamed to another class: a bread made through a pizza's tree is never
 /// called a pizza on the way.
 fn earlier_stages(tree: &Tree, goal: &str, to: &str, asked: &HashSet<&str>) -> Vec<SmolStr> {
-    let head = |label: &str| label.rsplit(' ').next().map(str::to_string);
     if dish_class_of(goal) == dish_class_of(to) {
         return Vec::new();
     }
@@ -93,11 +92,16 @@ fn earlier_stages(tree: &Tree, goal: &str, to: &str, asked: &HashSet<&str>) -> V
         .live_slots()
         .filter(|&s| !tree.slots[s].utensil && tree.produced(s))
         .map(|s| tree.slots[s].node.label.clone())
-        .filter(|l| l != goal && !asked.contains(l.as_str()) && head(l) == head(goal))
+        .filter(|l| l != goal && !asked.contains(l.as_str()) && head_word(l) == head_word(goal))
         .collect();
     stages.sort();
     stages.dedup();
     stages
+}
+
+/// The last word of a name, the food it names ("pizza" of "cheese pizza").
+fn head_word(label: &str) -> &str {
+    label.rsplit(' ').next().unwrap_or(label)
 }
 
 /// Gives a unit the cook's word for its motion (`foods::cooks_word`) where it gives a food the state
