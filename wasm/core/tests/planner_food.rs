@@ -285,6 +285,55 @@ fn a_soup_simmered_into_another_is_followed_though_the_pot_still_lists_it() {
     assert_eq!(kinds(&p), []);
 }
 
+/// A soup FOON leaves "partly cooked" in the hot pot where the flour is whisked in, and calls "cooked"
+/// only once it is ladled into the bowl.
+const WHISKED_SOUP: &str = "//
+O\tpot\t0
+S\tcontains\t{broth}
+S\thot
+O\tflour\t1
+S\tpowder
+O\twhisk\t1
+M\tpour and mix\t<Assumed>
+O\tpot\t0
+S\tcontains\t{broth,flour}
+O\tpotato soup\t1
+S\tcontains\t{broth,flour}
+S\tpartly cooked
+S\tin\t[pot]
+//
+O\tpotato soup\t1
+S\tcontains\t{broth,flour}
+S\tpartly cooked
+S\tin\t[pot]
+O\tbowl\t0
+S\tempty
+O\tladle\t1
+M\tscoop and pour\t<Assumed>
+O\tpotato soup\t1\t1
+S\tcontains\t{broth,flour}
+S\tcooked
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn a_soup_left_partly_cooked_in_its_pot_is_cooked_there_before_it_is_ladled() {
+    let p = plan_of(
+        &[("soup.txt", WHISKED_SOUP)],
+        &ExactMatch,
+        &query("soup", &[("flour", "ground")]),
+    );
+    let motions: Vec<&str> = p.units.iter().map(|u| u.motion.as_str()).collect();
+    assert_eq!(
+        motions,
+        ["pour and mix", "cook", "scoop and pour"],
+        "{:#?}",
+        p.units
+    );
+    assert_eq!(kinds(&p), [], "{:#?}", p.progress_lines);
+}
+
 #[test]
 fn a_powder_squeezed_is_cautioned() {
     let squeezed = "//

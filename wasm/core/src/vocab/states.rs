@@ -229,6 +229,12 @@ pub(crate) fn state_text(node: &ObjectNode) -> SmolStr {
     }
 }
 
+/// Whether `state` says a food is cooked through: a cooked state, but not one of the way there ("partly
+/// cooked", "partly toasted") or the heat of a pot ("hot").
+pub fn done_cooking(state: &str) -> bool {
+    category(state) == Category::Cooked && !state.starts_with("partly ") && state != "hot"
+}
+
 /// Whether the state `s` of `node` was undone by another of its states (a node keeps the states it was
 /// given on the way): "unpeeled" beside "peeled", "uncooked", "raw" or "partly cooked" beside a cooked
 /// state, "softened" beside "melted", the piece it was bought as ("whole", "block", "clove") once it is

@@ -356,9 +356,8 @@ fn bring_to<'kb>(
 pub(super) fn cook_dish<'kb>(ctx: &Context<'kb>, tree: &mut Tree<'kb>, notes: &mut Vec<String>) {
     let node = &tree.slots[tree.goal].node;
     let label = node.label.clone();
-    let raw = !node
-        .physical_states()
-        .any(|st| category(st) == Category::Cooked);
+    // a soup left "partly cooked" or "hot" by the pot it was mixed in is not done
+    let raw = !node.physical_states().any(done_cooking);
     // what is in it must be cooked: flour, or an egg that was not cooked before it joined (each judged
     // as the food its asked state says it is: fish asked as sauce is fish sauce)
     let must_cook = node
@@ -377,6 +376,90 @@ pub(super) fn cook_dish<'kb>(ctx: &Context<'kb>, tree: &mut Tree<'kb>, notes: &m
     notes.push(format!(
         "'{label}' is cooked last ('{motion}'): the reference task tree makes it raw"
     ));
+}
+
+/// A dish left "partly cooked" or "hot" in its pot by the unit that mixed it (flour whisked into the hot
+/// soup), that no unit after cooks, is cooked there before it leaves the pot (FOON often just calls the
+/// served bowl "cooked"): a unit to "cooked" after its last node in that pot, and the nodes after it say so.
+pub(super) fn finish_in_pot<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    notes: &mut Vec<String>,
+) {
+    let dish = tree.slots[tree.goal].node.label.clone();
+    let order = tree.order();
+    let underdone = |x: SlotId| {
+        let node = &tree.slots[x].node;
+        node.physical_states()
+            .any(|st| category(st) == Category::Cooked)
+            && !node.physical_states().any(done_cooking)
+    };
+    let Some(first) = order
+        .iter()
+        .flat_map(|&u| tree.units[u].outputs.iter().map(|o| o.0))
+        .find(|&x| tree.slots[x].node.label == dish && underdone(x))
+    else {
+        return;
+    };
+    let chain = own_chain(tree, &order, &dish, first);
+    let pot = tree.slots[first].node.container();
+    // cooked on the way, or done in the pot by its heat (the omelette folded "cooked" in the pan)
+    let done_in_pot = tree.slots_with_label(&dish).into_iter().any(|x| {
+        let node = &tree.slots[x].node;
+        node.container() == pot && node.physical_states().any(done_cooking)
+    });
+    if done_in_pot
+        || chain
+            .iter()
+            .any(|&(_, u)| cook_words(tree, u).any(foods::cooks))
+    {
+        return;
+    }
+    let Some(&(at, _)) = chain
+        .iter()
+        .take_while(|&&(x, _)| tree.slots[x].node.container() == pot)
+        .last()
+    else {
+        return;
+    };
+    let motion = state_motion(ctx, &dish, &dish, "cooked")
+        .ok()
+        .filter(|m| foods::cooks(m))
+        .unwrap_or_else(|| "cook".into());
+    let made = add_state_unit(ctx, tree, at, cooked(&tree.slots[at].node), &motion);
+    // the units that took the dish from `at` take it cooked (not the new unit, the last one)
+    let new_unit = tree.units.len() - 1;
+    for unit in tree.units[..new_unit].iter_mut().filter(|u| u.alive) {
+        for input in unit.inputs.iter_mut().filter(|i| i.0 == at) {
+            input.0 = made;
+        }
+    }
+    let order = tree.order();
+    let later: Vec<SlotId> = own_chain(tree, &order, &dish, made)
+        .into_iter()
+        .map(|(x, _)| x)
+        .skip(1)
+        .chain(std::iter::once(tree.goal))
+        .collect();
+    for x in later {
+        tree.slots[x].node = Cow::Owned(cooked(&tree.slots[x].node));
+    }
+    notes.push(format!(
+        "'{dish}' is cooked ('{motion}') before it leaves the pot: the reference task tree leaves it \
+         partly cooked there"
+    ));
+}
+
+/// `node` cooked through: its cooked states ("partly cooked", "hot") give way to "cooked".
+fn cooked(node: &ObjectNode) -> ObjectNode {
+    let mut states: Vec<State> = node
+        .states
+        .iter()
+        .filter(|st| st.arg.is_some() || category(&st.name) != Category::Cooked)
+        .cloned()
+        .collect();
+    states.push(State::plain("cooked"));
+    ObjectNode::new(node.label.clone(), states)
 }
 
 /// Whether some node of `food` in the tree is cooked (the chicken baked before it joined the salad).

@@ -15,7 +15,8 @@ use crate::foon::model::{NodeId, ObjectNode, State, UnitId};
 use crate::similarity::Similarity;
 use crate::vocab::foods;
 use crate::vocab::states::{
-    akin, category, food_state_category, has_food_state, is_food_state, kind, state_text, Category,
+    akin, category, done_cooking, food_state_category, has_food_state, is_food_state, kind,
+    state_text, Category,
 };
 use crate::vocab::taxonomy::{dish_class_name, dish_class_of, is_transfer_motion, is_utensil};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
@@ -180,6 +181,7 @@ pub(crate) fn modify<'kb>(
         ctx.trace.record(|t| t.pruned_from(tree, &removed));
         d.bring_pending(ctx, tree, query);
         d.finish_planned(ctx, tree, query);
+        finish_in_pot(ctx, tree, notes);
         cook_dish(ctx, tree, notes);
         name_for_query(ctx, tree, query, notes);
         name_motions(tree);
