@@ -334,6 +334,82 @@ fn a_soup_left_partly_cooked_in_its_pot_is_cooked_there_before_it_is_ladled() {
     assert_eq!(kinds(&p), [], "{:#?}", p.progress_lines);
 }
 
+/// A cake of lemon zest: the lemon grated beside its zest, which nothing takes but the zest it lists.
+const ZESTED_CAKE: &str = "//
+O\tlemon\t1
+S\twhole
+O\tgrater\t1
+O\tbowl\t0
+S\tempty
+M\tgrate\t<Assumed>
+O\tlemon\t1
+S\tgrated
+O\tlemon zest\t1
+S\tcontains\t{lemon}
+S\tin\t[bowl]
+//
+O\tlemon zest\t1
+S\tcontains\t{lemon}
+S\tin\t[bowl]
+O\tflour\t1
+S\tpowder
+M\tmix\t<Assumed>
+O\tlemon cake\t1\t5
+S\tcontains\t{flour,lemon zest}
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn a_food_grated_into_its_zest_is_followed_into_the_dish() {
+    let p = plan_of(
+        &[("cake.txt", ZESTED_CAKE)],
+        &ExactMatch,
+        &query("cake", &[("lemon", "whole"), ("flour", "ground")]),
+    );
+    assert_eq!(line_motions(&p, "lemon"), ["grate", "mix", "cook"]);
+    assert_eq!(kinds(&p), [], "{:#?}", p.progress_lines);
+}
+
+/// Rice cooked with garlic in it, FOON's node of the cooked rice listing the garlic, then served.
+const GARLIC_RICE: &str = "//
+O\tpot\t0
+S\tempty
+O\tgarlic\t1
+S\tminced
+O\trice\t1
+S\tuncooked
+M\tcook\t<Assumed>
+O\trice\t1
+S\tcontains\t{garlic}
+S\tcooked
+S\tin\t[pot]
+//
+O\trice\t1
+S\tcontains\t{garlic}
+S\tcooked
+S\tin\t[pot]
+O\tplate\t0
+S\tempty
+M\tscoop and pour\t<Assumed>
+O\tgarlic rice\t1\t19
+S\tcontains\t{rice}
+S\ton\t[plate]
+//
+";
+
+#[test]
+fn a_food_made_under_a_pruned_ingredients_name_stays_as_what_the_others_go_on_in() {
+    let p = plan_of(
+        &[("rice.txt", GARLIC_RICE)],
+        &ExactMatch,
+        &query("rice", &[("garlic", "minced")]),
+    );
+    assert_eq!(line_motions(&p, "garlic"), ["cook", "scoop and pour"]);
+    assert_eq!(kinds(&p), [], "{:#?}", p.progress_lines);
+    assert_eq!(p.removed, ["rice"]);
+}
+
 #[test]
 fn a_powder_squeezed_is_cautioned() {
     let squeezed = "//

@@ -250,6 +250,21 @@ fn does_nothing(
     lost_all || no_op || moves_nothing || outputs.is_empty()
 }
 
+/// A food made on the way under the name of an ingredient that goes, but holding others that stay (the
+/// "rice" FOON cooks with the garlic and oil in it, where noodles are asked), is what those go on in: it
+/// stays, as a mixture (`name_for_query` names it for what it holds).
+fn keep_mixtures(tree: &mut Tree, live: &[SlotId], gone: &mut [bool]) {
+    for &x in live {
+        let slot = &tree.slots[x];
+        if gone[x] && !slot.utensil && tree.produced(x) && slot.node.holds_something() {
+            gone[x] = false;
+            let node = &tree.slots[x].node;
+            let label = format!("{} mixture", node.label);
+            tree.slots[x].node = Cow::Owned(ObjectNode::new(label, node.states.clone()));
+        }
+    }
+}
+
 /// Removes every starting ingredient not asked for (`keep`: planned so far; `requested`: the query's
 /// names, some still to be brought in), with the units that only served it; containers that held it
 /// pass on unchanged, and it leaves every `contains {…}` list. Returns the removed labels.
@@ -285,6 +300,7 @@ pub(super) fn prune(
     for &x in &live {
         gone[x] = going.contains(tree.slots[x].node.label.as_str());
     }
+    keep_mixtures(tree, &live, &mut gone);
     for &x in &namesake_slots {
         gone[x] = true;
     }
