@@ -10,6 +10,18 @@ export async function waitForPlan(page: Page, root = ""): Promise<void> {
   });
 }
 
+/**
+ * Scrolls the export and knowledge-base tools into view and waits until the page has settled there. Near the
+ * screen, the Algorithm view just above them loads, the plan is made again with its trace, and the view grows
+ * by its graph and steps (about 950 px), moving the tools down: a click aimed at a tool before then lands
+ * beside it, on nothing (the export test's lost "FOON text" click on a loaded machine).
+ */
+export async function scrollToTools(page: Page): Promise<void> {
+  await page.locator(".panel-export").scrollIntoViewIfNeeded();
+  await page.locator(".panel-explain[data-step]").waitFor({ timeout: 30_000 });
+  await waitForPlan(page);
+}
+
 /** Clicks and returns the saved download's name and bytes. */
 export async function downloadOf(page: Page, click: () => Promise<void>): Promise<{ name: string; bytes: Buffer }> {
   const [download]: [Download, void] = await Promise.all([page.waitForEvent("download"), click()]);

@@ -7,7 +7,7 @@ import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
 import type { Core } from "cytoscape";
 import type { Browser, BrowserContext, Page } from "playwright-core";
 import { ARTEFACTS, launch, screenshot, watchErrors } from "./browser";
-import { downloadOf, painted, waitForPlan } from "./app-helpers";
+import { downloadOf, painted, scrollToTools, waitForPlan } from "./app-helpers";
 import { lowContrast, unlabelledControls } from "./app-a11y";
 
 let browser: Browser;
@@ -305,6 +305,7 @@ describe("planner page", () => {
     expect(await page.locator(".kb-status").getAttribute("data-source")).toBe("custom"); // the previous one stays
     await screenshot(page, "app-kb-error");
 
+    await scrollToTools(page);
     await page.getByRole("button", { name: "Use the bundled knowledge base" }).click();
     await page.locator(".kb-status[data-source='bundled']").waitFor();
     await waitForPlan(page);
@@ -318,6 +319,7 @@ describe("planner page", () => {
     await page.goto(`${inject("baseUrl")}?dish=salad&i=tomato~whole&i=cucumber~sliced`);
     await waitForPlan(page);
     await page.locator(".cy canvas").first().waitFor();
+    await scrollToTools(page);
     const button = (name: string) => () => page.getByRole("button", { name, exact: true }).click();
 
     const foon = await downloadOf(page, button("FOON text"));

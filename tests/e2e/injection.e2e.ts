@@ -10,7 +10,7 @@ import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
 import type { Browser, Page } from "playwright-core";
 import { ROOT } from "../../src/planner/node";
 import { launch, screenshot, watchErrors } from "./browser";
-import { downloadOf, waitForPlan } from "./app-helpers";
+import { downloadOf, scrollToTools, waitForPlan } from "./app-helpers";
 import { setTrap, type PayloadTrap } from "./payload-trap";
 
 // Payloads are in the normal form of the reader (lower case, no underscores), so they reach the page as
@@ -123,6 +123,7 @@ describe("markup in FOON files and queries is text everywhere", () => {
     expect(await trap()).toEqual({ xss: null, violations: [], dialogs: [] });
 
     // the graph's SVG export: payloads escaped, a well-formed SVG with no element made from them
+    await scrollToTools(page);
     const svg = await downloadOf(page, () => page.getByRole("button", { name: "Graph SVG", exact: true }).click());
     const text = svg.bytes.toString();
     expect(text).not.toContain("<img");

@@ -5,7 +5,7 @@
 import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
 import type { Browser, BrowserContext, Page } from "playwright-core";
 import { launch, screenshot, watchErrors } from "./browser";
-import { downloadOf, waitForPlan } from "./app-helpers";
+import { downloadOf, scrollToTools, waitForPlan } from "./app-helpers";
 import { KB_DB_NAME, KB_KEY, KB_STORE } from "../../src/app/kb-store";
 import { CACHE_DB_NAME } from "../../src/worker/kb-cache";
 
@@ -120,6 +120,7 @@ describe("the user's knowledge base persists", () => {
     expect(await goal(page)).toBe("My own toast");
     await screenshot(page, "kb-persist-restored");
 
+    await scrollToTools(page);
     await page.getByRole("button", { name: "Use the bundled knowledge base" }).click();
     await page.locator(".kb-status[data-source='bundled']").waitFor();
     await waitForSaved(page, "bundled");
@@ -155,6 +156,7 @@ describe("the user's knowledge base persists", () => {
     await waitForPlan(one);
     expect(await goal(one)).toBe("Tab two toast");
 
+    await scrollToTools(two);
     await two.getByRole("button", { name: "Use the bundled knowledge base" }).click();
     await one.locator(".kb-status[data-source='bundled']").waitFor();
     expect(await one.locator(".kb-notice").textContent()).toMatch(/Another tab switched back to the bundled knowledge base/);
@@ -178,6 +180,7 @@ describe("the user's knowledge base persists", () => {
     await waitForPlan(page);
     expect(await goal(page)).toBe("Unsaved toast"); // still planning with it
     expect(await page.locator(".kb-unsaved").textContent()).toMatch(/won't survive a reload \(.*quota/i);
+    await scrollToTools(page);
     const button = page.getByRole("button", { name: `Download ${HOSTILE}` });
     const file = await downloadOf(page, () => button.click());
     expect(file.name).toBe(HOSTILE.replace(/[<>]/g, "_").replace(/\//g, "_"));
