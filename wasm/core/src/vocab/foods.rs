@@ -636,6 +636,9 @@ mod tests {
         assert_eq!(cooks_word("flip", "partly cooked"), Some("cook and flip"));
         assert_eq!(cooks_word("flip", "cooked"), Some("cook"));
         assert_eq!(cooks_word("flip", "flipped"), None);
+        // the milk and ice of a glass stirred are not "sprinkled" in
+        assert_eq!(cooks_word("sprinkle", "mixed"), Some("stir"));
+        assert_eq!(cooks_word("sprinkle", "sprinkled"), None);
         assert!(!shows_cooking("salt") && !shows_cooking("olive oil"));
         assert_eq!(state_once_heated("butter"), Some("melted"));
         assert_eq!(state_once_heated("olive oil"), None);
