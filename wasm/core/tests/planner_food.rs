@@ -410,6 +410,36 @@ fn a_food_made_under_a_pruned_ingredients_name_stays_as_what_the_others_go_on_in
     assert_eq!(p.removed, ["rice"]);
 }
 
+/// Banana bread: the banana mashed as FOON has it, with no peeling.
+const BANANA_BREAD: &str = "//
+O\tbanana\t1
+S\twhole
+O\tfork\t1
+M\tmash\t<Assumed>
+O\tbanana\t1
+S\tmashed
+//
+O\tbanana\t1
+S\tmashed
+O\tflour\t1
+S\tpowder
+M\tmix\t<Assumed>
+O\tbanana bread\t1\t0
+S\tcontains\t{banana,flour}
+S\tbaked
+//
+";
+
+#[test]
+fn a_banana_is_peeled_before_it_is_mashed() {
+    let p = plan_of(
+        &[("bread.txt", BANANA_BREAD)],
+        &ExactMatch,
+        &query("bread", &[("banana", "whole"), ("flour", "ground")]),
+    );
+    assert_eq!(line_motions(&p, "banana")[..2], ["peel", "mash"]);
+}
+
 #[test]
 fn a_powder_squeezed_is_cautioned() {
     let squeezed = "//

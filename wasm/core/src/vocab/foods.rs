@@ -371,6 +371,14 @@ pub fn cuts(motion: &str) -> bool {
     motion_words(motion).any(|w| CUTS.contains(&w))
 }
 
+/// Motion words that break a food up without a knife: what is peeled before a cut is peeled before these.
+const BREAKS_UP: &[&str] = &["mash", "blend", "puree", "grate", "shred", "crush", "grind"];
+
+/// Whether `motion` cuts a food or breaks it up (a banana mashed, ginger grated): its skin comes off first.
+pub fn breaks_up(motion: &str) -> bool {
+    cuts(motion) || motion_words(motion).any(|w| BREAKS_UP.contains(&w))
+}
+
 /// The heat motion words of `data/heat_motions.txt`, each flagged when it cooks in water.
 fn heat_words() -> &'static [(&'static str, bool)] {
     static HEAT: OnceLock<Vec<(&'static str, bool)>> = OnceLock::new();

@@ -240,7 +240,7 @@ pub(super) fn trim_point(
         chain
             .iter()
             .copied()
-            .find(|&(_, u)| foods::cuts(&tree.units[u].motion))
+            .find(|&(_, u)| foods::breaks_up(&tree.units[u].motion))
     };
     if trim.before_cut {
         return first_cut().filter(|&(y, _)| whole(y));
