@@ -440,6 +440,57 @@ fn a_banana_is_peeled_before_it_is_mashed() {
     assert_eq!(line_motions(&p, "banana")[..2], ["peel", "mash"]);
 }
 
+/// Pancakes: an egg cracked into the flour; elsewhere in FOON an egg is whipped.
+const EGG_PANCAKE: &str = "//
+O\tegg\t1
+S\twhole
+O\tbowl\t0
+S\tcontains\t{flour}
+O\tflour\t1
+S\tpowder
+S\tin\t[bowl]
+M\tcrack\t<Assumed>
+O\tpancake batter\t1
+S\tcontains\t{egg,flour}
+S\tin\t[bowl]
+//
+O\tpancake batter\t1
+S\tcontains\t{egg,flour}
+S\tin\t[bowl]
+M\tfry\t<Assumed>
+O\tpancake\t1\t5
+S\tcontains\t{egg,flour}
+S\tcooked
+//
+";
+const WHIPPED_EGG: &str = "//
+O\tegg\t1
+S\tcracked
+S\tin\t[bowl]
+O\twhisk\t1
+M\tbeat\t<Assumed>
+O\tegg\t1
+S\twhipped
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn a_name_asked_whole_and_prepared_has_one_line_through_both() {
+    let files = [("pancake.txt", EGG_PANCAKE), ("egg.txt", WHIPPED_EGG)];
+    let asked = [
+        ("egg", "whole raw"),
+        ("egg", "whipped"),
+        ("flour", "ground"),
+    ];
+    let p = plan_of(&files, &ExactMatch, &query("cake", &asked));
+    assert!(
+        line_motions(&p, "egg").contains(&"beat"),
+        "{:#?}",
+        p.progress_lines
+    );
+}
+
 #[test]
 fn a_powder_squeezed_is_cautioned() {
     let squeezed = "//

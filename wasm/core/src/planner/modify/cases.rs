@@ -99,8 +99,15 @@ pub(super) fn settle_state<'kb>(
                 None => format!("state '{s}' matched by category ({})", c.name()),
             });
     }
+    // the same name asked whole and prepared (an egg "whole raw" and "whipped") has one line through both:
+    // the prepared state is reached from the whole one it starts in ("mixed" alone prepares nothing)
+    let prepared =
+        !category(s).is_starting() && (category(s) != Category::Mixed || kind(s).is_some());
+    let first = settled
+        .get(o)
+        .filter(|f| !(prepared && category(f).is_starting()));
     if !state_ok {
-        if let Some(first) = settled.get(o) {
+        if let Some(first) = first {
             w.reasons.push(format!(
                 "kept in the state '{first}' chosen for the same ingredient earlier"
             ));
@@ -110,9 +117,9 @@ pub(super) fn settle_state<'kb>(
             }
         }
     }
-    settled
-        .entry(o.to_string())
-        .or_insert_with(|| s.to_string());
+    if first.is_none() {
+        settled.insert(o.to_string(), s.to_string());
+    }
     w.planned = true;
 }
 
