@@ -11,10 +11,10 @@ export async function waitForPlan(page: Page, root = ""): Promise<void> {
 }
 
 /**
- * Scrolls the export and knowledge-base tools into view and waits until the page has settled there. Near the
- * screen, the Algorithm view just above them loads, the plan is made again with its trace, and the view grows
- * by its graph and steps (about 950 px), moving the tools down: a click aimed at a tool before then lands
- * beside it, on nothing (the export test's lost "FOON text" click on a loaded machine).
+ * Scrolls the export and knowledge-base tools into view and waits until the page has settled there: near the
+ * screen, the Algorithm view just above them loads and the plan is made again with its trace. The view keeps
+ * the height it had before loading, so the tools stay put meanwhile (explain.e2e.ts checks that); the wait
+ * keeps a tool's effect apart from that re-plan.
  */
 export async function scrollToTools(page: Page): Promise<void> {
   await page.locator(".panel-export").scrollIntoViewIfNeeded();

@@ -1,10 +1,11 @@
 // The Algorithm view in headless Chromium: the widget page with view=explain steps through a plan with
 // the keyboard, one step per key, from Alg. 1 to the final task tree; on the planner page it loads when
-// scrolled to, and its last step draws the same tree as the task-tree view.
+// scrolled to, and its last step draws the same tree as the task-tree view. Loading there moves nothing
+// below it, on a desktop and on a phone.
 import { afterAll, beforeAll, describe, expect, inject, it } from "vitest";
-import type { Browser, Locator, Page } from "playwright-core";
+import type { Browser, BrowserContextOptions, Locator, Page } from "playwright-core";
 import { launch, screenshot, watchErrors } from "./browser";
-import { waitForPlan } from "./app-helpers";
+import { painted, waitForPlan } from "./app-helpers";
 
 let browser: Browser;
 beforeAll(async () => {
@@ -16,8 +17,11 @@ afterAll(async () => {
 
 const QUERY = "dish=salad&i=tomato~sliced&i=cucumber~sliced&i=lettuce~chopped";
 
-async function load(path: string): Promise<{ page: Page; errors: string[] }> {
-  const context = await browser.newContext({ viewport: { width: 1200, height: 1000 } });
+const DESKTOP: BrowserContextOptions = { viewport: { width: 1200, height: 1000 } };
+const PHONE: BrowserContextOptions = { viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true };
+
+async function load(path: string, device = DESKTOP): Promise<{ page: Page; errors: string[] }> {
+  const context = await browser.newContext(device);
   const page = await context.newPage();
   const errors = watchErrors(page);
   await page.goto(new URL(path, inject("baseUrl")).href);
@@ -72,6 +76,9 @@ describe("Algorithm view", () => {
     // back one step, Home to the start, End to the final tree again
     await press(page, view, "ArrowLeft", total - 2);
     await press(page, view, "Home", 0);
+    // in the notes on a step, up and down scroll them instead of stepping
+    await view.locator(".explain-notes").press("ArrowDown");
+    expect(await view.getAttribute("data-step")).toBe("0");
     await press(page, view, "End", total - 1);
 
     // play runs on from the start by itself; pause stops it
@@ -97,6 +104,55 @@ describe("Algorithm view", () => {
     await page.locator(".panel-tree .cy canvas").first().waitFor();
     expect(await view.locator(".explain-graph").getAttribute("data-nodes")).toBe(await tree.getAttribute("data-nodes"));
     expect(await view.locator(".explain-graph").getAttribute("data-edges")).toBe(await tree.getAttribute("data-edges"));
+    expect(errors).toEqual([]);
+  });
+});
+
+/**
+ * Sums the page's layout shifts from now on, as its own PerformanceObserver scores them (Core Web Vitals:
+ * above 0.1 is "needs improvement"). Every shift counts, those the browser marks as just after input too:
+ * the test gives none, and with touch emulated Chromium marks so the shifts after a scroll made by script.
+ */
+async function watchLayoutShift(page: Page): Promise<() => Promise<number>> {
+  const handle = await page.evaluateHandle(() => {
+    interface LayoutShift extends PerformanceEntry {
+      value: number;
+    }
+    let score = 0;
+    const add = (entries: PerformanceEntryList): void => {
+      for (const e of entries as LayoutShift[]) score += e.value;
+    };
+    const observer = new PerformanceObserver((list) => add(list.getEntries()));
+    observer.observe({ type: "layout-shift" });
+    return () => {
+      add(observer.takeRecords());
+      return score;
+    };
+  });
+  return () => handle.evaluate((total) => total());
+}
+
+describe("Algorithm view loading on the planner page", () => {
+  it.each([
+    ["a desktop", DESKTOP],
+    ["a phone", PHONE],
+  ])("moves nothing below it on %s: the export button a user aims at stays where it was", async (_, device) => {
+    const { page, errors } = await load(`?${QUERY}`, device);
+    const foonText = page.getByRole("button", { name: "FOON text", exact: true });
+    expect(await page.locator(".panel-explain").getAttribute("data-step")).toBeNull(); // not drawn yet
+    const shift = await watchLayoutShift(page);
+    // where the user sees the button (a phone's visual viewport may sit below the layout viewport) the moment
+    // the scroll lands, before the view above it has had a chance to load
+    const aimed = await foonText.evaluate((button) => {
+      button.scrollIntoView({ block: "center" });
+      return button.getBoundingClientRect().top - (visualViewport?.offsetTop ?? 0);
+    });
+    await page.locator(".panel-explain[data-step]").waitFor({ timeout: 30_000 });
+    await waitForPlan(page);
+    await painted(page);
+    expect(await foonText.evaluate((button) => button.getBoundingClientRect().top - (visualViewport?.offsetTop ?? 0))).toBe(aimed);
+    expect(await shift()).toBeLessThan(0.1);
+    await screenshot(page, `explain-loaded-${device.isMobile === true ? "phone" : "desktop"}`);
     expect(errors).toEqual([]);
   });
 });

@@ -45,14 +45,14 @@ export function mountExplainView(host: HTMLElement, store: StateSource): Explain
   // not `.cy`: the task-tree view's canvas is the one that name finds
   const canvas = el("div", { class: "explain-graph", role: "img", "aria-label": "The task tree as the planner builds it" });
   const rows = el("div", { class: "explain-details" });
+  // what is said of a step scrolls in a box of its own: the view keeps one height whatever the step says
+  const notes = el("div", { class: "explain-notes", role: "group", tabindex: 0, "aria-label": "This step" }, caption, el("p", { class: "muted small" }, "In the paper: ", section), rows);
   host.tabIndex = 0;
   host.setAttribute("aria-label", "Algorithm: step through how the planner found the task tree (arrow keys, Home, End, space to play)");
   host.replaceChildren(
-    el("div", { class: "view-head" }, el("h2", { text: "Algorithm" }), el("div", { class: "toolbar", role: "toolbar", "aria-label": "Steps" }, prev, play, next, counter)),
-    caption,
-    el("p", { class: "muted small" }, "In the paper: ", section),
+    el("div", { class: "view-head" }, el("h2", { text: "Algorithm" }), el("div", { class: "toolbar wrap", role: "toolbar", "aria-label": "Steps" }, prev, play, next, counter)),
     canvas,
-    rows,
+    notes,
   );
 
   let colors = readColors(host);
@@ -91,6 +91,7 @@ export function mountExplainView(host: HTMLElement, store: StateSource): Explain
     canvas.dataset.nodes = String(step.graph.nodes.length);
     canvas.dataset.edges = String(step.graph.edges.length);
     rows.replaceChildren(...(step.rows.length === 0 ? [] : [rowList(step)]));
+    notes.scrollTop = 0;
     if (at >= steps.length - 1) stop();
   }
 
@@ -141,8 +142,10 @@ export function mountExplainView(host: HTMLElement, store: StateSource): Explain
   };
   host.addEventListener("keydown", (event) => {
     const action = keys[event.key];
-    // keys typed into the buttons' own handling (space on a focused button clicks it) stay theirs
-    if (action === undefined || steps.length === 0 || (event.key === " " && event.target instanceof HTMLButtonElement)) return;
+    // keys typed into the buttons' own handling (space on a focused button clicks it) stay theirs, and up and
+    // down in the notes scroll them
+    const own = event.key === " " ? event.target instanceof HTMLButtonElement : (event.key === "ArrowUp" || event.key === "ArrowDown") && event.target === notes;
+    if (action === undefined || steps.length === 0 || own) return;
     event.preventDefault();
     action();
   });

@@ -34,15 +34,27 @@ export function treeLegend(): HTMLElement {
   );
 }
 
+/** The head of both task-tree views: the title and the graph's tools. */
+export function treeHead(): { head: HTMLElement; fit: HTMLButtonElement; zoomIn: HTMLButtonElement; zoomOut: HTMLButtonElement } {
+  const fit = el("button", { type: "button", text: "Fit" });
+  const zoomIn = el("button", { type: "button", "aria-label": "Zoom in", title: "Zoom in", text: "+" });
+  const zoomOut = el("button", { type: "button", "aria-label": "Zoom out", title: "Zoom out", text: "−" });
+  const head = el("div", { class: "view-head" }, el("h2", { text: "Task tree" }), el("div", { class: "toolbar", role: "toolbar", "aria-label": "Graph" }, fit, zoomIn, zoomOut));
+  return { head, fit, zoomIn, zoomOut };
+}
+
 /**
  * Draws each plan in `host` until `onFirstPlan`'s caller replaces the host's content with the interactive
  * view (which then takes over the state source's subscription).
  */
 export function mountTreePreview(host: HTMLElement, source: StateSource, onFirstPlan: () => void): void {
   const picture = el("div", { class: "cy tree-preview", role: "img", "aria-label": "Task tree graph (the Steps list below is the same plan as text)" });
-  // the interactive view's parts in the same places, so that nothing moves when it takes over
+  // the interactive view's parts in the same places, so that nothing moves when it takes over (its tools too,
+  // which work once it has: a head of the title alone is lower than one with buttons)
   const caption = el("p", { class: "muted small tree-caption", text: "Loading the interactive graph…" });
-  host.replaceChildren(el("div", { class: "view-head" }, el("h2", { text: "Task tree" })), treeLegend(), picture, caption);
+  const { head, ...tools } = treeHead();
+  for (const button of Object.values(tools)) button.disabled = true;
+  host.replaceChildren(head, treeLegend(), picture, caption);
   let told = false;
   const draw = (plan: Plan | null): void => {
     if (plan === null) {

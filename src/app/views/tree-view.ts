@@ -12,7 +12,7 @@ import { planToGraph, selectNode, type Selection, type TreeGraph } from "../mode
 import type { StateSource } from "../draw-schedule";
 import type { AppState } from "../store";
 import { readColors, type GraphColors } from "../theme-colors";
-import { MAX_FIT_ZOOM, MOTION_SIZE, OBJECT_SIZE, placeNodes, treeLegend, treeTitle } from "./tree-preview";
+import { MAX_FIT_ZOOM, MOTION_SIZE, OBJECT_SIZE, placeNodes, treeHead, treeLegend, treeTitle } from "./tree-preview";
 
 export interface TreeViewHandle {
   png(): Promise<Blob>;
@@ -108,16 +108,9 @@ function extent(cy: Core): string {
 
 export function mountTreeView(host: HTMLElement, store: StateSource, actions: TreeViewActions): TreeViewHandle {
   const canvas = el("div", { class: "cy", role: "img", "aria-label": "Task tree graph (the Steps list below is the same plan as text)" });
-  const fit = el("button", { type: "button", text: "Fit" });
-  const zoomIn = el("button", { type: "button", "aria-label": "Zoom in", title: "Zoom in", text: "+" });
-  const zoomOut = el("button", { type: "button", "aria-label": "Zoom out", title: "Zoom out", text: "−" });
+  const { head, fit, zoomIn, zoomOut } = treeHead();
   const caption = el("p", { class: "muted small tree-caption", "aria-live": "polite" });
-  host.replaceChildren(
-    el("div", { class: "view-head" }, el("h2", { text: "Task tree" }), el("div", { class: "toolbar", role: "toolbar", "aria-label": "Graph" }, fit, zoomIn, zoomOut)),
-    treeLegend(),
-    canvas,
-    caption,
-  );
+  host.replaceChildren(head, treeLegend(), canvas, caption);
 
   let colors = readColors(host);
   const cy: Core = cytoscape({
