@@ -491,6 +491,66 @@ fn a_name_asked_whole_and_prepared_has_one_line_through_both() {
     );
 }
 
+/// A cake: the batter mixed, poured into the baking tray, baked; elsewhere oil is poured from its bottle.
+const TRAY_CAKE: &str = "//
+O\tbowl\t0
+S\tempty
+O\tflour\t1
+S\tpowder
+M\tmix\t<Assumed>
+O\tbatter\t1
+S\tcontains\t{flour}
+S\tin\t[bowl]
+//
+O\tbatter\t1
+S\tcontains\t{flour}
+S\tin\t[bowl]
+O\tbaking tray\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tbaking tray\t0
+S\tcontains\t{batter}
+O\tbatter\t1
+S\tcontains\t{flour}
+S\tin\t[baking tray]
+//
+O\tbatter\t1
+S\tcontains\t{flour}
+S\tin\t[baking tray]
+O\toven\t0
+S\ton
+M\tbake\t<Assumed>
+O\tcake\t1\t5
+S\tbaked
+S\tcontains\t{flour}
+S\tin\t[baking tray]
+//
+O\tvegetable oil\t1
+S\tliquid
+S\tin\t[bottle]
+O\tpan\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tpan\t0
+S\tcontains\t{vegetable oil}
+//
+";
+
+#[test]
+fn cooking_spray_greases_the_tray_the_cake_bakes_in_rather_than_joining_the_batter() {
+    let asked = [("flour", "ground"), ("cooking spray", "liquid")];
+    let request = query("cake", &asked).replacen(
+        '{',
+        r#"{"overrides": {"cooking spray": "vegetable oil"}, "#,
+        1,
+    );
+    let p = plan_of(&[("cake.txt", TRAY_CAKE)], &ExactMatch, &request);
+    assert_eq!(line_motions(&p, "cooking spray"), ["spray", "pour", "bake"]);
+    let mix = p.units.iter().find(|u| u.motion == "mix").unwrap();
+    assert!(mix.inputs.iter().all(|n| n.label != "cooking spray"));
+    assert_eq!(kinds(&p), [], "{:#?}", p.progress_lines);
+}
+
 #[test]
 fn a_powder_squeezed_is_cautioned() {
     let squeezed = "//

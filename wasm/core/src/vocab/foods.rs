@@ -155,6 +155,8 @@ struct Care {
     /// Cooked on its own before it joins, even a dish that is cooked after (bacon fried before it goes
     /// into the eggs).
     brown: bool,
+    /// Coats the vessel the dish is cooked in before the dish goes in (cooking spray).
+    grease: bool,
     /// What a cook takes off it before it is used or cut (an onion's skin, a cherry's stone).
     trims: Vec<&'static Trim>,
 }
@@ -181,6 +183,7 @@ fn cares() -> &'static HashMap<String, Care> {
                     top: flags.iter().any(|f| f == "top"),
                     mix: flags.iter().any(|f| f == "mix"),
                     brown: flags.iter().any(|f| f == "brown"),
+                    grease: flags.iter().any(|f| f == "grease"),
                     trims: TRIMS
                         .iter()
                         .filter(|t| flags.iter().any(|f| f == t.flag))
@@ -262,6 +265,11 @@ pub fn must_cook(food: &str) -> bool {
 /// Whether `food` is cooked on its own before it joins, even a dish that is cooked after (bacon, sausage).
 pub fn cooked_first(food: &str) -> bool {
     flagged(food, |c| c.brown)
+}
+
+/// Whether `food` greases the vessel the dish is cooked in rather than joining the dish (cooking spray).
+pub fn greases(food: &str) -> bool {
+    flagged(food, |c| c.grease)
 }
 
 /// Whether `food` joins a dish that is cooked before the cooking, not after it (stock, wine, a bay leaf,
@@ -629,7 +637,7 @@ mod tests {
                 assert!(
                     matches!(
                         flag.as_str(),
-                        "first" | "wet" | "heat" | "top" | "mix" | "brown"
+                        "first" | "wet" | "heat" | "top" | "mix" | "brown" | "grease"
                     ) || TRIMS.iter().any(|t| t.flag == flag),
                     "food_care.tsv: flag '{flag}' in {line}"
                 );
@@ -651,6 +659,7 @@ mod tests {
         assert_eq!(state_once_heated("butter"), Some("melted"));
         assert_eq!(state_once_heated("olive oil"), None);
         assert!(cooked_first("bacon") && cooked_first("italian sausage"));
+        assert!(greases("cooking spray") && !greases("olive oil"));
         assert!(joins_served("jelly") && !joins_served("cherry pie filling"));
         assert!(joins_before_heat("thyme") && joins_before_heat("cumin"));
         assert!(joins_before_heat("dried basil") && !joins_before_heat("basil"));

@@ -300,3 +300,54 @@ pub(super) fn top_dish(tree: &mut Tree, food: &str, o: &str, last: SlotId) -> TU
     tree.goal = made;
     u
 }
+
+/// Where a food that greases (`foods::greases`: cooking spray) coats the vessel the dish is cooked in: the
+/// first unit that puts food into that vessel (the batter poured into the tray, the eggs into the pan),
+/// and the empty vessel it takes.
+pub(super) fn greased_vessel(tree: &Tree, order: &[TUnitId]) -> Option<(TUnitId, SlotId)> {
+    let vessel = order.iter().find_map(|&u| {
+        if !cook_words(tree, u).any(foods::cooks) {
+            return None;
+        }
+        tree.units[u]
+            .inputs
+            .iter()
+            .filter(|i| !tree.slots[i.0].utensil)
+            .find_map(|i| tree.slots[i.0].node.container())
+    })?;
+    let holds = |x: SlotId| tree.slots[x].node.holds_something();
+    order.iter().find_map(|&u| {
+        let unit = &tree.units[u];
+        let empty =
+            unit.inputs.iter().map(|i| i.0).find(|&x| {
+                tree.slots[x].utensil && tree.slots[x].node.label == vessel && !holds(x)
+            })?;
+        let filled = unit
+            .outputs
+            .iter()
+            .any(|o| tree.slots[o.0].node.label == vessel && holds(o.0));
+        filled.then_some((u, empty))
+    })
+}
+
+/// Food `o` (its branch ending in `last`) greases the empty vessel `x` before unit `m` fills it: a unit
+/// sprays it on, and the vessel `m` takes is the greased one.
+pub(super) fn grease(tree: &mut Tree, o: &str, last: SlotId, (m, x): (TUnitId, SlotId)) {
+    let vessel = &tree.slots[x].node;
+    let mut states = vessel.states.clone();
+    states.push(State {
+        name: "greased".into(),
+        arg: Some(StateArg::Ingredients(vec![o.into()])),
+    });
+    let greased = ObjectNode::new(vessel.label.clone(), states);
+    let greased = tree.add_slot(Cow::Owned(greased));
+    tree.add_unit(
+        vec![(last, true), (x, false)],
+        "spray",
+        vec![(greased, false)],
+        Origin::Grafted,
+    );
+    for input in tree.units[m].inputs.iter_mut().filter(|i| i.0 == x) {
+        input.0 = greased;
+    }
+}

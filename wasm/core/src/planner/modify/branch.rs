@@ -352,6 +352,19 @@ fn join_branch<'kb>(
     let order = tree.order();
     let carries = tree.carriers(&order);
     let food = known_as(ctx, o, eq);
+    if let Some(point) = foods::greases(food)
+        .then(|| greased_vessel(tree, &order))
+        .flatten()
+    {
+        grease(tree, o, last, point);
+        tree.add_contents_downstream(point.0, o, &order, &carries);
+        let _ = write!(
+            how,
+            "; sprayed on the {} the dish is cooked in",
+            tree.slots[point.1].node.label
+        );
+        return Ok(());
+    }
     let cooked = cooked_later(tree, &order, food);
     let at = attach_point(ctx, tree, &order, &carries, &cooked, o, category(s));
     let Some(m) = at else {

@@ -11,7 +11,7 @@ use crate::contract::plan::{
     Alternative, IngredientOutcome, Match, Origin, Query, QueryIngredient, Status,
 };
 use crate::foon::kb::KnowledgeBase;
-use crate::foon::model::{NodeId, ObjectNode, State, UnitId};
+use crate::foon::model::{NodeId, ObjectNode, State, StateArg, UnitId};
 use crate::similarity::Similarity;
 use crate::vocab::foods;
 use crate::vocab::states::{
