@@ -552,6 +552,19 @@ fn cooking_spray_greases_the_tray_the_cake_bakes_in_rather_than_joining_the_batt
 }
 
 #[test]
+fn a_raw_potato_is_cooked_before_it_is_mashed() {
+    let potato_bread = BANANA_BREAD.replace("banana", "potato");
+    let p = plan_of(
+        &[("bread.txt", &potato_bread)],
+        &ExactMatch,
+        &query("bread", &[("potato", "whole"), ("flour", "ground")]),
+    );
+    let motions = line_motions(&p, "potato");
+    assert!(foon_core::vocab::foods::cooks(motions[0]), "{motions:?}");
+    assert_eq!(motions[1], "mash");
+}
+
+#[test]
 fn a_powder_squeezed_is_cautioned() {
     let squeezed = "//
 O\tsugar\t1

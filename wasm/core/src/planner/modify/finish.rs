@@ -462,6 +462,39 @@ fn cooked(node: &ObjectNode) -> ObjectNode {
     ObjectNode::new(node.label.clone(), states)
 }
 
+/// A food that must be cooked on its own (a potato, a pumpkin) and that its chain mashes raw is cooked
+/// first: a raw potato is not mashed.
+pub(super) fn cook_before_mash<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    o: &str,
+    eq: &str,
+) -> Option<String> {
+    if foods::cooking(known_as(ctx, o, eq)) != foods::Cooking::Alone {
+        return None;
+    }
+    let order = tree.order();
+    let raw = |x: SlotId| !tree.slots[x].node.physical_states().any(done_cooking);
+    let start = tree
+        .slots_with_label(o)
+        .into_iter()
+        .find(|&x| !tree.produced(x))?;
+    let (at, u) = own_chain(tree, &order, o, start)
+        .into_iter()
+        .find(|&(x, u)| {
+            raw(x) && foods::motion_words(&tree.units[u].motion).any(|w| w == "mash")
+        })?;
+    let motion = state_motion(ctx, o, eq, "cooked")
+        .ok()
+        .filter(|m| foods::cooks(m))
+        .unwrap_or_else(|| "boil".into());
+    let made = add_state_unit(ctx, tree, at, cooked(&tree.slots[at].node), &motion);
+    for input in tree.units[u].inputs.iter_mut().filter(|i| i.0 == at) {
+        input.0 = made;
+    }
+    Some(format!("'{motion}' before it is mashed, as a cook would"))
+}
+
 /// Whether some node of `food` in the tree is cooked (the chicken baked before it joined the salad).
 pub(super) fn cooked_somewhere(tree: &Tree, food: &str) -> bool {
     tree.slots_with_label(food).into_iter().any(|x| {

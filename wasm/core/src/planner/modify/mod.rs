@@ -356,6 +356,9 @@ impl Driver {
             if let Some(reason) = prepare_kept(ctx, tree, &w.label, eq) {
                 w.reasons.push(reason);
             }
+            if let Some(reason) = cook_before_mash(ctx, tree, &w.label, eq) {
+                w.reasons.push(reason);
+            }
             let given = trim_first(ctx, tree, &w.label, eq);
             if !given.is_empty() {
                 w.reasons.push(format!(
