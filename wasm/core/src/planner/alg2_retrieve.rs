@@ -201,19 +201,8 @@ pub(crate) fn retrieve(
     root: NodeId,
     prefer: Option<u32>,
 ) -> Retrieved {
-    search(kb, index, scorer, root, prefer, |_| true, &Recorder::OFF).unwrap_or_default()
-}
-
-/// `retrieve`, with every node taken from the queue recorded in `trace` (the reference task tree).
-pub(crate) fn retrieve_explained(
-    kb: &KnowledgeBase,
-    index: &PlannerIndex,
-    scorer: &Scorer,
-    root: NodeId,
-    prefer: Option<u32>,
-    trace: &Recorder,
-) -> Retrieved {
-    search(kb, index, scorer, root, prefer, |_| true, trace).unwrap_or_default()
+    retrieve_explained(kb, index, scorer, root, prefer, |_| true, &Recorder::OFF)
+        .unwrap_or_default()
 }
 
 /// `retrieve`, abandoned (`None`) as soon as it chooses a unit that `allowed` rejects. Every chosen unit
@@ -228,11 +217,11 @@ pub(crate) fn retrieve_within(
     prefer: Option<u32>,
     allowed: impl Fn(UnitId) -> bool,
 ) -> Option<Retrieved> {
-    search(kb, index, scorer, root, prefer, allowed, &Recorder::OFF)
+    retrieve_explained(kb, index, scorer, root, prefer, allowed, &Recorder::OFF)
 }
 
-/// The search of `retrieve_within`, recording into `trace`.
-fn search(
+/// `retrieve_within`, with every node taken from the queue recorded in `trace` (the reference task tree).
+pub(crate) fn retrieve_explained(
     kb: &KnowledgeBase,
     index: &PlannerIndex,
     scorer: &Scorer,

@@ -130,7 +130,8 @@ fn reference_tree(
         optimal::retrieve_in_mode(kb, index, scorer, root, mode, m, trace, notes)
     });
     let reference = in_mode.unwrap_or_else(|| {
-        alg2_retrieve::retrieve_explained(kb, index, scorer, root.0, root.1, trace)
+        alg2_retrieve::retrieve_explained(kb, index, scorer, root.0, root.1, |_| true, trace)
+            .unwrap_or_default()
     });
     for &n in &reference.blocked {
         notes.push(format!(
