@@ -144,46 +144,32 @@ impl UnitBuilder {
     ) -> Result<Option<ParsedUnit>> {
         self.close_object();
         let mut skip = |code, at, why: String| {
-            warnings.push(FoonError::at(
-                code,
-                file,
-                at,
-                1,
-                format!("{why}; unit skipped"),
-            ));
+            let why = format!("{why}; unit skipped");
+            warnings.push(FoonError::at(code, file, at, 1, why));
             Ok(None)
         };
         let Some((motion, times, motion_line)) = self.motion else {
             // FOON-111 has units whose motion line was never written: without a motion there is no
             // action to plan, so the unit is skipped and reported.
             let first = self.inputs.first().map(|o| o.line).unwrap_or(line);
-            return skip(
-                ErrorCode::BadMotion,
-                first,
-                format!(
-                    "functional unit has object lines but no motion line (M) before line {line}"
-                ),
+            let why = format!(
+                "functional unit has object lines but no motion line (M) before line {line}"
             );
+            return skip(ErrorCode::BadMotion, first, why);
         };
         if self.outputs.is_empty() {
             // FOON-111 has such units; a unit that makes nothing cannot be planned with, so it is
             // skipped and reported rather than failing the whole knowledge base.
-            return skip(
-                ErrorCode::UnitWithoutOutputs,
-                motion_line,
-                format!("motion '{motion}' has no output object after it"),
-            );
+            let why = format!("motion '{motion}' has no output object after it");
+            return skip(ErrorCode::UnitWithoutOutputs, motion_line, why);
         }
         if let Some((from, to)) = changed_food(&motion, &self.inputs, &self.outputs) {
             // FOON-111's potato soup peels an onion into a carrot: a slip of annotation, which planned
             // would turn the user's onion into a carrot nobody asked for
-            return skip(
-                ErrorCode::BadMotion,
-                motion_line,
-                format!(
-                    "'{motion}' turns '{from}' into '{to}', but it does not change what a food is"
-                ),
+            let why = format!(
+                "'{motion}' turns '{from}' into '{to}', but it does not change what a food is"
             );
+            return skip(ErrorCode::BadMotion, motion_line, why);
         }
         Ok(Some(ParsedUnit {
             inputs: self.inputs,
@@ -249,31 +235,6 @@ fn line_kind(head: &str) -> Option<(char, bool)> {
     Some((kind, goal))
 }
 
-fn check_text(file: &str, line: usize, col: usize, what: &str, text: &str) -> Result<()> {
-    if text.is_empty() {
-        return Err(FoonError::at(
-            ErrorCode::EmptyLabel,
-            file,
-            line,
-            col,
-            format!("empty {what}"),
-        ));
-    }
-    if text.chars().count() > limits::MAX_LABEL_CHARS {
-        return Err(FoonError::at(
-            ErrorCode::TooLarge,
-            file,
-            line,
-            col,
-            format!(
-                "{what} is longer than {} characters",
-                limits::MAX_LABEL_CHARS
-            ),
-        ));
-    }
-    Ok(())
-}
-
 /// A label in its normal form.
 fn label_of(raw: &str) -> SmolStr {
     SmolStr::from(normalize_label(raw))
@@ -281,15 +242,10 @@ fn label_of(raw: &str) -> SmolStr {
 
 /// Parses a state's argument: `[container]` or `{a,b,c}`; `None` when it names nothing (`[]`, `{ , }`),
 /// which the caller reports as a warning.
-fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<Option<StateArg>> {
+fn state_arg(line: &Line, col: usize, text: &str) -> Result<Option<StateArg>> {
     let bad = |why: &str| {
-        FoonError::at(
-            ErrorCode::BadBrackets,
-            file,
-            line,
-            col,
-            format!("state argument '{text}': {why}"),
-        )
+        let message = format!("state argument '{text}': {why}");
+        line.error(ErrorCode::BadBrackets, col, message)
     };
     let (open, close) = match text.chars().next() {
         Some('[') => ('[', ']'),
@@ -309,7 +265,7 @@ fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<Option<S
         if container.is_empty() {
             return Ok(None);
         }
-        check_text(file, line, col, "container", &container)?;
+        line.check_text(col, "container", &container)?;
         return Ok(Some(StateArg::Container(container)));
     }
     let mut list: Vec<SmolStr> = inner
@@ -318,7 +274,7 @@ fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<Option<S
         .filter(|s| !s.is_empty())
         .collect();
     for item in &list {
-        check_text(file, line, col, "ingredient", item)?;
+        line.check_text(col, "ingredient", item)?;
     }
     if list.is_empty() {
         return Ok(None);
@@ -364,16 +320,11 @@ fn too_long(file: &str, line: usize, bytes: usize) -> FoonError {
 }
 
 fn too_many_units(file: &str, line: usize) -> FoonError {
-    FoonError::at(
-        ErrorCode::TooLarge,
-        file,
-        line,
-        1,
-        format!(
-            "more than {} functional units in one file",
-            limits::MAX_UNITS
-        ),
-    )
+    let message = format!(
+        "more than {} functional units in one file",
+        limits::MAX_UNITS
+    );
+    FoonError::at(ErrorCode::TooLarge, file, line, 1, message)
 }
 
 /// One goal node marked with two different dish classes in a file is an error: the planner could not tell
@@ -499,6 +450,19 @@ impl<'l> Line<'l> {
             })
     }
 
+    /// An error when `text` (a `what` in field `col`) is empty or too long.
+    fn check_text(&self, col: usize, what: &str, text: &str) -> Result<()> {
+        let most = limits::MAX_LABEL_CHARS;
+        if text.is_empty() {
+            return Err(self.error(ErrorCode::EmptyLabel, col, format!("empty {what}")));
+        }
+        if text.chars().count() > most {
+            let message = format!("{what} is longer than {most} characters");
+            return Err(self.error(ErrorCode::TooLarge, col, message));
+        }
+        Ok(())
+    }
+
     /// An error when the line has more than `most` fields.
     fn at_most(&self, most: usize, what: &str) -> Result<()> {
         match self.f.get(most) {
@@ -549,7 +513,7 @@ impl Reader<'_> {
         }
         let (lcol, raw_label) = line.field(1, "object label after 'O'")?;
         let label = label_of(raw_label);
-        check_text(line.file, line.no, lcol, "object label", &label)?;
+        line.check_text(lcol, "object label", &label)?;
         let moves = object_flag(line)?;
         let goal = goal_mark(line, bang)?;
         line.at_most(4, "object line has more than four fields")?;
@@ -573,7 +537,7 @@ impl Reader<'_> {
             None => (raw_state, None),
         };
         let state_name = normalize_word(word);
-        check_text(line.file, line.no, scol, "state name", &state_name)?;
+        line.check_text(scol, "state name", &state_name)?;
         let (acol, arg_text) = match (inline_arg, line.f.get(2)) {
             (Some(a), None) => (scol, Some(a)),
             (None, Some((acol, a))) => (*acol, Some(*a)),
@@ -584,7 +548,7 @@ impl Reader<'_> {
         };
         let arg = match arg_text {
             None => None,
-            Some(text) => match state_arg(line.file, line.no, acol, text)? {
+            Some(text) => match state_arg(line, acol, text)? {
                 Some(arg) => Some(arg),
                 // `on []` occurs in FOON-111: keep the state, drop the empty argument, report
                 // it (the same for `[ ]`, `{ , }` and an argument written in the state field)
@@ -611,7 +575,7 @@ impl Reader<'_> {
         self.unit.close_object();
         let (mcol, raw_motion) = line.field(1, "motion label after 'M'")?;
         let motion = normalize_word(raw_motion);
-        check_text(line.file, line.no, mcol, "motion label", &motion)?;
+        line.check_text(mcol, "motion label", &motion)?;
         if let Some((first, _, first_line)) = &self.unit.motion {
             // A missing '//' (FOON-111 has a few): the next unit's inputs start where an output
             // label repeats. Without such a repeat the split is ambiguous, so it is an error.

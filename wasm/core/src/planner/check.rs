@@ -3,20 +3,14 @@
 //! input is something a kitchen has at the start, which the goal never is), no unit whose products nobody
 //! uses, the goal made.
 
-use crate::contract::plan::{Plan, PlanNode, PlanUnit};
+use crate::contract::plan::{sorted, Plan, PlanNode, PlanUnit};
 use crate::vocab::states::START_STATES;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
-use smol_str::SmolStr;
 
 /// Identity of a node: label, states and contents as sets, container (borrowed from the node).
 pub(crate) type NodeKey<'a> = (&'a str, Vec<&'a str>, Vec<&'a str>, Option<&'a str>);
 
 pub(crate) fn node_key(n: &PlanNode) -> NodeKey<'_> {
-    fn sorted(list: &[SmolStr]) -> Vec<&str> {
-        let mut out: Vec<&str> = list.iter().map(SmolStr::as_str).collect();
-        out.sort_unstable();
-        out
-    }
     (
         &n.label,
         sorted(&n.states),
@@ -52,11 +46,7 @@ fn unit_key(u: &PlanUnit) -> (&str, Vec<NodeKey<'_>>, Vec<NodeKey<'_>>) {
 }
 
 fn is_goal(n: &PlanNode, plan: &Plan) -> bool {
-    let mut a = n.states.clone();
-    a.sort();
-    let mut b = plan.goal.states.clone();
-    b.sort();
-    n.label == plan.goal.label && a == b
+    n.is(&plan.goal.label, &plan.goal.states)
 }
 
 /// What is wrong with a plan's structure; empty when nothing is.

@@ -181,13 +181,10 @@ fn classify(state: &str) -> Category {
         return e.category;
     }
     // the last listed word decides ("finely chopped", "cooked and sliced")
-    let mut found = None;
-    for part in word.split([' ', '-', ',']) {
-        if let Some(e) = table().get(part) {
-            found = Some(e.category);
-        }
-    }
-    found.unwrap_or(Category::Other)
+    let last = word
+        .rsplit([' ', '-', ','])
+        .find_map(|part| table().get(part));
+    last.map_or(Category::Other, |e| e.category)
 }
 
 /// The category a node's food states put it in (the furthest along; whole when it has none).

@@ -239,24 +239,19 @@ fn follow<'p>(
             .filter(|&k| objects[k].node.is_some_and(|m| same(m, n)))
             .filter(free)
             .max_by_key(|&k| objects[k].since);
-        let k = match now {
-            Some(k) => k,
-            // else a unit made this node, but its object has moved on since (FOON takes a node once made
-            // as there for every unit that needs it): that unit makes a second object in the node
-            None => match before.iter().rposition(|s| makes(s, n)) {
-                Some(p) => {
-                    let k = new_object(objects, &n.label, Some(n), p + 1);
-                    before[p].outputs.push((k, n));
-                    k
-                }
-                // else it comes from the kitchen
-                None => {
-                    let k = new_object(objects, &n.label, Some(n), 0);
-                    kitchen.push((k, n));
-                    k
-                }
-            },
-        };
+        if let Some(k) = now {
+            inputs.push((k, n));
+            continue;
+        }
+        // else a unit made this node, but its object has moved on since (FOON takes a node once made
+        // as there for every unit that needs it): that unit makes a second object in the node; else it
+        // comes from the kitchen
+        let maker = before.iter().rposition(|s| makes(s, n));
+        let k = new_object(objects, &n.label, Some(n), maker.map_or(0, |p| p + 1));
+        match maker {
+            Some(p) => before[p].outputs.push((k, n)),
+            None => kitchen.push((k, n)),
+        }
         inputs.push((k, n));
     }
     let mut continued = vec![false; inputs.len()];
@@ -304,12 +299,7 @@ fn follow<'p>(
 
 /// Whether two nodes are one: the same label in the same set of states.
 fn same(a: &PlanNode, b: &PlanNode) -> bool {
-    fn sorted(n: &PlanNode) -> Vec<&str> {
-        let mut states: Vec<&str> = n.states.iter().map(|s| s.as_str()).collect();
-        states.sort_unstable();
-        states
-    }
-    a.label == b.label && sorted(a) == sorted(b)
+    a.is(&b.label, &b.states)
 }
 
 /// Whether a step makes node `n` (not only passes it on).
