@@ -81,18 +81,9 @@ impl<'a> Motions<'a> {
 
     fn whole(&self, motion: &str) -> Option<MotionFigures> {
         let listed = table().get(motion);
-        let cost = self
-            .options
-            .motion_costs
-            .get(motion)
-            .map(|&c| c as f64)
-            .or(listed.map(|f| f.cost));
-        let rate = self
-            .options
-            .success_rates
-            .get(motion)
-            .map(|&r| r as f64)
-            .or(listed.map(|f| f.success_rate));
+        let asked = |figures: &BTreeMap<String, f32>| figures.get(motion).map(|&x| f64::from(x));
+        let cost = asked(&self.options.motion_costs).or(listed.map(|f| f.cost));
+        let rate = asked(&self.options.success_rates).or(listed.map(|f| f.success_rate));
         let default = table()["*"];
         (cost.is_some() || rate.is_some()).then(|| MotionFigures {
             cost: cost.unwrap_or(default.cost),

@@ -40,7 +40,7 @@ pub(crate) struct Scorer<'a> {
 
 impl<'a> Scorer<'a> {
     pub fn new(sim: &'a dyn Similarity, index: &'a PlannerIndex, query: &'a [String]) -> Self {
-        let labels = index.label_count();
+        let labels = index.label_names().len();
         Scorer {
             sim,
             index,
