@@ -326,13 +326,8 @@ impl EmbeddingTable {
                 known.push(s.clone());
             }
         }
-        let vector = if total > 0.0 && norm(&sum) > 0.0 {
-            Some(sum)
-        } else {
-            None
-        };
         PhraseVector {
-            vector,
+            vector: (total > 0.0 && norm(&sum) > 0.0).then_some(sum),
             known,
             unknown,
         }
