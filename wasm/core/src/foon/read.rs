@@ -83,8 +83,9 @@ fn check_size(name: &str, bytes: usize) -> Result<()> {
 }
 
 /// Which block of the current unit the reader is filling.
-#[derive(PartialEq)]
+#[derive(Default, PartialEq)]
 enum Block {
+    #[default]
     Inputs,
     Outputs,
 }
@@ -92,6 +93,7 @@ enum Block {
 /// An object line whose state lines are still being read: label, flag, goal mark, line, states.
 type OpenObject = (SmolStr, bool, Option<GoalMark>, usize, Vec<State>);
 
+#[derive(Default)]
 struct UnitBuilder {
     inputs: Vec<ParsedObject>,
     motion: Option<(String, Vec<String>, usize)>,
@@ -102,16 +104,6 @@ struct UnitBuilder {
 }
 
 impl UnitBuilder {
-    fn new() -> UnitBuilder {
-        UnitBuilder {
-            inputs: Vec::new(),
-            motion: None,
-            outputs: Vec::new(),
-            block: Block::Inputs,
-            open: None,
-        }
-    }
-
     fn is_empty(&self) -> bool {
         self.inputs.is_empty()
             && self.motion.is_none()
@@ -365,7 +357,7 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
         name,
         units: Vec::new(),
         warnings: Vec::new(),
-        unit: UnitBuilder::new(),
+        unit: UnitBuilder::default(),
     };
     let mut last_line = 0;
     let mut title = None;
@@ -483,7 +475,7 @@ struct Reader<'a> {
 impl Reader<'_> {
     /// Closes the unit being read (at `line_no`) and starts the next.
     fn end_unit(&mut self, line_no: usize) -> Result<()> {
-        let unit = std::mem::replace(&mut self.unit, UnitBuilder::new());
+        let unit = std::mem::replace(&mut self.unit, UnitBuilder::default());
         self.units
             .extend(unit.finish(self.name, line_no, &mut self.warnings)?);
         Ok(())

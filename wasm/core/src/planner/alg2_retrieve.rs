@@ -288,6 +288,7 @@ pub(crate) fn retrieve_explained(
 }
 
 /// The units making a node, weighed against each other (`Search::contest`).
+#[derive(Default)]
 struct Contest {
     best: Option<Candidate>,
     /// Some unit would close a cycle; one of the recipe that needs the node would.
@@ -308,12 +309,7 @@ impl Search {
         prefer: Option<u32>,
         trace: &Recorder,
     ) -> Contest {
-        let mut c = Contest {
-            best: None,
-            cyclic: false,
-            cyclic_in_recipe: false,
-            weighed: Vec::new(),
-        };
+        let mut c = Contest::default();
         for &u in &kb.producers[node] {
             let unit = &kb.units[u];
             if unit.input_nodes().any(|n| n == node) {

@@ -231,16 +231,10 @@ fn modified<'a>(
 /// The units of the reference task tree a plan keeps (as they were, renamed, or with an ingredient
 /// attached).
 fn kept_units(tree: &tree::Tree, order: &[tree::TUnitId]) -> usize {
-    use crate::contract::plan::Origin;
-    order
-        .iter()
-        .filter(|&&u| {
-            matches!(
-                tree.units[u].origin,
-                Origin::Reference | Origin::Renamed | Origin::Attached
-            )
-        })
-        .count()
+    use crate::contract::plan::Origin::{Attached, Reference, Renamed};
+    let kept =
+        |&&u: &&tree::TUnitId| matches!(tree.units[u].origin, Reference | Renamed | Attached);
+    order.iter().filter(kept).count()
 }
 
 /// The tree of Alg. 1's best goal `chosen` modified for the query, or, where the query keeps next to
