@@ -475,7 +475,7 @@ struct Reader<'a> {
 impl Reader<'_> {
     /// Closes the unit being read (at `line_no`) and starts the next.
     fn end_unit(&mut self, line_no: usize) -> Result<()> {
-        let unit = std::mem::replace(&mut self.unit, UnitBuilder::default());
+        let unit = std::mem::take(&mut self.unit);
         self.units
             .extend(unit.finish(self.name, line_no, &mut self.warnings)?);
         Ok(())
