@@ -249,20 +249,16 @@ impl KnowledgeBase {
 /// The number of units of all subgraphs before merging: an error when there are none, or too many.
 fn unit_count(subgraphs: &[Subgraph]) -> Result<usize> {
     let count: usize = subgraphs.iter().map(|g| g.units.len()).sum();
-    if count > limits::MAX_UNITS {
-        return Err(FoonError::new(
-            ErrorCode::TooLarge,
-            format!(
-                "the knowledge base has {count} functional units over all files; the limit is {}",
-                limits::MAX_UNITS
-            ),
-        ));
+    let most = limits::MAX_UNITS;
+    if count > most {
+        let message = format!(
+            "the knowledge base has {count} functional units over all files; the limit is {most}"
+        );
+        return Err(FoonError::new(ErrorCode::TooLarge, message));
     }
     if count == 0 {
-        return Err(FoonError::new(
-            ErrorCode::EmptyKnowledgeBase,
-            "the knowledge base has no functional units (no FOON files, or only empty ones)",
-        ));
+        let why = "the knowledge base has no functional units (no FOON files, or only empty ones)";
+        return Err(FoonError::new(ErrorCode::EmptyKnowledgeBase, why));
     }
     Ok(count)
 }

@@ -56,28 +56,25 @@ pub fn parse_bytes(name: &str, bytes: &[u8]) -> Result<Subgraph> {
             let good = &bytes[..e.valid_up_to()];
             let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
             let column = good.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
+            let why = "bytes that are not UTF-8 text (save the file as UTF-8)";
             Err(FoonError::at(
                 ErrorCode::InvalidUtf8,
                 name,
                 line,
                 column,
-                "bytes that are not UTF-8 text (save the file as UTF-8)",
+                why,
             ))
         }
     }
 }
 
 fn check_size(name: &str, bytes: usize) -> Result<()> {
-    if bytes <= limits::MAX_FILE_BYTES {
+    let most = limits::MAX_FILE_BYTES;
+    if bytes <= most {
         return Ok(());
     }
-    let mut e = FoonError::new(
-        ErrorCode::TooLarge,
-        format!(
-            "file is {bytes} bytes; the limit is {} bytes",
-            limits::MAX_FILE_BYTES
-        ),
-    );
+    let message = format!("file is {bytes} bytes; the limit is {most} bytes");
+    let mut e = FoonError::new(ErrorCode::TooLarge, message);
     e.file = Some(name.to_string());
     Err(e)
 }
@@ -312,10 +309,8 @@ fn too_long(file: &str, line: usize, bytes: usize) -> FoonError {
 }
 
 fn too_many_units(file: &str, line: usize) -> FoonError {
-    let message = format!(
-        "more than {} functional units in one file",
-        limits::MAX_UNITS
-    );
+    let most = limits::MAX_UNITS;
+    let message = format!("more than {most} functional units in one file");
     FoonError::at(ErrorCode::TooLarge, file, line, 1, message)
 }
 
@@ -337,13 +332,8 @@ fn check_goal_classes(file: &str, units: &[ParsedUnit]) -> Result<()> {
     for (line, node, class) in marks {
         let (first_line, first_class) = *first.entry(node).or_insert((line, class));
         if first_class != class {
-            return Err(FoonError::at(
-                ErrorCode::BadNumber,
-                file,
-                line,
-                1,
-                format!("goal node '{node}' is marked with dish class {class} here and with {first_class} on line {first_line}"),
-            ));
+            let message = format!("goal node '{node}' is marked with dish class {class} here and with {first_class} on line {first_line}");
+            return Err(FoonError::at(ErrorCode::BadNumber, file, line, 1, message));
         }
     }
     Ok(())
@@ -484,11 +474,9 @@ impl Reader<'_> {
     fn line(&mut self, line: &Line) -> Result<()> {
         let (head_col, head) = line.f[0];
         let Some((kind, bang)) = line_kind(head) else {
-            return Err(line.error(
-                ErrorCode::UnknownLine,
-                head_col,
-                format!("unknown line type '{}': expected O (object), S (state), M (motion), '#' or '//'", head.chars().take(20).collect::<String>()),
-            ));
+            let shown: String = head.chars().take(20).collect();
+            let message = format!("unknown line type '{shown}': expected O (object), S (state), M (motion), '#' or '//'");
+            return Err(line.error(ErrorCode::UnknownLine, head_col, message));
         };
         match kind {
             'O' => self.object(line, bang),
@@ -516,11 +504,8 @@ impl Reader<'_> {
     /// `S<TAB>state[<TAB>argument]`: a state of the open object.
     fn state(&mut self, line: &Line, head_col: usize) -> Result<()> {
         let Some(open) = self.unit.open.as_mut() else {
-            return Err(line.error(
-                ErrorCode::StateWithoutObject,
-                head_col,
-                "state line with no object line (O) before it in this unit",
-            ));
+            let why = "state line with no object line (O) before it in this unit";
+            return Err(line.error(ErrorCode::StateWithoutObject, head_col, why));
         };
         let (scol, raw_state) = line.field(1, "state name after 'S'")?;
         // Some files write the argument in the same field: `in [bowl]`.
@@ -545,11 +530,10 @@ impl Reader<'_> {
                 // `on []` occurs in FOON-111: keep the state, drop the empty argument, report
                 // it (the same for `[ ]`, `{ , }` and an argument written in the state field)
                 None => {
-                    self.warnings.push(line.error(
-                        ErrorCode::EmptyLabel,
-                        acol,
-                        format!("state '{state_name}' has an empty argument; it was left out"),
-                    ));
+                    let why =
+                        format!("state '{state_name}' has an empty argument; it was left out");
+                    self.warnings
+                        .push(line.error(ErrorCode::EmptyLabel, acol, why));
                     None
                 }
             },
@@ -572,30 +556,21 @@ impl Reader<'_> {
             // A missing '//' (FOON-111 has a few): the next unit's inputs start where an output
             // label repeats. Without such a repeat the split is ambiguous, so it is an error.
             let Some(split) = repeated_label_at(&self.unit.outputs) else {
-                return Err(line.error(
-                    ErrorCode::BadMotion,
-                    head_col,
-                    format!("second motion line in one unit (the first, '{first}', is on line {first_line}); separate units with '//'"),
-                ));
+                let message = format!("second motion line in one unit (the first, '{first}', is on line {first_line}); separate units with '//'");
+                return Err(line.error(ErrorCode::BadMotion, head_col, message));
             };
             let first_line = *first_line;
             let next_inputs = self.unit.outputs.split_off(split);
-            self.warnings.push(FoonError::at(
-                ErrorCode::BadMotion,
-                line.file,
-                next_inputs[0].line,
-                1,
-                format!("missing '//' before this line (the unit of line {first_line} has a second motion on line {}); a new unit was started here", line.no),
-            ));
+            let message = format!("missing '//' before this line (the unit of line {first_line} has a second motion on line {}); a new unit was started here", line.no);
+            let at = next_inputs[0].line;
+            let warning = FoonError::at(ErrorCode::BadMotion, line.file, at, 1, message);
+            self.warnings.push(warning);
             self.end_unit(line.no)?;
             self.unit.inputs = next_inputs;
         }
         if self.unit.inputs.is_empty() {
-            return Err(line.error(
-                ErrorCode::MotionWithoutInputs,
-                head_col,
-                format!("motion '{motion}' has no input object before it"),
-            ));
+            let why = format!("motion '{motion}' has no input object before it");
+            return Err(line.error(ErrorCode::MotionWithoutInputs, head_col, why));
         }
         let times = line.f[2..]
             .iter()
@@ -613,12 +588,8 @@ fn object_flag(line: &Line) -> Result<bool> {
         None | Some((_, Ok(0))) => Ok(false),
         Some((_, Ok(1))) => Ok(true),
         Some((c, _)) => {
-            let other = line.f[2].1;
-            Err(line.error(
-                ErrorCode::BadNumber,
-                *c,
-                format!("object flag must be 0 or 1, found '{other}'"),
-            ))
+            let why = format!("object flag must be 0 or 1, found '{}'", line.f[2].1);
+            Err(line.error(ErrorCode::BadNumber, *c, why))
         }
     }
 }
@@ -634,17 +605,13 @@ fn goal_mark(line: &Line, bang: bool) -> Result<Option<GoalMark>> {
         })),
         Ok(n) => {
             let last = dish_classes().last().map_or(0, |d| d.index);
-            Err(line.error(
-                ErrorCode::BadNumber,
-                c,
-                format!("dish class {n} is not a known dish class (0 to {last})"),
-            ))
+            let why = format!("dish class {n} is not a known dish class (0 to {last})");
+            Err(line.error(ErrorCode::BadNumber, c, why))
         }
-        Err(_) => Err(line.error(
-            ErrorCode::BadNumber,
-            c,
-            format!("dish class of a goal node must be a number, found '{class}'"),
-        )),
+        Err(_) => {
+            let why = format!("dish class of a goal node must be a number, found '{class}'");
+            Err(line.error(ErrorCode::BadNumber, c, why))
+        }
     }
 }
 

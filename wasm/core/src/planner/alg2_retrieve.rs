@@ -248,12 +248,7 @@ pub(crate) fn retrieve_explained(
         let ctx = (kb, index, scorer);
         let contest = s.contest(ctx, node, parent, prefer, trace);
         let expansion = |outcome, chosen| weigh(kb, scorer, node, outcome, contest.weighed, chosen);
-        let Some(Candidate {
-            unit: u,
-            same_recipe,
-            ..
-        }) = contest.best
-        else {
+        let Some(best) = &contest.best else {
             if contest.cyclic && !contest.cyclic_in_recipe {
                 blocked.push(node);
             }
@@ -265,16 +260,15 @@ pub(crate) fn retrieve_explained(
             trace.record(|t| t.retrieval.push(expansion(outcome, None)));
             continue;
         };
-        if contest.cyclic_in_recipe && !same_recipe {
+        let u = best.unit;
+        if contest.cyclic_in_recipe && !best.same_recipe {
             // the recipe only makes it again later (a lid put back): it had it from the start, and
             // another recipe's way of making it would bring that recipe along
             trace.record(|t| t.retrieval.push(expansion(Outcome::HadFromStart, None)));
             continue;
         }
-        trace.record(|t| {
-            t.retrieval
-                .push(expansion(Outcome::Expanded, Some((u, index))))
-        });
+        let chosen = Some((u, index));
+        trace.record(|t| t.retrieval.push(expansion(Outcome::Expanded, chosen)));
         if !allowed(u) {
             return None;
         }

@@ -181,13 +181,10 @@ fn state_counts(
             if is_utensil(&node.label) {
                 continue;
             }
+            let of_label = label_state.entry(&node.label).or_default();
             for s in node.physical_states() {
                 for c in classes.iter().copied().chain([None]) {
-                    *label_state
-                        .entry(&node.label)
-                        .or_default()
-                        .entry((s, c))
-                        .or_insert(0) += 1;
+                    *of_label.entry((s, c)).or_insert(0) += 1;
                     *state_freq.entry((s, c)).or_insert(0) += 1;
                 }
             }
