@@ -69,20 +69,17 @@ pub fn violations(plan: &Plan) -> Vec<String> {
     let mut seen = HashSet::default();
     let mut goal_made = false;
     for (i, u) in units.iter().enumerate() {
+        let motion = &u.motion;
         if !seen.insert(unit_key(u)) {
-            out.push(format!("unit {i} ({}) appears twice", u.motion));
+            out.push(format!("unit {i} ({motion}) appears twice"));
         }
         for n in &u.inputs {
             let first = first_producer.get(&node_key(n)).copied();
             let from_kitchen = available_at_start(n) && !is_goal(n, plan);
-            if first.is_some_and(|f| f >= i) && !from_kitchen {
-                out.push(format!(
-                    "unit {i} ({}) takes '{}' ({}) made only by unit {}",
-                    u.motion,
-                    n.label,
-                    n.states.join(", "),
-                    first.unwrap_or(i)
-                ));
+            if let Some(f) = first.filter(|&f| f >= i && !from_kitchen) {
+                let (label, states) = (&n.label, n.states.join(", "));
+                let why = format!("takes '{label}' ({states}) made only by unit {f}");
+                out.push(format!("unit {i} ({motion}) {why}"));
             }
         }
         let makes_goal = u.outputs.iter().any(|n| is_goal(n, plan));
@@ -92,8 +89,7 @@ pub fn violations(plan: &Plan) -> Vec<String> {
             .any(|k| last_use.get(k).is_some_and(|&l| l > i));
         if !used && !makes_goal {
             out.push(format!(
-                "unit {i} ({}) makes nothing a later unit uses",
-                u.motion
+                "unit {i} ({motion}) makes nothing a later unit uses"
             ));
         }
     }
