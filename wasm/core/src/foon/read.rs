@@ -56,13 +56,12 @@ pub fn parse_bytes(name: &str, bytes: &[u8]) -> Result<Subgraph> {
             let good = &bytes[..e.valid_up_to()];
             let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
             let column = good.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
-            let why = "bytes that are not UTF-8 text (save the file as UTF-8)";
             Err(FoonError::at(
                 ErrorCode::InvalidUtf8,
                 name,
                 line,
                 column,
-                why,
+                "bytes that are not UTF-8 text (save the file as UTF-8)",
             ))
         }
     }
@@ -530,10 +529,11 @@ impl Reader<'_> {
                 // `on []` occurs in FOON-111: keep the state, drop the empty argument, report
                 // it (the same for `[ ]`, `{ , }` and an argument written in the state field)
                 None => {
-                    let why =
-                        format!("state '{state_name}' has an empty argument; it was left out");
-                    self.warnings
-                        .push(line.error(ErrorCode::EmptyLabel, acol, why));
+                    self.warnings.push(line.error(
+                        ErrorCode::EmptyLabel,
+                        acol,
+                        format!("state '{state_name}' has an empty argument; it was left out"),
+                    ));
                     None
                 }
             },
