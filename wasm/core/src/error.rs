@@ -86,6 +86,11 @@ impl FoonError {
         }
     }
 
+    /// A request that is not well-formed (`ErrorCode::BadQuery`).
+    pub(crate) fn bad_query(message: impl Into<String>) -> FoonError {
+        FoonError::new(ErrorCode::BadQuery, message)
+    }
+
     pub fn at(
         code: ErrorCode,
         file: &str,

@@ -3,7 +3,7 @@
 //! person for the `human_steps` least reliable units.
 
 use crate::contract::plan::{Performer, Plan, RobotOptions, RobotUnit, RobotView};
-use crate::error::{ErrorCode, FoonError, Result};
+use crate::error::{FoonError, Result};
 use crate::vocab::taxonomy::data_lines;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
@@ -47,14 +47,14 @@ impl<'a> Motions<'a> {
     pub fn new(options: &'a RobotOptions) -> Result<Motions<'a>> {
         for (motion, &cost) in &options.motion_costs {
             if !(cost.is_finite() && cost >= 0.0) {
-                return Err(bad(format!(
+                return Err(FoonError::bad_query(format!(
                     "motion cost of '{motion}' is {cost}: it must be a number, 0 or more"
                 )));
             }
         }
         for (motion, &rate) in &options.success_rates {
             if !(rate > 0.0 && rate <= 1.0) {
-                return Err(bad(format!(
+                return Err(FoonError::bad_query(format!(
                     "success rate of '{motion}' is {rate}: it must be more than 0 and at most 1"
                 )));
             }
@@ -81,28 +81,15 @@ impl<'a> Motions<'a> {
 
     fn whole(&self, motion: &str) -> Option<MotionFigures> {
         let listed = table().get(motion);
-        let cost = self
-            .options
-            .motion_costs
-            .get(motion)
-            .map(|&c| c as f64)
-            .or(listed.map(|f| f.cost));
-        let rate = self
-            .options
-            .success_rates
-            .get(motion)
-            .map(|&r| r as f64)
-            .or(listed.map(|f| f.success_rate));
+        let asked = |figures: &BTreeMap<String, f32>| figures.get(motion).map(|&x| f64::from(x));
+        let cost = asked(&self.options.motion_costs).or(listed.map(|f| f.cost));
+        let rate = asked(&self.options.success_rates).or(listed.map(|f| f.success_rate));
         let default = table()["*"];
         (cost.is_some() || rate.is_some()).then(|| MotionFigures {
             cost: cost.unwrap_or(default.cost),
             success_rate: rate.unwrap_or(default.success_rate),
         })
     }
-}
-
-fn bad(message: String) -> FoonError {
-    FoonError::new(ErrorCode::BadQuery, message)
 }
 
 /// The robot view of a finished plan: each unit's figures and performer, the `human_steps` least reliable

@@ -8,15 +8,10 @@ use crate::limits;
 use serde::de::DeserializeOwned;
 
 fn decode<T: DeserializeOwned>(json: &str, what: &str) -> Result<T> {
-    if json.len() > limits::MAX_REQUEST_BYTES {
-        return Err(FoonError::new(
-            ErrorCode::TooLarge,
-            format!(
-                "{what} is {} bytes of JSON; the limit is {} bytes",
-                json.len(),
-                limits::MAX_REQUEST_BYTES
-            ),
-        ));
+    let (bytes, most) = (json.len(), limits::MAX_REQUEST_BYTES);
+    if bytes > most {
+        let message = format!("{what} is {bytes} bytes of JSON; the limit is {most} bytes");
+        return Err(FoonError::new(ErrorCode::TooLarge, message));
     }
     serde_json::from_str(json).map_err(|e| {
         let mut error = FoonError::new(ErrorCode::BadQuery, format!("{what}: {e}"));
@@ -37,15 +32,10 @@ pub fn plan_request(json: &str) -> Result<PlanRequest> {
 /// A JSON array of names (strings), at most `limits::MAX_QUERY_INGREDIENTS` of them.
 pub fn names(json: &str) -> Result<Vec<String>> {
     let names: Vec<String> = decode(json, "names (a JSON array of strings)")?;
-    if names.len() > limits::MAX_QUERY_INGREDIENTS {
-        return Err(FoonError::new(
-            ErrorCode::TooLarge,
-            format!(
-                "{} names; the limit is {}",
-                names.len(),
-                limits::MAX_QUERY_INGREDIENTS
-            ),
-        ));
+    let (count, most) = (names.len(), limits::MAX_QUERY_INGREDIENTS);
+    if count > most {
+        let message = format!("{count} names; the limit is {most}");
+        return Err(FoonError::new(ErrorCode::TooLarge, message));
     }
     Ok(names)
 }

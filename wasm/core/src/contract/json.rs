@@ -58,21 +58,12 @@ pub(crate) fn serialize<S: Serializer>(
     let mut shared = |node| shared(&mut written, node);
     let units: Vec<Unit<&PlanNode, &SmolStr, &Arc<[String]>>> = units
         .iter()
-        .map(|unit| {
-            let PlanUnit {
-                inputs,
-                motion,
-                outputs,
-                origin,
-                sources,
-            } = unit;
-            Unit {
-                inputs: inputs.iter().map(&mut shared).collect(),
-                motion,
-                outputs: outputs.iter().map(&mut shared).collect(),
-                origin: *origin,
-                sources,
-            }
+        .map(|unit| Unit {
+            inputs: unit.inputs.iter().map(&mut shared).collect(),
+            motion: &unit.motion,
+            outputs: unit.outputs.iter().map(&mut shared).collect(),
+            origin: unit.origin,
+            sources: &unit.sources,
         })
         .collect();
     units.serialize(serializer)

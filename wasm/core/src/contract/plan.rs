@@ -169,6 +169,20 @@ impl From<&ObjectNode> for PlanNode {
     }
 }
 
+impl PlanNode {
+    /// Whether the node is `label` in the set of `states` (in any order).
+    pub fn is(&self, label: &str, states: &[SmolStr]) -> bool {
+        self.label == label && sorted(&self.states) == sorted(states)
+    }
+}
+
+/// A list of states or names in sorted order, for comparing as sets.
+pub(crate) fn sorted(list: &[SmolStr]) -> Vec<&str> {
+    let mut words: Vec<&str> = list.iter().map(SmolStr::as_str).collect();
+    words.sort_unstable();
+    words
+}
+
 /// How modification touched a unit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]

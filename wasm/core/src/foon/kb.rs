@@ -9,7 +9,7 @@ use crate::foon::read::Subgraph;
 use crate::limits;
 use crate::vocab::states::is_start_state;
 use crate::vocab::taxonomy::is_utensil;
-use rustc_hash::{FxHashMap, FxHashSet};
+use rustc_hash::FxHashMap;
 use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::sync::Arc;
@@ -140,11 +140,8 @@ impl KnowledgeBase {
         let goals = goal_marks
             .into_iter()
             .map(|(subgraph, node, dish_class)| {
-                let units = by_subgraph
-                    .get(subgraph.as_str())
-                    .map(Vec::as_slice)
-                    .unwrap_or(&[]);
-                let ingredients = kb.goal_ingredients(node, units);
+                let units = by_subgraph.get(subgraph.as_str());
+                let ingredients = kb.goal_ingredients(node, units.map_or(&[], Vec::as_slice));
                 Goal {
                     node,
                     dish_class,
@@ -174,7 +171,11 @@ impl KnowledgeBase {
             .map(|(i, n)| producers[i].is_empty() || is_raw(n))
             .collect();
         KnowledgeBase {
-            node_index: node_index(&nodes),
+            node_index: nodes
+                .iter()
+                .cloned()
+                .zip(NodeId::all(nodes.len()))
+                .collect(),
             nodes,
             units,
             provenance,
@@ -248,20 +249,16 @@ impl KnowledgeBase {
 /// The number of units of all subgraphs before merging: an error when there are none, or too many.
 fn unit_count(subgraphs: &[Subgraph]) -> Result<usize> {
     let count: usize = subgraphs.iter().map(|g| g.units.len()).sum();
-    if count > limits::MAX_UNITS {
-        return Err(FoonError::new(
-            ErrorCode::TooLarge,
-            format!(
-                "the knowledge base has {count} functional units over all files; the limit is {}",
-                limits::MAX_UNITS
-            ),
-        ));
+    let most = limits::MAX_UNITS;
+    if count > most {
+        let message = format!(
+            "the knowledge base has {count} functional units over all files; the limit is {most}"
+        );
+        return Err(FoonError::new(ErrorCode::TooLarge, message));
     }
     if count == 0 {
-        return Err(FoonError::new(
-            ErrorCode::EmptyKnowledgeBase,
-            "the knowledge base has no functional units (no FOON files, or only empty ones)",
-        ));
+        let why = "the knowledge base has no functional units (no FOON files, or only empty ones)";
+        return Err(FoonError::new(ErrorCode::EmptyKnowledgeBase, why));
     }
     Ok(count)
 }
@@ -287,24 +284,13 @@ fn producers_and_consumers(
 /// The distinct object nodes of all subgraphs, numbered in sorted order so that ids do not depend on
 /// file order.
 fn numbered_nodes(subgraphs: &[Subgraph]) -> Vec<ObjectNode> {
-    let distinct: FxHashSet<&ObjectNode> = subgraphs
+    let distinct: BTreeSet<&ObjectNode> = subgraphs
         .iter()
         .flat_map(|g| g.units.iter())
         .flat_map(|u| u.inputs.iter().chain(u.outputs.iter()))
         .map(|o| &o.node)
         .collect();
-    let mut all: Vec<&ObjectNode> = distinct.into_iter().collect();
-    all.sort_unstable();
-    all.into_iter().cloned().collect()
-}
-
-/// Each node's number.
-fn node_index(nodes: &[ObjectNode]) -> FxHashMap<ObjectNode, NodeId> {
-    nodes
-        .iter()
-        .cloned()
-        .zip(NodeId::all(nodes.len()))
-        .collect()
+    distinct.into_iter().cloned().collect()
 }
 
 /// The union of all subgraphs' units keyed by (inputs, motion, outputs), motion flags OR-ed over

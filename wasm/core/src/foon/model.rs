@@ -32,11 +32,10 @@ impl State {
 
     /// FOON text for the state's argument, `[bowl]` or `{egg,milk}`.
     pub fn arg_text(&self) -> Option<String> {
-        match &self.arg {
-            None => None,
-            Some(StateArg::Container(c)) => Some(format!("[{c}]")),
-            Some(StateArg::Ingredients(list)) => Some(format!("{{{}}}", list.join(","))),
-        }
+        self.arg.as_ref().map(|arg| match arg {
+            StateArg::Container(c) => format!("[{c}]"),
+            StateArg::Ingredients(list) => format!("{{{}}}", list.join(",")),
+        })
     }
 
     /// The state as FOON writes it, `in [bowl]` or `contains {egg,milk}`.

@@ -68,23 +68,20 @@ pub fn parse_bytes(name: &str, bytes: &[u8]) -> Result<Subgraph> {
 }
 
 fn check_size(name: &str, bytes: usize) -> Result<()> {
-    if bytes <= limits::MAX_FILE_BYTES {
+    let most = limits::MAX_FILE_BYTES;
+    if bytes <= most {
         return Ok(());
     }
-    let mut e = FoonError::new(
-        ErrorCode::TooLarge,
-        format!(
-            "file is {bytes} bytes; the limit is {} bytes",
-            limits::MAX_FILE_BYTES
-        ),
-    );
+    let message = format!("file is {bytes} bytes; the limit is {most} bytes");
+    let mut e = FoonError::new(ErrorCode::TooLarge, message);
     e.file = Some(name.to_string());
     Err(e)
 }
 
 /// Which block of the current unit the reader is filling.
-#[derive(PartialEq)]
+#[derive(Default, PartialEq)]
 enum Block {
+    #[default]
     Inputs,
     Outputs,
 }
@@ -92,6 +89,7 @@ enum Block {
 /// An object line whose state lines are still being read: label, flag, goal mark, line, states.
 type OpenObject = (SmolStr, bool, Option<GoalMark>, usize, Vec<State>);
 
+#[derive(Default)]
 struct UnitBuilder {
     inputs: Vec<ParsedObject>,
     motion: Option<(String, Vec<String>, usize)>,
@@ -102,16 +100,6 @@ struct UnitBuilder {
 }
 
 impl UnitBuilder {
-    fn new() -> UnitBuilder {
-        UnitBuilder {
-            inputs: Vec::new(),
-            motion: None,
-            outputs: Vec::new(),
-            block: Block::Inputs,
-            open: None,
-        }
-    }
-
     fn is_empty(&self) -> bool {
         self.inputs.is_empty()
             && self.motion.is_none()
@@ -144,46 +132,32 @@ impl UnitBuilder {
     ) -> Result<Option<ParsedUnit>> {
         self.close_object();
         let mut skip = |code, at, why: String| {
-            warnings.push(FoonError::at(
-                code,
-                file,
-                at,
-                1,
-                format!("{why}; unit skipped"),
-            ));
+            let why = format!("{why}; unit skipped");
+            warnings.push(FoonError::at(code, file, at, 1, why));
             Ok(None)
         };
         let Some((motion, times, motion_line)) = self.motion else {
             // FOON-111 has units whose motion line was never written: without a motion there is no
             // action to plan, so the unit is skipped and reported.
             let first = self.inputs.first().map(|o| o.line).unwrap_or(line);
-            return skip(
-                ErrorCode::BadMotion,
-                first,
-                format!(
-                    "functional unit has object lines but no motion line (M) before line {line}"
-                ),
+            let why = format!(
+                "functional unit has object lines but no motion line (M) before line {line}"
             );
+            return skip(ErrorCode::BadMotion, first, why);
         };
         if self.outputs.is_empty() {
             // FOON-111 has such units; a unit that makes nothing cannot be planned with, so it is
             // skipped and reported rather than failing the whole knowledge base.
-            return skip(
-                ErrorCode::UnitWithoutOutputs,
-                motion_line,
-                format!("motion '{motion}' has no output object after it"),
-            );
+            let why = format!("motion '{motion}' has no output object after it");
+            return skip(ErrorCode::UnitWithoutOutputs, motion_line, why);
         }
         if let Some((from, to)) = changed_food(&motion, &self.inputs, &self.outputs) {
             // FOON-111's potato soup peels an onion into a carrot: a slip of annotation, which planned
             // would turn the user's onion into a carrot nobody asked for
-            return skip(
-                ErrorCode::BadMotion,
-                motion_line,
-                format!(
-                    "'{motion}' turns '{from}' into '{to}', but it does not change what a food is"
-                ),
+            let why = format!(
+                "'{motion}' turns '{from}' into '{to}', but it does not change what a food is"
             );
+            return skip(ErrorCode::BadMotion, motion_line, why);
         }
         Ok(Some(ParsedUnit {
             inputs: self.inputs,
@@ -249,31 +223,6 @@ fn line_kind(head: &str) -> Option<(char, bool)> {
     Some((kind, goal))
 }
 
-fn check_text(file: &str, line: usize, col: usize, what: &str, text: &str) -> Result<()> {
-    if text.is_empty() {
-        return Err(FoonError::at(
-            ErrorCode::EmptyLabel,
-            file,
-            line,
-            col,
-            format!("empty {what}"),
-        ));
-    }
-    if text.chars().count() > limits::MAX_LABEL_CHARS {
-        return Err(FoonError::at(
-            ErrorCode::TooLarge,
-            file,
-            line,
-            col,
-            format!(
-                "{what} is longer than {} characters",
-                limits::MAX_LABEL_CHARS
-            ),
-        ));
-    }
-    Ok(())
-}
-
 /// A label in its normal form.
 fn label_of(raw: &str) -> SmolStr {
     SmolStr::from(normalize_label(raw))
@@ -281,15 +230,10 @@ fn label_of(raw: &str) -> SmolStr {
 
 /// Parses a state's argument: `[container]` or `{a,b,c}`; `None` when it names nothing (`[]`, `{ , }`),
 /// which the caller reports as a warning.
-fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<Option<StateArg>> {
+fn state_arg(line: &Line, col: usize, text: &str) -> Result<Option<StateArg>> {
     let bad = |why: &str| {
-        FoonError::at(
-            ErrorCode::BadBrackets,
-            file,
-            line,
-            col,
-            format!("state argument '{text}': {why}"),
-        )
+        let message = format!("state argument '{text}': {why}");
+        line.error(ErrorCode::BadBrackets, col, message)
     };
     let (open, close) = match text.chars().next() {
         Some('[') => ('[', ']'),
@@ -309,7 +253,7 @@ fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<Option<S
         if container.is_empty() {
             return Ok(None);
         }
-        check_text(file, line, col, "container", &container)?;
+        line.check_text(col, "container", &container)?;
         return Ok(Some(StateArg::Container(container)));
     }
     let mut list: Vec<SmolStr> = inner
@@ -318,7 +262,7 @@ fn state_arg(file: &str, line: usize, col: usize, text: &str) -> Result<Option<S
         .filter(|s| !s.is_empty())
         .collect();
     for item in &list {
-        check_text(file, line, col, "ingredient", item)?;
+        line.check_text(col, "ingredient", item)?;
     }
     if list.is_empty() {
         return Ok(None);
@@ -364,16 +308,9 @@ fn too_long(file: &str, line: usize, bytes: usize) -> FoonError {
 }
 
 fn too_many_units(file: &str, line: usize) -> FoonError {
-    FoonError::at(
-        ErrorCode::TooLarge,
-        file,
-        line,
-        1,
-        format!(
-            "more than {} functional units in one file",
-            limits::MAX_UNITS
-        ),
-    )
+    let most = limits::MAX_UNITS;
+    let message = format!("more than {most} functional units in one file");
+    FoonError::at(ErrorCode::TooLarge, file, line, 1, message)
 }
 
 /// One goal node marked with two different dish classes in a file is an error: the planner could not tell
@@ -394,13 +331,8 @@ fn check_goal_classes(file: &str, units: &[ParsedUnit]) -> Result<()> {
     for (line, node, class) in marks {
         let (first_line, first_class) = *first.entry(node).or_insert((line, class));
         if first_class != class {
-            return Err(FoonError::at(
-                ErrorCode::BadNumber,
-                file,
-                line,
-                1,
-                format!("goal node '{node}' is marked with dish class {class} here and with {first_class} on line {first_line}"),
-            ));
+            let message = format!("goal node '{node}' is marked with dish class {class} here and with {first_class} on line {first_line}");
+            return Err(FoonError::at(ErrorCode::BadNumber, file, line, 1, message));
         }
     }
     Ok(())
@@ -414,7 +346,7 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
         name,
         units: Vec::new(),
         warnings: Vec::new(),
-        unit: UnitBuilder::new(),
+        unit: UnitBuilder::default(),
     };
     let mut last_line = 0;
     let mut title = None;
@@ -499,6 +431,19 @@ impl<'l> Line<'l> {
             })
     }
 
+    /// An error when `text` (a `what` in field `col`) is empty or too long.
+    fn check_text(&self, col: usize, what: &str, text: &str) -> Result<()> {
+        let most = limits::MAX_LABEL_CHARS;
+        if text.is_empty() {
+            return Err(self.error(ErrorCode::EmptyLabel, col, format!("empty {what}")));
+        }
+        if text.chars().count() > most {
+            let message = format!("{what} is longer than {most} characters");
+            return Err(self.error(ErrorCode::TooLarge, col, message));
+        }
+        Ok(())
+    }
+
     /// An error when the line has more than `most` fields.
     fn at_most(&self, most: usize, what: &str) -> Result<()> {
         match self.f.get(most) {
@@ -519,7 +464,7 @@ struct Reader<'a> {
 impl Reader<'_> {
     /// Closes the unit being read (at `line_no`) and starts the next.
     fn end_unit(&mut self, line_no: usize) -> Result<()> {
-        let unit = std::mem::replace(&mut self.unit, UnitBuilder::new());
+        let unit = std::mem::take(&mut self.unit);
         self.units
             .extend(unit.finish(self.name, line_no, &mut self.warnings)?);
         Ok(())
@@ -528,11 +473,9 @@ impl Reader<'_> {
     fn line(&mut self, line: &Line) -> Result<()> {
         let (head_col, head) = line.f[0];
         let Some((kind, bang)) = line_kind(head) else {
-            return Err(line.error(
-                ErrorCode::UnknownLine,
-                head_col,
-                format!("unknown line type '{}': expected O (object), S (state), M (motion), '#' or '//'", head.chars().take(20).collect::<String>()),
-            ));
+            let shown: String = head.chars().take(20).collect();
+            let message = format!("unknown line type '{shown}': expected O (object), S (state), M (motion), '#' or '//'");
+            return Err(line.error(ErrorCode::UnknownLine, head_col, message));
         };
         match kind {
             'O' => self.object(line, bang),
@@ -549,7 +492,7 @@ impl Reader<'_> {
         }
         let (lcol, raw_label) = line.field(1, "object label after 'O'")?;
         let label = label_of(raw_label);
-        check_text(line.file, line.no, lcol, "object label", &label)?;
+        line.check_text(lcol, "object label", &label)?;
         let moves = object_flag(line)?;
         let goal = goal_mark(line, bang)?;
         line.at_most(4, "object line has more than four fields")?;
@@ -560,11 +503,8 @@ impl Reader<'_> {
     /// `S<TAB>state[<TAB>argument]`: a state of the open object.
     fn state(&mut self, line: &Line, head_col: usize) -> Result<()> {
         let Some(open) = self.unit.open.as_mut() else {
-            return Err(line.error(
-                ErrorCode::StateWithoutObject,
-                head_col,
-                "state line with no object line (O) before it in this unit",
-            ));
+            let why = "state line with no object line (O) before it in this unit";
+            return Err(line.error(ErrorCode::StateWithoutObject, head_col, why));
         };
         let (scol, raw_state) = line.field(1, "state name after 'S'")?;
         // Some files write the argument in the same field: `in [bowl]`.
@@ -573,7 +513,7 @@ impl Reader<'_> {
             None => (raw_state, None),
         };
         let state_name = normalize_word(word);
-        check_text(line.file, line.no, scol, "state name", &state_name)?;
+        line.check_text(scol, "state name", &state_name)?;
         let (acol, arg_text) = match (inline_arg, line.f.get(2)) {
             (Some(a), None) => (scol, Some(a)),
             (None, Some((acol, a))) => (*acol, Some(*a)),
@@ -584,7 +524,7 @@ impl Reader<'_> {
         };
         let arg = match arg_text {
             None => None,
-            Some(text) => match state_arg(line.file, line.no, acol, text)? {
+            Some(text) => match state_arg(line, acol, text)? {
                 Some(arg) => Some(arg),
                 // `on []` occurs in FOON-111: keep the state, drop the empty argument, report
                 // it (the same for `[ ]`, `{ , }` and an argument written in the state field)
@@ -611,35 +551,26 @@ impl Reader<'_> {
         self.unit.close_object();
         let (mcol, raw_motion) = line.field(1, "motion label after 'M'")?;
         let motion = normalize_word(raw_motion);
-        check_text(line.file, line.no, mcol, "motion label", &motion)?;
+        line.check_text(mcol, "motion label", &motion)?;
         if let Some((first, _, first_line)) = &self.unit.motion {
             // A missing '//' (FOON-111 has a few): the next unit's inputs start where an output
             // label repeats. Without such a repeat the split is ambiguous, so it is an error.
             let Some(split) = repeated_label_at(&self.unit.outputs) else {
-                return Err(line.error(
-                    ErrorCode::BadMotion,
-                    head_col,
-                    format!("second motion line in one unit (the first, '{first}', is on line {first_line}); separate units with '//'"),
-                ));
+                let message = format!("second motion line in one unit (the first, '{first}', is on line {first_line}); separate units with '//'");
+                return Err(line.error(ErrorCode::BadMotion, head_col, message));
             };
             let first_line = *first_line;
             let next_inputs = self.unit.outputs.split_off(split);
-            self.warnings.push(FoonError::at(
-                ErrorCode::BadMotion,
-                line.file,
-                next_inputs[0].line,
-                1,
-                format!("missing '//' before this line (the unit of line {first_line} has a second motion on line {}); a new unit was started here", line.no),
-            ));
+            let message = format!("missing '//' before this line (the unit of line {first_line} has a second motion on line {}); a new unit was started here", line.no);
+            let at = next_inputs[0].line;
+            let warning = FoonError::at(ErrorCode::BadMotion, line.file, at, 1, message);
+            self.warnings.push(warning);
             self.end_unit(line.no)?;
             self.unit.inputs = next_inputs;
         }
         if self.unit.inputs.is_empty() {
-            return Err(line.error(
-                ErrorCode::MotionWithoutInputs,
-                head_col,
-                format!("motion '{motion}' has no input object before it"),
-            ));
+            let why = format!("motion '{motion}' has no input object before it");
+            return Err(line.error(ErrorCode::MotionWithoutInputs, head_col, why));
         }
         let times = line.f[2..]
             .iter()
@@ -657,12 +588,8 @@ fn object_flag(line: &Line) -> Result<bool> {
         None | Some((_, Ok(0))) => Ok(false),
         Some((_, Ok(1))) => Ok(true),
         Some((c, _)) => {
-            let other = line.f[2].1;
-            Err(line.error(
-                ErrorCode::BadNumber,
-                *c,
-                format!("object flag must be 0 or 1, found '{other}'"),
-            ))
+            let why = format!("object flag must be 0 or 1, found '{}'", line.f[2].1);
+            Err(line.error(ErrorCode::BadNumber, *c, why))
         }
     }
 }
@@ -678,17 +605,13 @@ fn goal_mark(line: &Line, bang: bool) -> Result<Option<GoalMark>> {
         })),
         Ok(n) => {
             let last = dish_classes().last().map_or(0, |d| d.index);
-            Err(line.error(
-                ErrorCode::BadNumber,
-                c,
-                format!("dish class {n} is not a known dish class (0 to {last})"),
-            ))
+            let why = format!("dish class {n} is not a known dish class (0 to {last})");
+            Err(line.error(ErrorCode::BadNumber, c, why))
         }
-        Err(_) => Err(line.error(
-            ErrorCode::BadNumber,
-            c,
-            format!("dish class of a goal node must be a number, found '{class}'"),
-        )),
+        Err(_) => {
+            let why = format!("dish class of a goal node must be a number, found '{class}'");
+            Err(line.error(ErrorCode::BadNumber, c, why))
+        }
     }
 }
 

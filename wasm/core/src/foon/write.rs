@@ -76,9 +76,8 @@ pub fn kb_bundle(kb: &KnowledgeBase) -> String {
     let by_subgraph = kb.units_by_subgraph();
     for name in names {
         let _ = writeln!(out, "{FILE_MARK}{name}");
-        let mut any = false;
-        for &u in by_subgraph.get(name).map(Vec::as_slice).unwrap_or(&[]) {
-            any = true;
+        let units = by_subgraph.get(name).map_or(&[][..], Vec::as_slice);
+        for &u in units {
             let unit = &kb.units[u];
             out.push_str("//\n");
             let object = |out: &mut String, node: NodeId, moves: bool| {
@@ -95,7 +94,7 @@ pub fn kb_bundle(kb: &KnowledgeBase) -> String {
                 object(&mut out, o.node, o.moves);
             }
         }
-        if any {
+        if !units.is_empty() {
             out.push_str("//\n");
         }
     }

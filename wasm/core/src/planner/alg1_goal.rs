@@ -43,16 +43,14 @@ pub(crate) fn select<'a>(
     let goals = match of_class {
         Some(goals) => goals,
         None => {
-            notes.push(match class {
-                None => format!(
-                    "unknown dish type '{}': searched all goal nodes",
-                    query.dish_type
-                ),
-                Some(c) => format!(
-                    "no recipe of class '{}' in the knowledge base: searched all goal nodes",
-                    dish_class_name(c).unwrap_or("?")
-                ),
-            });
+            let why = match class {
+                None => format!("unknown dish type '{}'", query.dish_type),
+                Some(c) => {
+                    let name = dish_class_name(c).unwrap_or("?");
+                    format!("no recipe of class '{name}' in the knowledge base")
+                }
+            };
+            notes.push(format!("{why}: searched all goal nodes"));
             index.all_goals()
         }
     };

@@ -201,19 +201,8 @@ pub(crate) fn retrieve(
     root: NodeId,
     prefer: Option<u32>,
 ) -> Retrieved {
-    search(kb, index, scorer, root, prefer, |_| true, &Recorder::OFF).unwrap_or_default()
-}
-
-/// `retrieve`, with every node taken from the queue recorded in `trace` (the reference task tree).
-pub(crate) fn retrieve_explained(
-    kb: &KnowledgeBase,
-    index: &PlannerIndex,
-    scorer: &Scorer,
-    root: NodeId,
-    prefer: Option<u32>,
-    trace: &Recorder,
-) -> Retrieved {
-    search(kb, index, scorer, root, prefer, |_| true, trace).unwrap_or_default()
+    retrieve_explained(kb, index, scorer, root, prefer, |_| true, &Recorder::OFF)
+        .unwrap_or_default()
 }
 
 /// `retrieve`, abandoned (`None`) as soon as it chooses a unit that `allowed` rejects. Every chosen unit
@@ -228,11 +217,11 @@ pub(crate) fn retrieve_within(
     prefer: Option<u32>,
     allowed: impl Fn(UnitId) -> bool,
 ) -> Option<Retrieved> {
-    search(kb, index, scorer, root, prefer, allowed, &Recorder::OFF)
+    retrieve_explained(kb, index, scorer, root, prefer, allowed, &Recorder::OFF)
 }
 
-/// The search of `retrieve_within`, recording into `trace`.
-fn search(
+/// `retrieve_within`, with every node taken from the queue recorded in `trace` (the reference task tree).
+pub(crate) fn retrieve_explained(
     kb: &KnowledgeBase,
     index: &PlannerIndex,
     scorer: &Scorer,
@@ -259,12 +248,7 @@ fn search(
         let ctx = (kb, index, scorer);
         let contest = s.contest(ctx, node, parent, prefer, trace);
         let expansion = |outcome, chosen| weigh(kb, scorer, node, outcome, contest.weighed, chosen);
-        let Some(Candidate {
-            unit: u,
-            same_recipe,
-            ..
-        }) = contest.best
-        else {
+        let Some(best) = &contest.best else {
             if contest.cyclic && !contest.cyclic_in_recipe {
                 blocked.push(node);
             }
@@ -276,16 +260,15 @@ fn search(
             trace.record(|t| t.retrieval.push(expansion(outcome, None)));
             continue;
         };
-        if contest.cyclic_in_recipe && !same_recipe {
+        let u = best.unit;
+        if contest.cyclic_in_recipe && !best.same_recipe {
             // the recipe only makes it again later (a lid put back): it had it from the start, and
             // another recipe's way of making it would bring that recipe along
             trace.record(|t| t.retrieval.push(expansion(Outcome::HadFromStart, None)));
             continue;
         }
-        trace.record(|t| {
-            t.retrieval
-                .push(expansion(Outcome::Expanded, Some((u, index))))
-        });
+        let chosen = Some((u, index));
+        trace.record(|t| t.retrieval.push(expansion(Outcome::Expanded, chosen)));
         if !allowed(u) {
             return None;
         }
@@ -299,6 +282,7 @@ fn search(
 }
 
 /// The units making a node, weighed against each other (`Search::contest`).
+#[derive(Default)]
 struct Contest {
     best: Option<Candidate>,
     /// Some unit would close a cycle; one of the recipe that needs the node would.
@@ -319,12 +303,7 @@ impl Search {
         prefer: Option<u32>,
         trace: &Recorder,
     ) -> Contest {
-        let mut c = Contest {
-            best: None,
-            cyclic: false,
-            cyclic_in_recipe: false,
-            weighed: Vec::new(),
-        };
+        let mut c = Contest::default();
         for &u in &kb.producers[node] {
             let unit = &kb.units[u];
             if unit.input_nodes().any(|n| n == node) {

@@ -135,16 +135,11 @@ fn changed(line: &ProgressLine, prepared: &str) -> bool {
         .filter(|s| !s.starts_with("in "))
         .flat_map(|s| s.split(", "));
     let prepared_itself = own.clone().any(|w| {
+        use Category::*;
         w == prepared
             || matches!(
                 category(w),
-                Category::Cut
-                    | Category::FinelyCut
-                    | Category::Ground
-                    | Category::Liquid
-                    | Category::Mixed
-                    | Category::Shaped
-                    | Category::Preserved
+                Cut | FinelyCut | Ground | Liquid | Mixed | Shaped | Preserved
             )
     });
     // motion i leads from state i, which is the food itself until it is "in" something

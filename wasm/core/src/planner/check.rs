@@ -3,20 +3,14 @@
 //! input is something a kitchen has at the start, which the goal never is), no unit whose products nobody
 //! uses, the goal made.
 
-use crate::contract::plan::{Plan, PlanNode, PlanUnit};
+use crate::contract::plan::{sorted, Plan, PlanNode, PlanUnit};
 use crate::vocab::states::START_STATES;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
-use smol_str::SmolStr;
 
 /// Identity of a node: label, states and contents as sets, container (borrowed from the node).
 pub(crate) type NodeKey<'a> = (&'a str, Vec<&'a str>, Vec<&'a str>, Option<&'a str>);
 
 pub(crate) fn node_key(n: &PlanNode) -> NodeKey<'_> {
-    fn sorted(list: &[SmolStr]) -> Vec<&str> {
-        let mut out: Vec<&str> = list.iter().map(SmolStr::as_str).collect();
-        out.sort_unstable();
-        out
-    }
     (
         &n.label,
         sorted(&n.states),
@@ -52,11 +46,7 @@ fn unit_key(u: &PlanUnit) -> (&str, Vec<NodeKey<'_>>, Vec<NodeKey<'_>>) {
 }
 
 fn is_goal(n: &PlanNode, plan: &Plan) -> bool {
-    let mut a = n.states.clone();
-    a.sort();
-    let mut b = plan.goal.states.clone();
-    b.sort();
-    n.label == plan.goal.label && a == b
+    n.is(&plan.goal.label, &plan.goal.states)
 }
 
 /// What is wrong with a plan's structure; empty when nothing is.
@@ -79,20 +69,17 @@ pub fn violations(plan: &Plan) -> Vec<String> {
     let mut seen = HashSet::default();
     let mut goal_made = false;
     for (i, u) in units.iter().enumerate() {
+        let motion = &u.motion;
         if !seen.insert(unit_key(u)) {
-            out.push(format!("unit {i} ({}) appears twice", u.motion));
+            out.push(format!("unit {i} ({motion}) appears twice"));
         }
         for n in &u.inputs {
             let first = first_producer.get(&node_key(n)).copied();
             let from_kitchen = available_at_start(n) && !is_goal(n, plan);
-            if first.is_some_and(|f| f >= i) && !from_kitchen {
-                out.push(format!(
-                    "unit {i} ({}) takes '{}' ({}) made only by unit {}",
-                    u.motion,
-                    n.label,
-                    n.states.join(", "),
-                    first.unwrap_or(i)
-                ));
+            if let Some(f) = first.filter(|&f| f >= i && !from_kitchen) {
+                let (label, states) = (&n.label, n.states.join(", "));
+                let why = format!("takes '{label}' ({states}) made only by unit {f}");
+                out.push(format!("unit {i} ({motion}) {why}"));
             }
         }
         let makes_goal = u.outputs.iter().any(|n| is_goal(n, plan));
@@ -102,8 +89,7 @@ pub fn violations(plan: &Plan) -> Vec<String> {
             .any(|k| last_use.get(k).is_some_and(|&l| l > i));
         if !used && !makes_goal {
             out.push(format!(
-                "unit {i} ({}) makes nothing a later unit uses",
-                u.motion
+                "unit {i} ({motion}) makes nothing a later unit uses"
             ));
         }
     }

@@ -39,13 +39,9 @@ impl Recorder {
     pub fn restart_with_goal(&self, node: &str, subgraph: &str) {
         self.record(|t| {
             let g = &mut t.goal_selection;
-            if let Some(at) = g
-                .candidates
-                .iter()
-                .position(|c| c.node == node && c.subgraph == subgraph)
-            {
-                let c = g.candidates.remove(at);
-                g.candidates.insert(0, c);
+            let at = (g.candidates.iter()).position(|c| c.node == node && c.subgraph == subgraph);
+            if let Some(at) = at {
+                g.candidates[..=at].rotate_right(1);
             }
             g.tie_break = Some("fuller_tree".to_string());
             *t = Trace {

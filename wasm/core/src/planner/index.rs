@@ -181,13 +181,10 @@ fn state_counts(
             if is_utensil(&node.label) {
                 continue;
             }
+            let of_label = label_state.entry(&node.label).or_default();
             for s in node.physical_states() {
                 for c in classes.iter().copied().chain([None]) {
-                    *label_state
-                        .entry(&node.label)
-                        .or_default()
-                        .entry((s, c))
-                        .or_insert(0) += 1;
+                    *of_label.entry((s, c)).or_insert(0) += 1;
                     *state_freq.entry((s, c)).or_insert(0) += 1;
                 }
             }
@@ -289,13 +286,10 @@ impl Labels {
         let mut names: Vec<String> = Vec::new();
         let mut ids: HashMap<String, u32> = HashMap::default();
         let mut intern = |l: &str| -> u32 {
-            if let Some(&i) = ids.get(l) {
-                return i;
-            }
-            let i = names.len() as u32;
-            names.push(l.to_string());
-            ids.insert(l.to_string(), i);
-            i
+            *ids.entry(l.to_string()).or_insert_with(|| {
+                names.push(l.to_string());
+                names.len() as u32 - 1
+            })
         };
         let unit_ingredients = kb
             .units
@@ -502,7 +496,7 @@ impl PlannerIndex {
     /// Whether node `n` is a starting item of one of the recipes unit `u` comes from (that recipe
     /// never makes it): retrieval takes it from the kitchen there, as the recipe did.
     pub(crate) fn starts_in_recipe_of(&self, u: UnitId, n: NodeId) -> bool {
-        let made = self.made_in.get(n.0).map(Vec::as_slice).unwrap_or(&[]);
+        let made = self.made_in.get(n.0).map_or(&[][..], Vec::as_slice);
         self.sources(u)
             .iter()
             .any(|s| made.binary_search(s).is_err())
@@ -510,7 +504,7 @@ impl PlannerIndex {
 
     /// The ids of the subgraphs unit `u` occurs in, sorted.
     pub(crate) fn sources(&self, u: UnitId) -> &[u32] {
-        self.unit_sources.get(u.0).map(Vec::as_slice).unwrap_or(&[])
+        self.unit_sources.get(u.0).map_or(&[], Vec::as_slice)
     }
 
     /// Whether units `u` and `v` occur in a common subgraph.
@@ -534,15 +528,8 @@ impl PlannerIndex {
         &self.label_names
     }
 
-    pub(crate) fn label_count(&self) -> usize {
-        self.label_names.len()
-    }
-
     pub(crate) fn unit_ingredients(&self, u: UnitId) -> &[u32] {
-        self.unit_ingredients
-            .get(u.0)
-            .map(Vec::as_slice)
-            .unwrap_or(&[])
+        self.unit_ingredients.get(u.0).map_or(&[], Vec::as_slice)
     }
 
     /// The usable goals of dish class `class`, when it has some.
@@ -556,7 +543,7 @@ impl PlannerIndex {
     }
 
     pub(crate) fn nodes_of(&self, label: &str) -> &[NodeId] {
-        self.by_label.get(label).map(Vec::as_slice).unwrap_or(&[])
+        self.by_label.get(label).map_or(&[], Vec::as_slice)
     }
 
     pub(crate) fn is_label(&self, label: &str) -> bool {

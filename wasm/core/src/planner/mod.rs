@@ -130,7 +130,8 @@ fn reference_tree(
         optimal::retrieve_in_mode(kb, index, scorer, root, mode, m, trace, notes)
     });
     let reference = in_mode.unwrap_or_else(|| {
-        alg2_retrieve::retrieve_explained(kb, index, scorer, root.0, root.1, trace)
+        alg2_retrieve::retrieve_explained(kb, index, scorer, root.0, root.1, |_| true, trace)
+            .unwrap_or_default()
     });
     for &n in &reference.blocked {
         notes.push(format!(
@@ -230,16 +231,10 @@ fn modified<'a>(
 /// The units of the reference task tree a plan keeps (as they were, renamed, or with an ingredient
 /// attached).
 fn kept_units(tree: &tree::Tree, order: &[tree::TUnitId]) -> usize {
-    use crate::contract::plan::Origin;
-    order
-        .iter()
-        .filter(|&&u| {
-            matches!(
-                tree.units[u].origin,
-                Origin::Reference | Origin::Renamed | Origin::Attached
-            )
-        })
-        .count()
+    use crate::contract::plan::Origin::{Attached, Reference, Renamed};
+    let kept =
+        |&&u: &&tree::TUnitId| matches!(tree.units[u].origin, Reference | Renamed | Attached);
+    order.iter().filter(kept).count()
 }
 
 /// The tree of Alg. 1's best goal `chosen` modified for the query, or, where the query keeps next to
@@ -297,18 +292,12 @@ const RUNNERS_UP: usize = 3;
 /// How much less than Alg. 1's best goal a runner-up tried instead may score.
 const FULLER_WITHIN: f32 = 0.1;
 
-fn bad(message: String) -> FoonError {
-    FoonError::new(ErrorCode::BadQuery, message)
-}
-
 /// `what` is written only for the error (every ingredient is checked; its name is a `format!`).
 fn check_length(text: &str, what: impl FnOnce() -> String) -> Result<()> {
-    if text.chars().count() > limits::MAX_LABEL_CHARS {
-        return Err(bad(format!(
-            "{} is longer than {} characters",
-            what(),
-            limits::MAX_LABEL_CHARS
-        )));
+    let most = limits::MAX_LABEL_CHARS;
+    if text.chars().count() > most {
+        let message = format!("{} is longer than {most} characters", what());
+        return Err(FoonError::bad_query(message));
     }
     Ok(())
 }
@@ -317,65 +306,55 @@ fn check_length(text: &str, what: impl FnOnce() -> String) -> Result<()> {
 fn prepare_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
     check_length(&q.dish_type, || "the dish type".into())?;
     if q.ingredients.is_empty() {
-        return Err(bad("the query has no ingredients".into()));
+        return Err(FoonError::bad_query("the query has no ingredients"));
     }
-    if q.ingredients.len() > limits::MAX_QUERY_INGREDIENTS {
-        return Err(FoonError::new(
-            ErrorCode::TooLarge,
-            format!(
-                "the query has {} ingredients; the limit is {}",
-                q.ingredients.len(),
-                limits::MAX_QUERY_INGREDIENTS
-            ),
-        ));
+    let (count, most) = (q.ingredients.len(), limits::MAX_QUERY_INGREDIENTS);
+    if count > most {
+        let message = format!("the query has {count} ingredients; the limit is {most}");
+        return Err(FoonError::new(ErrorCode::TooLarge, message));
     }
-    let mut out: Vec<QueryIngredient> = Vec::with_capacity(q.ingredients.len());
-    // how often each of `out` is listed
-    let mut listed: Vec<usize> = Vec::with_capacity(q.ingredients.len());
+    // each distinct ingredient with how often it is listed
+    let mut listed: Vec<(QueryIngredient, usize)> = Vec::with_capacity(count);
     for (i, ing) in q.ingredients.iter().enumerate() {
-        check_length(&ing.object, || format!("ingredient {} object", i + 1))?;
-        check_length(&ing.state, || format!("ingredient {} state", i + 1))?;
-        let object = normalize_label(&ing.object);
-        if object.is_empty() {
-            return Err(bad(format!(
-                "ingredient {} has an empty object name",
-                i + 1
-            )));
-        }
-        if object.contains(['{', '}', '[', ']', ',', '\t', '\n']) {
-            return Err(bad(format!(
-                "ingredient {} ('{object}') has a character not allowed in a FOON label",
-                i + 1
-            )));
-        }
-        let state = normalize_word(&ing.state);
-        if state.contains(['{', '}', '[', ']', ',', '\t', '\n']) {
-            return Err(bad(format!(
-                "ingredient {} state ('{state}') has a character not allowed in a FOON state",
-                i + 1
-            )));
-        }
-        let item = QueryIngredient { object, state };
-        match out.iter().position(|o| *o == item) {
-            Some(k) => listed[k] += 1,
-            None => {
-                out.push(item);
-                listed.push(1);
-            }
+        let item = prepare_ingredient(i + 1, ing)?;
+        match listed.iter_mut().find(|(o, _)| *o == item) {
+            Some((_, n)) => *n += 1,
+            None => listed.push((item, 1)),
         }
     }
     // one note per ingredient listed more than once, however often
-    for (item, &n) in out.iter().zip(&listed).filter(|(_, &n)| n > 1) {
+    for (item, n) in listed.iter().filter(|(_, n)| *n > 1) {
+        let (object, state) = (&item.object, &item.state);
         notes.push(format!(
-            "duplicate ingredient '{} ({})' listed {n} times, planned once",
-            item.object, item.state
+            "duplicate ingredient '{object} ({state})' listed {n} times, planned once"
         ));
     }
     Ok(Query {
         id: q.id.clone(),
         dish_type: normalize_word(&q.dish_type),
-        ingredients: out,
+        ingredients: listed.into_iter().map(|(item, _)| item).collect(),
     })
+}
+
+/// Characters a FOON label or state cannot hold.
+const NOT_IN_FOON: [char; 7] = ['{', '}', '[', ']', ',', '\t', '\n'];
+
+/// Query ingredient number `n` in normal form.
+fn prepare_ingredient(n: usize, ing: &QueryIngredient) -> Result<QueryIngredient> {
+    check_length(&ing.object, || format!("ingredient {n} object"))?;
+    check_length(&ing.state, || format!("ingredient {n} state"))?;
+    let object = normalize_label(&ing.object);
+    let state = normalize_word(&ing.state);
+    let why = if object.is_empty() {
+        format!("ingredient {n} has an empty object name")
+    } else if object.contains(NOT_IN_FOON) {
+        format!("ingredient {n} ('{object}') has a character not allowed in a FOON label")
+    } else if state.contains(NOT_IN_FOON) {
+        format!("ingredient {n} state ('{state}') has a character not allowed in a FOON state")
+    } else {
+        return Ok(QueryIngredient { object, state });
+    };
+    Err(FoonError::bad_query(why))
 }
 
 fn prepare_overrides(o: &BTreeMap<String, String>) -> Result<BTreeMap<String, String>> {
@@ -385,7 +364,7 @@ fn prepare_overrides(o: &BTreeMap<String, String>) -> Result<BTreeMap<String, St
         check_length(v, || "an override".into())?;
         let (k, v) = (normalize_label(k), normalize_label(v));
         if k.is_empty() || v.is_empty() {
-            return Err(bad("an override has an empty name".into()));
+            return Err(FoonError::bad_query("an override has an empty name"));
         }
         out.insert(k, v);
     }

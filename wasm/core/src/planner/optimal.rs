@@ -26,13 +26,21 @@ use std::cmp::{Ordering, Reverse};
 use std::collections::{BinaryHeap, VecDeque};
 
 /// A tree's value: the sum of its units' weights, then its number of units.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 struct Value {
     weight: f64,
     units: u32,
 }
 
 impl Value {
+    /// The value of a tree of the distinct `units`.
+    fn of(units: &[UnitId], weight: impl Fn(UnitId) -> f64) -> Value {
+        Value {
+            weight: units.iter().map(|&u| weight(u)).sum(),
+            units: units.len() as u32,
+        }
+    }
+
     fn plus(self, other: Value) -> Value {
         Value {
             weight: self.weight + other.weight,
@@ -349,14 +357,6 @@ fn best_tree(
     (found.tree, found.exact)
 }
 
-/// A retrieved tree's value by a mode's measure: its units' summed weights, then their number.
-fn measure(r: &Retrieved, weight: &dyn Fn(UnitId) -> f64) -> Value {
-    Value {
-        weight: r.units.iter().map(|&u| weight(u)).sum(),
-        units: r.units.len() as u32,
-    }
-}
-
 /// The reference task tree in `mode`, or `None` for the heuristic's tree: in the heuristic mode, when
 /// every way of making `root` runs into a cycle, and when the heuristic's tree is better by the mode's own
 /// measure (after the exact search ran out of budget, or where Algorithm 2 takes from the kitchen a node
@@ -406,7 +406,10 @@ pub(crate) fn retrieve_in_mode(
         blocked: Vec::new(),
     };
     let heuristic = retrieve(kb, index, scorer, root, prefer);
-    if exact::better(measure(&heuristic, &weight), measure(&retrieved, &weight)) {
+    if exact::better(
+        Value::of(&heuristic.units, weight),
+        Value::of(&retrieved.units, weight),
+    ) {
         notes.push(format!(
             "retrieval mode {why}: the paper's heuristic finds a better tree by this mode's measure \
              here (it takes a node two of its units need from the kitchen, as a starting item of the \

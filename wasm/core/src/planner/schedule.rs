@@ -14,6 +14,7 @@ use super::check::available_at_start;
 use super::tree::{SlotId, TUnitId, Tree};
 use crate::contract::plan::{IngredientOutcome, PlanNode, Status};
 use rustc_hash::FxHashSet as HashSet;
+use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use std::sync::Arc;
 
@@ -151,21 +152,11 @@ pub(crate) fn schedule(tree: &mut Tree, value: &[usize], order: Vec<TUnitId>) ->
 
 /// Drops every unit equal in value to an earlier one (its products are the earlier one's).
 fn drop_duplicates(tree: &mut Tree, units: &mut Vec<TUnitId>, shapes: &Shapes) {
-    let mut dropped = Vec::new();
-    let mut seen: HashSet<(&str, &[Value], &[Value])> = HashSet::default();
-    units.retain(|&u| {
-        let key = (
-            tree.units[u].motion.as_ref(),
-            shapes.inputs(u),
-            shapes.outputs(u),
-        );
-        let first = seen.insert(key);
-        if !first {
-            dropped.push(u);
-        }
-        first
-    });
-    drop(seen);
+    let mut seen = HashSet::default();
+    let dropped: Vec<TUnitId> = (units.iter().copied())
+        .filter(|&u| !seen.insert((&*tree.units[u].motion, shapes.inputs(u), shapes.outputs(u))))
+        .collect();
+    units.retain(|u| !dropped.contains(u));
     for u in dropped {
         tree.units[u].alive = false;
     }
@@ -271,21 +262,19 @@ fn topological(
     let mut needs = Needs::new(units, shapes, vals);
     // relax edges into a cycle when the value is available from a maker outside it (each round that
     // changes something removes an edge)
-    loop {
+    let comp = loop {
         let comp = components(n, &needs);
-        if needs.relax(&comp) {
-            continue;
+        if !needs.relax(&comp) {
+            break comp;
         }
-        // a cycle (an edge inside a component: there are no loops): break the edge into its earliest
-        // consumer from its latest maker
-        let worst = needs
-            .edges()
-            .filter(|&(v, p, _)| comp[p] == comp[v])
-            .min_by_key(|&(v, p, x)| (v, std::cmp::Reverse(p), x));
-        if let Some((v, p, x)) = worst {
-            return Err((units[p], units[v], x));
-        }
-        break;
+    };
+    // a cycle (an edge inside a component: there are no loops): break the edge into its earliest
+    // consumer from its latest maker
+    let worst = (needs.edges())
+        .filter(|&(v, p, _)| comp[p] == comp[v])
+        .min_by_key(|&(v, p, x)| (v, Reverse(p), x));
+    if let Some((v, p, x)) = worst {
+        return Err((units[p], units[v], x));
     }
     // each maker's users, once per pair: (maker, consumer) sorted by maker
     let mut arcs: Vec<(usize, usize)> = needs.edges().map(|(v, p, _)| (p, v)).collect();
@@ -296,18 +285,16 @@ fn topological(
     for &(_, v) in &arcs {
         indegree[v] += 1;
     }
-    let mut ready: BinaryHeap<std::cmp::Reverse<usize>> = (0..n)
-        .filter(|&v| indegree[v] == 0)
-        .map(std::cmp::Reverse)
-        .collect();
+    let mut ready: BinaryHeap<Reverse<usize>> =
+        (0..n).filter(|&v| indegree[v] == 0).map(Reverse).collect();
     let mut order = Vec::with_capacity(n);
-    while let Some(std::cmp::Reverse(v)) = ready.pop() {
+    while let Some(Reverse(v)) = ready.pop() {
         order.push(units[v]);
         let users = arcs.partition_point(|a| a.0 < v)..arcs.partition_point(|a| a.0 <= v);
         for &(_, w) in &arcs[users] {
             indegree[w] -= 1;
             if indegree[w] == 0 {
-                ready.push(std::cmp::Reverse(w));
+                ready.push(Reverse(w));
             }
         }
     }

@@ -40,7 +40,7 @@ pub(crate) struct Scorer<'a> {
 
 impl<'a> Scorer<'a> {
     pub fn new(sim: &'a dyn Similarity, index: &'a PlannerIndex, query: &'a [String]) -> Self {
-        let labels = index.label_count();
+        let labels = index.label_names().len();
         Scorer {
             sim,
             index,
@@ -50,13 +50,7 @@ impl<'a> Scorer<'a> {
                 .iter()
                 .map(|q| sim.prepare(q, index.label_set, index.label_names()))
                 .collect(),
-            rows: query
-                .iter()
-                .map(|q| match sim.memory() {
-                    Some(memory) => memory.row(index.label_set, q, labels),
-                    None => Arc::new(PairRow::new(labels)),
-                })
-                .collect(),
+            rows: rows(sim, index.label_set, query, labels),
             best_to: RefCell::new(Vec::with_capacity(query.len())),
             // a plan scores a few units (9 on average over the dev queries, at most 37)
             units: RefCell::new(HashMap::default()),
@@ -88,19 +82,10 @@ impl<'a> Scorer<'a> {
     /// Goal selection among `goals`: the pairs of the query's names with the goals' ingredients come
     /// from the similarity's memory when it has one (they recur from plan to plan), else from this plan.
     pub fn goal_fits<'s>(&'s self, goals: &'s GoalClass) -> GoalFits<'s, 'a> {
-        let len = goals.labels.len();
-        let rows = self
-            .query
-            .iter()
-            .map(|q| match self.sim.memory() {
-                Some(memory) => memory.row(goals.set, q, len),
-                None => Arc::new(PairRow::new(len)),
-            })
-            .collect();
         GoalFits {
             scorer: self,
             goals,
-            rows,
+            rows: rows(self.sim, goals.set, self.query, goals.labels.len()),
             exact_at: self
                 .query_ids
                 .iter()
@@ -117,7 +102,7 @@ impl<'a> Scorer<'a> {
         best_to.resize(self.query.len(), 0.0);
         for &l in labels {
             for (q, to) in best_to.iter_mut().enumerate() {
-                *to = larger(*to, self.both(q, l).0);
+                *to = to.max(self.both(q, l).0);
             }
         }
         let exact = |id: &Option<u32>| id.is_some_and(|id| labels.contains(&id));
@@ -158,8 +143,8 @@ impl GoalFits<'_, '_> {
             let mut best_from = 0.0f32;
             for (q, to) in best_to.iter_mut().enumerate() {
                 let (there, back) = self.pair(q, s);
-                *to = larger(*to, there);
-                best_from = larger(best_from, back);
+                *to = to.max(there);
+                best_from = best_from.max(back);
             }
             precision += if self.exact_at.contains(&Some(s)) {
                 1.0
@@ -196,19 +181,20 @@ impl GoalFits<'_, '_> {
     }
 }
 
+/// Per query name, its pairs with the `len` candidates of `set`: from the similarity's memory when it
+/// has one, else a fresh row.
+fn rows(sim: &dyn Similarity, set: u64, query: &[String], len: usize) -> Vec<Arc<PairRow>> {
+    let row = |q: &String| match sim.memory() {
+        Some(memory) => memory.row(set, q, len),
+        None => Arc::new(PairRow::new(len)),
+    };
+    query.iter().map(row).collect()
+}
+
 /// Σ over query names of their best similarity, 1 for those `exact` says the labels have.
 fn sum_with_exact<T>(query: &[T], best: &[f32], exact: impl Fn(&T) -> bool) -> f32 {
     query
         .iter()
         .zip(best)
         .fold(0.0, |sum, (q, b)| sum + if exact(q) { 1.0 } else { *b })
-}
-
-/// The larger of two similarities (never NaN): `f32::max` is a libm call in WASM, for its NaN rule.
-fn larger(a: f32, b: f32) -> f32 {
-    if b > a {
-        b
-    } else {
-        a
-    }
 }

@@ -72,18 +72,14 @@ impl Transitions {
     ) {
         *self.handled.entry((form, motion.to_string())).or_insert(0) += 1;
         *self.evidence.entry(form).or_insert(0) += 1;
-        let mut any = false;
-        for s in gained {
-            any = true;
-            *self
-                .reached
-                .entry((form, motion.to_string(), s.to_string()))
-                .or_insert(0) += 1;
+        let mut gained: Vec<String> = gained.map(str::to_string).collect();
+        if gained.is_empty() {
+            gained.push(String::new()); // moved only
         }
-        if !any {
+        for s in gained {
             *self
                 .reached
-                .entry((form, motion.to_string(), String::new()))
+                .entry((form, motion.to_string(), s))
                 .or_insert(0) += 1;
         }
     }

@@ -34,15 +34,11 @@ impl Cones {
         let seeds: Vec<usize> = (0..count).map(|j| with[j * with.len() / count]).collect();
         let mut groups: Vec<Vec<u32>> = vec![Vec::new(); count];
         for &i in &with {
-            let v = row(i);
-            let mut best = (f32::NEG_INFINITY, 0);
-            for (j, &s) in seeds.iter().enumerate() {
-                let c = dot(row(s), v);
-                if c > best.0 {
-                    best = (c, j);
-                }
-            }
-            groups[best.1].push(i as u32);
+            // the first of the nearest seeds
+            let nearest = (seeds.iter().enumerate())
+                .map(|(j, &s)| (dot(row(s), row(i)), j))
+                .reduce(|best, next| if next.0 > best.0 { next } else { best });
+            groups[nearest.map_or(0, |n| n.1)].push(i as u32);
         }
         groups.retain(|g| !g.is_empty());
         let mut cones = Cones {

@@ -168,9 +168,8 @@ impl EmbeddingTable {
         let count = r.u32("header")? as usize;
         let word_len = r.u32("header")? as usize;
         if dims == 0 || dims > MAX_DIMS || count == 0 || count > MAX_WORDS {
-            return Err(bad(format!(
-                "embedding table header out of range ({count} words x {dims} dims)"
-            )));
+            let why = format!("embedding table header out of range ({count} words x {dims} dims)");
+            return Err(bad(why));
         }
         let blob = r.take(word_len, "word list")?;
         let text =
@@ -190,9 +189,8 @@ impl EmbeddingTable {
         let mut index = HashMap::with_capacity_and_hasher(count, Default::default());
         for (i, w) in words.iter().enumerate() {
             if w.is_empty() || index.insert(w.clone(), i as u32).is_some() {
-                return Err(bad(format!(
-                    "embedding word list has an empty or repeated word at {i}"
-                )));
+                let why = format!("embedding word list has an empty or repeated word at {i}");
+                return Err(bad(why));
             }
         }
         Ok(EmbeddingTable {
@@ -326,13 +324,8 @@ impl EmbeddingTable {
                 known.push(s.clone());
             }
         }
-        let vector = if total > 0.0 && norm(&sum) > 0.0 {
-            Some(sum)
-        } else {
-            None
-        };
         PhraseVector {
-            vector,
+            vector: (total > 0.0 && norm(&sum) > 0.0).then_some(sum),
             known,
             unknown,
         }

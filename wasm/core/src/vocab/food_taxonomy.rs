@@ -42,7 +42,7 @@ pub fn stem_key(phrase: &str) -> Vec<String> {
 }
 
 /// The project's food taxonomy: categories and their member names keyed by word stems.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct Taxonomy {
     pub categories: Vec<Category>,
     /// Stem key (words joined by a space) -> category index.
@@ -53,9 +53,7 @@ pub struct Taxonomy {
 
 impl Taxonomy {
     pub fn parse(text: &str) -> Taxonomy {
-        let mut categories: Vec<Category> = Vec::new();
-        let mut by_key = HashMap::default();
-        let mut members = Vec::new();
+        let mut t = Taxonomy::default();
         for line in data_lines(text) {
             let mut parts = line.split('\t');
             let (Some(name), Some(group), Some(list)) = (parts.next(), parts.next(), parts.next())
@@ -66,29 +64,25 @@ impl Taxonomy {
                 name: name.trim().to_string(),
                 group: group.trim().to_string(),
             };
-            let index = match categories.iter().position(|c| *c == cat) {
-                Some(i) => i,
-                None => {
-                    categories.push(cat);
-                    categories.len() - 1
-                }
-            };
+            let index = t.categories.iter().position(|c| *c == cat);
+            let index = index.unwrap_or_else(|| {
+                t.categories.push(cat);
+                t.categories.len() - 1
+            });
             for member in list.split(',').map(str::trim).filter(|m| !m.is_empty()) {
-                let key = stem_key(member).join(" ");
-                if key.is_empty() {
-                    continue;
-                }
-                // The first listing wins: a name belongs to one category.
-                if let std::collections::hash_map::Entry::Vacant(e) = by_key.entry(key) {
-                    e.insert(index);
-                    members.push((member.to_string(), index));
-                }
+                t.list(member, index);
             }
         }
-        Taxonomy {
-            categories,
-            by_key,
-            members,
+        t
+    }
+
+    /// Lists `member` in category `index`, unless its stem key is empty or listed already (the first
+    /// listing wins: a name belongs to one category).
+    fn list(&mut self, member: &str, index: usize) {
+        let key = stem_key(member).join(" ");
+        if !key.is_empty() && !self.by_key.contains_key(&key) {
+            self.by_key.insert(key, index);
+            self.members.push((member.to_string(), index));
         }
     }
 
@@ -105,14 +99,11 @@ impl Taxonomy {
             names.iter().map(|n| stem_key(n).join(" ")).collect();
         let mut out = Taxonomy {
             categories: self.categories.clone(),
-            by_key: HashMap::default(),
-            members: Vec::new(),
+            ..Taxonomy::default()
         };
         for (name, c) in &self.members {
-            let key = stem_key(name).join(" ");
-            if !drop.contains(&key) {
-                out.by_key.insert(key, *c);
-                out.members.push((name.clone(), *c));
+            if !drop.contains(&stem_key(name).join(" ")) {
+                out.list(name, *c);
             }
         }
         out

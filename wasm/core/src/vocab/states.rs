@@ -83,18 +83,15 @@ impl Category {
     /// How far along the one-way path of separation a category is (whole → trimmed → cut → finely cut →
     /// ground → transformed). `None` for states that say nothing about the food.
     fn rank(self) -> Option<u8> {
+        use Category::*;
         match self {
-            Category::Whole | Category::Preserved => Some(0),
-            Category::Trimmed => Some(1),
-            Category::Cut => Some(2),
-            Category::FinelyCut => Some(3),
-            Category::Ground => Some(4),
-            Category::Liquid
-            | Category::Mixed
-            | Category::Cooked
-            | Category::Shaped
-            | Category::Coated => Some(5),
-            Category::Other => None,
+            Whole | Preserved => Some(0),
+            Trimmed => Some(1),
+            Cut => Some(2),
+            FinelyCut => Some(3),
+            Ground => Some(4),
+            Liquid | Mixed | Cooked | Shaped | Coated => Some(5),
+            Other => None,
         }
     }
 
@@ -181,13 +178,10 @@ fn classify(state: &str) -> Category {
         return e.category;
     }
     // the last listed word decides ("finely chopped", "cooked and sliced")
-    let mut found = None;
-    for part in word.split([' ', '-', ',']) {
-        if let Some(e) = table().get(part) {
-            found = Some(e.category);
-        }
-    }
-    found.unwrap_or(Category::Other)
+    let last = word
+        .rsplit([' ', '-', ','])
+        .find_map(|part| table().get(part));
+    last.map_or(Category::Other, |e| e.category)
 }
 
 /// The category a node's food states put it in (the furthest along; whole when it has none).
@@ -240,30 +234,17 @@ pub fn done_cooking(state: &str) -> bool {
 /// state, "softened" beside "melted", the piece it was bought as ("whole", "block", "clove") once it is
 /// cut, what was trimmed off ("peeled") once it is grated, ground, juiced or mixed.
 fn undone(node: &ObjectNode, s: &str) -> bool {
+    use Category::*;
     let any = |f: &dyn Fn(&str) -> bool| node.physical_states().any(f);
     let un = s.strip_prefix("un").is_some_and(|done| any(&|t| t == done));
     un || match s {
-        "uncooked" | "raw" => any(&|t| category(t) == Category::Cooked),
+        "uncooked" | "raw" => any(&|t| category(t) == Cooked),
         // canned beans "cooked" are not also "partly cooked" by the pot they sit in
-        "partly cooked" => any(&|t| t != s && category(t) == Category::Cooked),
+        "partly cooked" => any(&|t| t != s && category(t) == Cooked),
         "softened" => any(&|t| t == "melted"),
         _ => match category(s) {
-            Category::Whole => any(&|t| {
-                matches!(
-                    category(t),
-                    Category::Cut
-                        | Category::FinelyCut
-                        | Category::Ground
-                        | Category::Liquid
-                        | Category::Mixed
-                )
-            }),
-            Category::Trimmed => any(&|t| {
-                matches!(
-                    category(t),
-                    Category::FinelyCut | Category::Ground | Category::Liquid | Category::Mixed
-                )
-            }),
+            Whole => any(&|t| matches!(category(t), Cut | FinelyCut | Ground | Liquid | Mixed)),
+            Trimmed => any(&|t| matches!(category(t), FinelyCut | Ground | Liquid | Mixed)),
             _ => false,
         },
     }

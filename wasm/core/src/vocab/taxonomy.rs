@@ -101,18 +101,13 @@ pub fn dish_class_of(text: &str) -> Option<u32> {
         .map(crate::foon::label::singular)
         .collect();
     let joined = format!(" {} ", words.join(" "));
-    let mut best: Option<(usize, usize, u32)> = None; // (end position, keyword length, class)
-    for c in classes {
-        for k in &c.keywords {
-            if let Some(at) = joined.rfind(&format!(" {k} ")) {
-                let candidate = (at + k.len(), k.len(), c.index);
-                if best.is_none_or(|b| (candidate.0, candidate.1) > (b.0, b.1)) {
-                    best = Some(candidate);
-                }
-            }
-        }
-    }
-    best.map(|b| b.2)
+    // (end position, keyword length) of a keyword found in the title; ties to the first class
+    let found = |k: &String| Some((joined.rfind(&format!(" {k} "))? + k.len(), k.len()));
+    (classes.iter())
+        .flat_map(|c| c.keywords.iter().map(move |k| (c.index, k)))
+        .filter_map(|(c, k)| Some((found(k)?, c)))
+        .reduce(|best, next| if next.0 > best.0 { next } else { best })
+        .map(|(_, c)| c)
 }
 
 /// Labels that are utensils, containers or appliances rather than ingredients (Fx hashing: the planner

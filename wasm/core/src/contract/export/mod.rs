@@ -35,12 +35,7 @@ pub fn foon_text(plan: &Plan) -> String {
         plan.goal.label,
         plan.goal.subgraph
     );
-    let goal = PlanNode {
-        label: plan.goal.label.clone(),
-        states: plan.goal.states.clone(),
-        ingredients: Vec::new(),
-        container: None,
-    };
+    let goal = &plan.goal;
     let is_goal = |n: &PlanNode| n.label == goal.label && n.states == goal.states;
     for (i, u) in plan.units.iter().enumerate() {
         out.push_str("//\n");

@@ -125,7 +125,7 @@ struct Step<'p> {
     used_up: Vec<usize>,
 }
 
-pub(super) fn world(plan: &Plan, goal_node: &PlanNode) -> World {
+pub(super) fn world(plan: &Plan) -> World {
     let mut objects: Vec<Object> = Vec::new();
     let mut kitchen: Vec<(usize, &PlanNode)> = Vec::new();
     let mut steps: Vec<Step> = Vec::with_capacity(plan.units.len());
@@ -139,7 +139,7 @@ pub(super) fn world(plan: &Plan, goal_node: &PlanNode) -> World {
         .iter()
         .flat_map(|&(k, n)| states.facts(k, n))
         .collect();
-    let goal = states.goal(plan, goal_node);
+    let goal = states.goal(plan);
     World {
         objects: objects.into_iter().map(|o| o.name).collect(),
         actions,
@@ -211,9 +211,9 @@ impl<'w, 'p> States<'w, 'p> {
 
     /// The goal node's object exactly in the goal node, and every object a unit touched as the plan
     /// leaves it (a unit is in the plan for a reason).
-    fn goal(&self, plan: &Plan, goal_node: &PlanNode) -> Action {
+    fn goal(&self, plan: &Plan) -> Action {
         let mut goal = Action::default();
-        if let Some((k, n)) = goal_object(self.objects, plan, goal_node) {
+        if let Some((k, n)) = goal_object(self.objects, plan) {
             goal.require(self.exactly(k, Some(n)));
         }
         for (k, o) in self.objects.iter().enumerate().filter(|(_, o)| o.since > 0) {
@@ -239,24 +239,19 @@ fn follow<'p>(
             .filter(|&k| objects[k].node.is_some_and(|m| same(m, n)))
             .filter(free)
             .max_by_key(|&k| objects[k].since);
-        let k = match now {
-            Some(k) => k,
-            // else a unit made this node, but its object has moved on since (FOON takes a node once made
-            // as there for every unit that needs it): that unit makes a second object in the node
-            None => match before.iter().rposition(|s| makes(s, n)) {
-                Some(p) => {
-                    let k = new_object(objects, &n.label, Some(n), p + 1);
-                    before[p].outputs.push((k, n));
-                    k
-                }
-                // else it comes from the kitchen
-                None => {
-                    let k = new_object(objects, &n.label, Some(n), 0);
-                    kitchen.push((k, n));
-                    k
-                }
-            },
-        };
+        if let Some(k) = now {
+            inputs.push((k, n));
+            continue;
+        }
+        // else a unit made this node, but its object has moved on since (FOON takes a node once made
+        // as there for every unit that needs it): that unit makes a second object in the node; else it
+        // comes from the kitchen
+        let maker = before.iter().rposition(|s| makes(s, n));
+        let k = new_object(objects, &n.label, Some(n), maker.map_or(0, |p| p + 1));
+        match maker {
+            Some(p) => before[p].outputs.push((k, n)),
+            None => kitchen.push((k, n)),
+        }
         inputs.push((k, n));
     }
     let mut continued = vec![false; inputs.len()];
@@ -304,12 +299,7 @@ fn follow<'p>(
 
 /// Whether two nodes are one: the same label in the same set of states.
 fn same(a: &PlanNode, b: &PlanNode) -> bool {
-    fn sorted(n: &PlanNode) -> Vec<&str> {
-        let mut states: Vec<&str> = n.states.iter().map(|s| s.as_str()).collect();
-        states.sort_unstable();
-        states
-    }
-    a.label == b.label && sorted(a) == sorted(b)
+    a.is(&b.label, &b.states)
 }
 
 /// Whether a step makes node `n` (not only passes it on).
@@ -342,17 +332,14 @@ fn new_object<'p>(
 }
 
 /// The object in the goal node at the end, else the last unit's output of the goal's label.
-fn goal_object<'p>(
-    objects: &[Object<'p>],
-    plan: &'p Plan,
-    goal_node: &PlanNode,
-) -> Option<(usize, &'p PlanNode)> {
+fn goal_object<'p>(objects: &[Object<'p>], plan: &'p Plan) -> Option<(usize, &'p PlanNode)> {
+    let goal = &plan.goal;
     let last = plan.units.last()?;
     let output = last
         .outputs
         .iter()
-        .find(|o| same(o, goal_node))
-        .or_else(|| last.outputs.iter().find(|o| o.label == goal_node.label))?;
+        .find(|o| o.is(&goal.label, &goal.states))
+        .or_else(|| last.outputs.iter().find(|o| o.label == goal.label))?;
     let k = (0..objects.len()).find(|&k| objects[k].node.is_some_and(|m| same(m, output)))?;
     Some((k, &**output))
 }

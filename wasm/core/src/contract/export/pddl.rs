@@ -4,7 +4,7 @@
 //! exactly the plan's units (`tests/unit/pddl-planner.test.ts`).
 
 use super::objects::{ident, world, Action, Fact};
-use crate::contract::plan::{Plan, PlanNode};
+use crate::contract::plan::Plan;
 use serde::Serialize;
 use std::collections::BTreeSet;
 use std::fmt::Write;
@@ -22,13 +22,7 @@ pub fn action_name(plan: &Plan, i: usize) -> String {
 }
 
 pub fn pddl(plan: &Plan) -> Pddl {
-    let goal_node = PlanNode {
-        label: plan.goal.label.clone(),
-        states: plan.goal.states.clone(),
-        ingredients: Vec::new(),
-        container: None,
-    };
-    let world = world(plan, &goal_node);
+    let world = world(plan);
     let name = ident(plan.query.id.as_deref().unwrap_or(&plan.goal.label));
     let mut domain = String::new();
     let _ = writeln!(

@@ -44,10 +44,7 @@ pub(super) fn search(space: &Space, root: NodeId, start: Tree) -> Found {
         chosen: HashMap::default(),
         uses: HashMap::default(),
         made: HashMap::default(),
-        value: Value {
-            weight: 0.0,
-            units: 0,
-        },
+        value: Value::default(),
         best: (value, start),
     };
     let exact = search.run();
@@ -62,10 +59,7 @@ fn value_of(space: &Space, tree: &Tree) -> Value {
     let mut units: Vec<UnitId> = tree.chosen.values().copied().collect();
     units.sort_unstable();
     units.dedup();
-    Value {
-        weight: units.iter().map(|u| space.weight[u]).sum(),
-        units: units.len() as u32,
-    }
+    Value::of(&units, |u| space.weight[&u])
 }
 
 /// Weights summed in different orders may differ in their last bits.

@@ -81,14 +81,9 @@ pub(crate) fn build(p: Parts) -> Plan {
         }
         done.push(&o.object);
         // "pepper — ground" is a spice, whatever the tree's other peppers are
-        let food = p
-            .readings
-            .get(o.object.as_str())
-            .copied()
-            .unwrap_or(&o.object);
-        if let Some(line) = progress_line(order, &uses, (&o.object, food), &mut relations) {
-            progress_lines.push(line);
-        }
+        let food = p.readings.get(o.object.as_str()).map_or(&*o.object, |r| *r);
+        let line = progress_line(order, &uses, (&o.object, food), &mut relations);
+        progress_lines.extend(line);
     }
     let kb_goal = &p.kb.nodes[p.goal.node];
     Plan {

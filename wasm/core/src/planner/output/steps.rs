@@ -213,6 +213,13 @@ impl<'t> Said<'t> {
     fn tool(&self, x: SlotId) -> bool {
         self.utensil(x) && self.node(x).states.is_empty()
     }
+
+    /// The labels of the inputs `which` accepts (by slot and whether it moves), into `objects`.
+    fn push_inputs(&self, objects: &mut Vec<&'t str>, which: impl Fn(SlotId, bool) -> bool) {
+        for &(x, _) in self.unit.inputs.iter().filter(|&&(x, m)| which(x, m)) {
+            push(objects, &self.node(x).label);
+        }
+    }
 }
 
 fn push<'n>(objects: &mut Vec<&'n str>, l: &'n str) {
@@ -265,17 +272,9 @@ impl<'t> Said<'t> {
         let unit = self.unit;
         let node = |x: SlotId| self.node(x);
         let utensil = |x: SlotId| self.utensil(x);
-        for &(x, m) in &unit.inputs {
-            if m && !utensil(x) {
-                push(objects, &node(x).label);
-            }
-        }
+        self.push_inputs(objects, |x, m| m && !utensil(x));
         if objects.is_empty() {
-            for &(x, _) in &unit.inputs {
-                if !utensil(x) {
-                    push(objects, &node(x).label);
-                }
-            }
+            self.push_inputs(objects, |x, _| !utensil(x));
         }
         let MotionKind {
             puts,
@@ -312,19 +311,11 @@ impl<'t> Said<'t> {
         }
         // what moved, the tools it moved with aside ("Cut open the packet with the scissors")
         if objects.is_empty() {
-            for &(x, m) in &unit.inputs {
-                if m && !self.tool(x) {
-                    push(objects, &node(x).label);
-                    found.with_tools = true;
-                }
-            }
+            self.push_inputs(objects, |x, m| m && !self.tool(x));
+            found.with_tools = !objects.is_empty();
         }
         if objects.is_empty() {
-            for &(x, m) in &unit.inputs {
-                if m {
-                    push(objects, &node(x).label);
-                }
-            }
+            self.push_inputs(objects, |_, m| m);
         }
         if objects.is_empty() {
             if let Some(&(x, _)) = unit.inputs.first() {
