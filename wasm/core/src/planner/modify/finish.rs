@@ -137,19 +137,9 @@ pub(super) fn trim_first<'kb>(
             let Some((at, u)) = trim_point(tree, &order, o, x, trim) else {
                 continue;
             };
-            let node = &tree.slots[at].node;
-            let mut states: Vec<State> = node
-                .states
-                .iter()
-                .filter(|st| st.arg.is_some() || category(&st.name) != Category::Whole)
-                .cloned()
-                .collect();
-            states.push(State::plain(trim.state));
-            let trimmed = ObjectNode::new(node.label.clone(), states);
-            let made = add_state_unit(ctx, tree, at, trimmed, &motion);
-            for input in tree.units[u].inputs.iter_mut().filter(|i| i.0 == at) {
-                input.0 = made;
-            }
+            let whole = |st: &str| category(st) == Category::Whole;
+            let trimmed = with_state(&tree.slots[at].node, whole, trim.state);
+            let made = add_state_unit_before(ctx, tree, (at, u), trimmed, &motion);
             // what it becomes no longer has what was taken off ("halved, unpeeled")
             let order = tree.order();
             for (y, _) in own_chain(tree, &order, o, made).into_iter().skip(1) {
@@ -452,14 +442,7 @@ pub(super) fn finish_in_pot<'kb>(
 
 /// `node` cooked through: its cooked states ("partly cooked", "hot") give way to "cooked".
 fn cooked(node: &ObjectNode) -> ObjectNode {
-    let mut states: Vec<State> = node
-        .states
-        .iter()
-        .filter(|st| st.arg.is_some() || category(&st.name) != Category::Cooked)
-        .cloned()
-        .collect();
-    states.push(State::plain("cooked"));
-    ObjectNode::new(node.label.clone(), states)
+    with_state(node, |st| category(st) == Category::Cooked, "cooked")
 }
 
 /// A food that must be cooked on its own (a potato, a pumpkin) and that its chain mashes raw is cooked
@@ -488,10 +471,7 @@ pub(super) fn cook_before_mash<'kb>(
         .ok()
         .filter(|m| foods::cooks(m))
         .unwrap_or_else(|| "boil".into());
-    let made = add_state_unit(ctx, tree, at, cooked(&tree.slots[at].node), &motion);
-    for input in tree.units[u].inputs.iter_mut().filter(|i| i.0 == at) {
-        input.0 = made;
-    }
+    add_state_unit_before(ctx, tree, (at, u), cooked(&tree.slots[at].node), &motion);
     Some(format!("'{motion}' before it is mashed, as a cook would"))
 }
 

@@ -37,10 +37,15 @@ pub(super) fn downstream(
 
 /// Replaces food states in a node (`old` → `new`; when `old` is empty, `new` is added).
 pub(super) fn replace_states(node: &ObjectNode, old: &[String], new: &str) -> ObjectNode {
+    with_state(node, |st| old.iter().any(|o| st == o.as_str()), new)
+}
+
+/// `node` in the state `new`, without the plain states `gone` picks (its places and lists stay).
+pub(super) fn with_state(node: &ObjectNode, gone: impl Fn(&str) -> bool, new: &str) -> ObjectNode {
     let mut states: Vec<State> = node
         .states
         .iter()
-        .filter(|st| !(st.arg.is_none() && old.iter().any(|o| st.name == o.as_str())))
+        .filter(|st| st.arg.is_some() || !gone(&st.name))
         .cloned()
         .collect();
     states.push(State::plain(new));
@@ -405,6 +410,21 @@ pub(super) fn add_state_unit<'kb>(
 ) -> SlotId {
     let made = tree.add_slot(Cow::Owned(made));
     add_motion_unit(ctx, tree, from, motion, made);
+    made
+}
+
+/// `add_state_unit` between slot `at` and unit `u`, which takes the new slot instead.
+pub(super) fn add_state_unit_before<'kb>(
+    ctx: &Context<'kb>,
+    tree: &mut Tree<'kb>,
+    (at, u): (SlotId, TUnitId),
+    made: ObjectNode,
+    motion: &str,
+) -> SlotId {
+    let made = add_state_unit(ctx, tree, at, made, motion);
+    for input in tree.units[u].inputs.iter_mut().filter(|i| i.0 == at) {
+        input.0 = made;
+    }
     made
 }
 
