@@ -564,6 +564,80 @@ fn a_raw_potato_is_cooked_before_it_is_mashed() {
     assert_eq!(motions[1], "mash");
 }
 
+/// An omelette slid out of its pan, which FOON then has "empty" as it was before it was heated; elsewhere
+/// cream is poured from its carton.
+const SLID_OMELETTE: &str = "//
+O\tcooking pan\t0
+S\tempty
+M\theat\t<Assumed>
+O\tcooking pan\t0
+S\thot
+//
+O\tegg\t1
+S\tbeaten
+S\tin\t[bowl]
+O\tcooking pan\t0
+S\thot
+M\tpour\t<Assumed>
+O\tcooking pan\t0
+S\tcontains\t{egg}
+S\thot
+O\tegg\t1
+S\tbeaten
+S\tin\t[cooking pan]
+//
+O\tegg\t1
+S\tbeaten
+S\tin\t[cooking pan]
+M\tcook\t<Assumed>
+O\tomelette\t1
+S\tcontains\t{egg}
+S\tcooked
+S\tin\t[cooking pan]
+//
+O\tomelette\t1
+S\tcontains\t{egg}
+S\tcooked
+S\tin\t[cooking pan]
+O\tcooking pan\t0
+S\tcontains\t{egg}
+S\thot
+O\tplate\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tomelette\t1\t23
+S\tcontains\t{egg}
+S\tcooked
+S\ton\t[plate]
+O\tcooking pan\t0
+S\tempty
+//
+O\tcream\t1
+S\tcreamy
+S\tin\t[carton]
+O\tbowl\t0
+S\tempty
+M\tpour\t<Assumed>
+O\tbowl\t0
+S\tcontains\t{cream}
+//
+";
+
+#[test]
+fn cream_joins_the_eggs_before_they_cook_not_the_plated_omelette() {
+    let asked = [("egg", "beaten"), ("cream", "creamy")];
+    let p = plan_of(
+        &[("omelette.txt", SLID_OMELETTE)],
+        &ExactMatch,
+        &query("omelette", &asked),
+    );
+    assert!(
+        line_motions(&p, "cream").contains(&"cook"),
+        "{:#?}",
+        p.progress_lines
+    );
+}
+
 #[test]
 fn a_powder_squeezed_is_cautioned() {
     let squeezed = "//

@@ -137,9 +137,16 @@ pub(super) fn cooks_what_joins(tree: &Tree, cooked: &[bool], u: TUnitId, food: &
         })
         .collect();
     let cooked_later = |x: &SlotId| cooked[*x];
+    // not a vessel the unit empties (the pan the eggs are slid out of, FOON's node of it before it was
+    // heated): what joins there goes where the food goes
+    let takes_in = |x: &SlotId| !tree.slots[*x].utensil || tree.slots[*x].node.holds_something();
     unit_cooks(tree, u, food)
         || if filled.is_empty() {
-            unit.outputs.iter().map(|o| o.0).any(|x| cooked_later(&x))
+            unit.outputs
+                .iter()
+                .map(|o| o.0)
+                .filter(takes_in)
+                .any(|x| cooked_later(&x))
         } else {
             filled.iter().any(cooked_later)
         }
