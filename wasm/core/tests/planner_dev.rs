@@ -15,7 +15,7 @@ use std::collections::BTreeMap;
 
 #[test]
 fn every_dev_query_plans_soundly_with_exact_matching() {
-    check_dev_queries(&ExactMatch, "exact", ((0, 4, 0), 6, 0));
+    check_dev_queries(&ExactMatch, "exact", ((0, 6, 0), 6, 0));
 }
 
 #[test]

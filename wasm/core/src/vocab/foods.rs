@@ -662,6 +662,9 @@ mod tests {
         assert!(greases("cooking spray") && !greases("olive oil"));
         assert!(joins_served("jelly") && !joins_served("cherry pie filling"));
         assert!(joins_before_heat("thyme") && joins_before_heat("cumin"));
+        // vegetables a cooked dish cooks (the ramen's cauliflower into the broth), not the raw cucumber
+        assert!(joins_before_heat("cauliflower") && joins_before_heat("mushroom"));
+        assert!(joins_served("cucumber") && !joins_served("zucchini"));
         assert!(joins_before_heat("dried basil") && !joins_before_heat("basil"));
         assert!(!cooked_first("chicken breast") && !cooked_first("ground beef"));
         assert!(shows_cooking("carrot") && shows_cooking("flour") && shows_cooking("rice"));
