@@ -325,7 +325,8 @@ fn one_object_in_two_states_has_a_record_for_each() {
         .map(|i| (i.object.as_str(), i.state.as_str(), i.case))
         .collect();
     assert_eq!(records, outcomes);
-    // the first brings the branch from FOON; the second is settled on it
+    // the first brings the branch from FOON (a cucumber named only "whole" comes sliced, as a cook
+    // would: food_care.tsv); the second is settled on it
     let choices: Vec<(&str, Option<&str>)> = t
         .ingredients
         .iter()
@@ -337,7 +338,7 @@ fn one_object_in_two_states_has_a_record_for_each() {
         .collect();
     assert_eq!(
         choices,
-        [("whole", Some("cucumber (whole)")), ("sliced", None)]
+        [("whole", Some("cucumber (sliced)")), ("sliced", None)]
     );
 }
 

@@ -2719,6 +2719,16 @@ fn a_food_read_as_a_product_of_its_state_is_bought_so_not_made_from_its_substitu
         .find(|l| l.ingredient == "coconut")
         .unwrap();
     assert_eq!(line.state[0].physical_state, "shredded");
+    // "flakes" reads so too, by a state word of the same kind as the product's
+    let p = plan_of(
+        &[
+            ("salad.txt", LETTUCE_SALAD),
+            ("foods.txt", RAISIN_AND_SHREDS),
+        ],
+        &DriedFruit,
+        &query("salad", &[("lettuce", "chopped"), ("coconut", "flakes")]),
+    );
+    assert_eq!(line_motions(&p, "coconut"), ["mix"], "{:#?}", p.units);
 }
 
 /// A bread (class 0): flour from one packet sprinkled on a board and poured into a bowl, where it is

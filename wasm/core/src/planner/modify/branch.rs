@@ -244,15 +244,19 @@ pub(super) fn starting_utensils(tree: &Tree) -> HashMap<NodeId, SlotId> {
     slot_of
 }
 
-/// Whether the asked food is read as a product its asked state names (coconut "shredded": shredded
-/// coconut; beef "ground": ground beef), which a cook buys so rather than makes.
+/// Whether the asked food is read as a product its asked state names, in that word or one of its state
+/// category (coconut "shredded" or "flakes": shredded coconut; beef "ground": ground beef; garlic
+/// "ground": garlic powder), which a cook buys so rather than makes; not pepper "diced", a bell pepper.
 fn bought_as_read(ctx: &Context, o: &str, s: &str) -> bool {
     let Some(r) = ctx.readings.get(o) else {
         return false;
     };
-    let words = |t: &'static str| t.split(' ');
+    let names = |w: &str, x: &str| {
+        let c = category(w);
+        x == w || (category(x) == c && !matches!(c, Category::Other | Category::Whole))
+    };
     s.split([' ', ','])
-        .any(|w| !w.is_empty() && words(r).any(|x| x == w))
+        .any(|w| !w.is_empty() && r.split(' ').any(|x| names(w, x)))
 }
 
 /// The rest of a case-4 branch whose last node is `last`: a unit bringing it to the state `s` when it is
