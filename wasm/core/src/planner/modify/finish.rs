@@ -412,10 +412,7 @@ pub(super) fn finish_in_pot<'kb>(
     else {
         return;
     };
-    let motion = state_motion(ctx, &dish, &dish, "cooked")
-        .ok()
-        .filter(|m| foods::cooks(m))
-        .unwrap_or_else(|| "cook".into());
+    let motion = cooking_motion(ctx, (&dish, &dish), "cook");
     let made = add_state_unit(ctx, tree, at, cooked(&tree.slots[at].node), &motion);
     // the units that took the dish from `at` take it cooked (not the new unit, the last one)
     let new_unit = tree.units.len() - 1;
@@ -438,6 +435,15 @@ pub(super) fn finish_in_pot<'kb>(
         "'{dish}' is cooked ('{motion}') before it leaves the pot: the reference task tree leaves it \
          partly cooked there"
     ));
+}
+
+/// FOON's usual motion to "cooked" for `o` (`eq` in FOON) when it cooks, else `fallback`: a knowledge base
+/// whose only unit to "cooked" pours does not make pouring a way to cook.
+fn cooking_motion(ctx: &Context, (o, eq): (&str, &str), fallback: &str) -> String {
+    state_motion(ctx, o, eq, "cooked")
+        .ok()
+        .filter(|m| foods::cooks(m))
+        .unwrap_or_else(|| fallback.into())
 }
 
 /// `node` cooked through: its cooked states ("partly cooked", "hot") give way to "cooked".
@@ -467,10 +473,7 @@ pub(super) fn cook_before_mash<'kb>(
         .find(|&(x, u)| {
             raw(x) && foods::motion_words(&tree.units[u].motion).any(|w| w == "mash")
         })?;
-    let motion = state_motion(ctx, o, eq, "cooked")
-        .ok()
-        .filter(|m| foods::cooks(m))
-        .unwrap_or_else(|| "boil".into());
+    let motion = cooking_motion(ctx, (o, eq), "boil");
     add_state_unit_before(ctx, tree, (at, u), cooked(&tree.slots[at].node), &motion);
     Some(format!("'{motion}' before it is mashed, as a cook would"))
 }

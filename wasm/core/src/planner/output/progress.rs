@@ -372,13 +372,15 @@ impl<'t> Walker<'_, 't> {
             let makes_dish = unit.outputs.iter().any(|o| o.0 == tree.goal);
             // a piece nothing uses again beside a food made that lists it (the lemon grated beside its
             // zest, the lime juice poured into the pot beside the rice it is in): the line goes on in that
-            let goes_into_food = unit.outputs.iter().any(|o| {
-                let slot = &tree.slots[o.0];
-                !slot.utensil && slot.node.label != label && names_in_a_list(&slot.node, label)
-            });
+            let goes_into_food = || {
+                unit.outputs.iter().any(|o| {
+                    let slot = &tree.slots[o.0];
+                    !slot.utensil && slot.node.label != label && names_in_a_list(&slot.node, label)
+                })
+            };
             let out = pieces()
                 .find(|&o| self.uses.first_use[o] != usize::MAX)
-                .or_else(|| pieces().next().filter(|_| !goes_into_food))
+                .or_else(|| pieces().next().filter(|_| !goes_into_food()))
                 .filter(|_| !makes_dish);
             (pos, u, out)
         })
