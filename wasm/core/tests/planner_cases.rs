@@ -2066,6 +2066,20 @@ S\tin\t[pot]
 //
 ";
 
+/// Elsewhere in FOON: black pepper sprinkled from its shaker into a bowl.
+const BLACK_PEPPER: &str = "//
+O\tblack pepper\t1
+S\tground
+S\tin\t[shaker]
+O\tbowl\t0
+S\tempty
+M\tsprinkle\t<Assumed>
+O\tblack pepper\t1
+S\tground
+S\tin\t[bowl]
+//
+";
+
 #[test]
 fn the_ingredient_a_dish_is_named_after_is_pruned_when_not_asked_for_and_the_dish_stays() {
     let files = [("black_beans.txt", BLACK_BEANS)];
@@ -2074,6 +2088,15 @@ fn the_ingredient_a_dish_is_named_after_is_pruned_when_not_asked_for_and_the_dis
     // a soup without beans is not called after them
     assert_eq!(p.goal.label, "soup");
     assert_eq!(p.removed, ["black bean"]);
+    // nor is it when black pepper seasons it ("black" names no food of the dish)
+    let peppered = query("soup", &[("onion", "chopped"), ("black pepper", "ground")]);
+    let with_pepper = [
+        ("black_beans.txt", BLACK_BEANS),
+        ("pepper.txt", BLACK_PEPPER),
+    ];
+    let seasoned = plan_of(&with_pepper, &SIM, &peppered);
+    assert_eq!(seasoned.removed, ["black bean"]);
+    assert_eq!(seasoned.goal.label, "soup");
     // the dish is cooked from the onion alone: no bean is poured, none goes into the pot
     assert_eq!(
         units(&p),

@@ -3457,3 +3457,110 @@ fn a_banana_joins_a_drink_without_a_blender_blended_not_in_pieces() {
     );
     assert!(line_states(&p, "banana").contains(&"blended"));
 }
+
+/// Elsewhere in FOON: a thyme sprig laid on a board.
+const THYME_SPRIG: &str = "//
+O\tthyme\t1
+S\tsprig
+O\tcutting board\t0
+S\tempty
+M\tpick-and-place\t<Assumed>
+O\tthyme\t1
+S\tsprig
+S\ton\t[cutting board]
+//
+";
+
+/// "dried thyme" is like thyme; nothing else is alike.
+struct DriedHerb;
+
+impl foon_core::similarity::Similarity for DriedHerb {
+    fn similarity(&self, a: &str, b: &str) -> f32 {
+        match (a, b) {
+            _ if a == b => 1.0,
+            ("dried thyme", "thyme") | ("thyme", "dried thyme") => 0.9,
+            _ => 0.0,
+        }
+    }
+}
+
+#[test]
+fn a_herb_read_as_dried_is_bought_crumbled_not_a_fresh_sprig() {
+    // thyme "ground" is dried thyme from a jar: no woody sprig goes into the salad
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("foods.txt", THYME_SPRIG)],
+        &DriedHerb,
+        &query("salad", &[("lettuce", "chopped"), ("thyme", "ground")]),
+    );
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "thyme")
+        .unwrap();
+    assert_eq!(line.state[0].physical_state, "ground", "{line:#?}");
+    assert!(
+        line.state
+            .iter()
+            .all(|s| !s.physical_state.contains("sprig")),
+        "{line:#?}"
+    );
+}
+
+/// Elsewhere in FOON: a bell pepper diced, black pepper ground from its shaker into a bowl.
+const TWO_PEPPERS: &str = "//
+O\tbell pepper\t1
+S\twhole
+O\tknife\t1
+S\tclean
+M\tdice\t<Assumed>
+O\tbell pepper\t1
+S\tdiced
+//
+O\tblack pepper\t1
+S\tground
+S\tin\t[shaker]
+O\tbowl\t0
+S\tempty
+M\tsprinkle\t<Assumed>
+O\tblack pepper\t1
+S\tground
+S\tin\t[bowl]
+//
+";
+
+#[test]
+fn a_name_asked_as_two_foods_plans_both() {
+    // "pepper" diced is a bell pepper, "pepper" ground black pepper: two foods, two lines
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("foods.txt", TWO_PEPPERS)],
+        &ExactMatch,
+        &query(
+            "salad",
+            &[
+                ("lettuce", "chopped"),
+                ("pepper", "diced"),
+                ("pepper", "ground"),
+            ],
+        ),
+    );
+    let line = |name: &str| {
+        p.progress_lines
+            .iter()
+            .find(|l| l.ingredient == name)
+            .unwrap_or_else(|| panic!("no line for {name}: {:#?}", p.progress_lines))
+    };
+    let pepper = line("pepper");
+    assert!(
+        pepper.state.iter().any(|s| s.physical_state == "diced"),
+        "{pepper:#?}"
+    );
+    assert!(pepper.state.iter().all(|s| s.physical_state != "ground"));
+    let black = line("black pepper");
+    assert_eq!(black.state[0].physical_state, "ground", "{black:#?}");
+    assert!(black.end_product.contains("salad"), "{black:#?}");
+    assert!(
+        p.notes.iter().any(|n| n.contains("more than one food")),
+        "{:?}",
+        p.notes
+    );
+}

@@ -33,6 +33,7 @@ use crate::foon::model::NodeId;
 use crate::limits;
 use crate::robot::{robot_view, Motions};
 use crate::similarity::Similarity;
+use crate::vocab::foods;
 use crate::vocab::taxonomy::{dish_class_name, dish_class_of};
 use rustc_hash::FxHashMap as HashMap;
 use std::collections::BTreeMap;
@@ -322,6 +323,7 @@ fn prepare_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
             None => listed.push((item, 1)),
         }
     }
+    name_each_food(&mut listed, notes);
     // one note per ingredient listed more than once, however often
     for (item, n) in listed.iter().filter(|(_, n)| *n > 1) {
         let (object, state) = (&item.object, &item.state);
@@ -334,6 +336,29 @@ fn prepare_query(q: &Query, notes: &mut Vec<String>) -> Result<Query> {
         dish_type: normalize_word(&q.dish_type),
         ingredients: listed.into_iter().map(|(item, _)| item).collect(),
     })
+}
+
+/// A name asked in states read as different foods (pepper "diced", a bell pepper, and "ground", black
+/// pepper) names two foods, and each gets its own line: the plain food (read as nothing else) keeps the
+/// name, else its first entry does; every other entry takes the name of the food its state reads as.
+fn name_each_food(listed: &mut [(QueryIngredient, usize)], notes: &mut Vec<String>) {
+    let read = |i: &QueryIngredient| foods::reading(&i.object, &i.state);
+    for k in 0..listed.len() {
+        let item = &listed[k].0;
+        let Some(food) = read(item) else { continue };
+        let same_name = || listed.iter().filter(|(i, _)| i.object == item.object);
+        let keeper = same_name()
+            .find(|(i, _)| read(i).is_none())
+            .or_else(|| same_name().next())
+            .map(|(i, _)| read(i));
+        if keeper.is_some_and(|r| r != Some(food)) {
+            notes.push(format!(
+                "'{}' is asked as more than one food: '{}' ({}) is planned as '{food}'",
+                item.object, item.object, item.state
+            ));
+            listed[k].0.object = food.to_string();
+        }
+    }
 }
 
 /// Characters a FOON label or state cannot hold.

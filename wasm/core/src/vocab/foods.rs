@@ -9,7 +9,7 @@
 use crate::contract::plan::Query;
 use crate::foon::label::{normalize_label, normalize_word};
 use crate::vocab::food_taxonomy::Taxonomy;
-use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use rustc_hash::FxHashMap as HashMap;
 use std::sync::OnceLock;
 
 const FORMS_TSV: &str = include_str!("../../data/food_forms.tsv");
@@ -472,21 +472,13 @@ pub fn reading(food: &str, state: &str) -> Option<&'static str> {
         .map(String::as_str)
 }
 
-/// The food each asked name stands for where its state says (`foods::reading`). A name asked twice in
-/// states read as different foods (pepper diced and ground) has no one reading: its single line is
-/// planned for whichever entry settles it.
+/// The food each asked name stands for where its state says (`foods::reading`). A planned query names
+/// one food by one name (a name asked as two foods is split before planning), so its entries agree.
 pub fn query_readings(query: &Query) -> HashMap<String, &'static str> {
-    let mut out: HashMap<String, Option<&'static str>> = HashMap::default();
-    let mut both = HashSet::default();
-    for ing in &query.ingredients {
-        let r = reading(&ing.object, &ing.state);
-        if *out.entry(ing.object.clone()).or_insert(r) != r {
-            both.insert(ing.object.as_str());
-        }
-    }
-    out.into_iter()
-        .filter(|(o, _)| !both.contains(o.as_str()))
-        .filter_map(|(o, r)| Some((o, r?)))
+    query
+        .ingredients
+        .iter()
+        .filter_map(|ing| Some((ing.object.clone(), reading(&ing.object, &ing.state)?)))
         .collect()
 }
 
@@ -730,11 +722,10 @@ mod tests {
     }
 
     #[test]
-    fn a_query_reads_its_names_by_their_states_not_a_name_asked_as_two_foods() {
+    fn a_query_reads_its_names_by_their_states() {
         let query: Query = serde_json::from_str(
             r#"{"type": "soup", "ingredients": [{"object": "basil", "state": "dried"},
-               {"object": "coriander", "state": "leaves"}, {"object": "pepper", "state": "ground"},
-               {"object": "pepper", "state": "diced"}, {"object": "onion", "state": "chopped"}]}"#,
+               {"object": "coriander", "state": "leaves"}, {"object": "onion", "state": "chopped"}]}"#,
         )
         .unwrap();
         let r = query_readings(&query);
@@ -742,8 +733,7 @@ mod tests {
             (r.get("basil"), r.get("coriander")),
             (Some(&"dried basil"), Some(&"cilantro"))
         );
-        // pepper ground and diced are two foods: one line cannot be read as both
-        assert_eq!((r.get("pepper"), r.get("onion")), (None, None));
+        assert_eq!(r.get("onion"), None);
         let twice: Query = serde_json::from_str(
             r#"{"type": "soup", "ingredients": [{"object": "pepper", "state": "ground"},
                {"object": "pepper", "state": "cracked"}]}"#,
@@ -766,6 +756,8 @@ mod tests {
         assert_eq!(reading("lemon", "juice"), Some("lemon juice"));
         assert_eq!(reading("garlic", "minced"), None);
         assert_eq!(reading("onion", "chopped"), None);
+        assert_eq!(reading("rib", "chopped"), Some("celery"));
+        assert_eq!(reading("rib", "meat"), None);
     }
 
     #[test]

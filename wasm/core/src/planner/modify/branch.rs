@@ -246,7 +246,8 @@ pub(super) fn starting_utensils(tree: &Tree) -> HashMap<NodeId, SlotId> {
 
 /// Whether the asked food is read as a product its asked state names, in that word or one of its state
 /// category (coconut "shredded" or "flakes": shredded coconut; beef "ground": ground beef; garlic
-/// "ground": garlic powder), which a cook buys so rather than makes; not pepper "diced", a bell pepper.
+/// "ground": garlic powder), or as a dried product (thyme "ground" is dried thyme, crumbled in its jar),
+/// which a cook buys so rather than makes; not pepper "diced", a bell pepper.
 fn bought_as_read(ctx: &Context, o: &str, s: &str) -> bool {
     let Some(r) = ctx.readings.get(o) else {
         return false;
@@ -255,8 +256,9 @@ fn bought_as_read(ctx: &Context, o: &str, s: &str) -> bool {
         let c = category(w);
         x == w || (category(x) == c && !matches!(c, Category::Other | Category::Whole))
     };
-    s.split([' ', ','])
-        .any(|w| !w.is_empty() && r.split(' ').any(|x| names(w, x)))
+    r.split(' ').any(|x| kind(x) == Some("dried"))
+        || s.split([' ', ','])
+            .any(|w| !w.is_empty() && r.split(' ').any(|x| names(w, x)))
 }
 
 /// The rest of a case-4 branch whose last node is `last`: a unit bringing it to the state `s` when it is

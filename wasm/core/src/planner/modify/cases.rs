@@ -50,8 +50,9 @@ pub(super) fn sold_words(c: Category) -> &'static str {
 
 /// Cases 1–4 for an ingredient whose object is in the tree as `o` (`eq` in FOON; `slots`: the live
 /// slots of `o`): its state is there (exactly or by category), or the tree is changed to reach it
-/// (`restate`), once per object: the same name asked again keeps the state it was first settled in
-/// (`settled`), so that its one progress line is right for one of them rather than a mix of both.
+/// (`restate`), once per object: the same food asked again in another state (onion chopped and sliced)
+/// keeps the state it was first settled in (`settled`), so that its one progress line is right for one
+/// of them rather than a mix of both.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn settle_state<'kb>(
     ctx: &Context<'kb>,

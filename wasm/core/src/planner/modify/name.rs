@@ -216,8 +216,10 @@ impl Namer {
         let words: Vec<&str> = label.split(' ').collect();
         let held = &with_compounds(&words, held);
         let (head, modifiers) = words.split_last()?;
-        // "butter cream" holding butter keeps its name; "black bean" holding no bean does not
-        let head_gone = !self.keeps(head, held) && !words.iter().any(|w| held.contains(w));
+        // "butter cream" holding butter keeps its name; "black bean" holding no bean does not, even
+        // beside black pepper ("black" names no food)
+        let head_gone =
+            !self.keeps(head, held) && !words.iter().any(|w| is_food_word(w) && held.contains(w));
         let kept: Vec<String> = modifiers
             .iter()
             .filter_map(|m| self.kept_part(m, held))
