@@ -3564,3 +3564,87 @@ fn a_name_asked_as_two_foods_plans_both() {
         p.notes
     );
 }
+
+/// A salad (class 15): cherry tomatoes taken off their stems into a strainer, washed there, quartered,
+/// and mixed with chopped lettuce.
+const QUARTERED_TOMATOES: &str = "//
+O\tcherry tomato\t1
+S\twhole
+S\tin\t[packet]
+O\tstrainer\t0
+S\tempty
+M\tpick-and-place\t<Assumed>
+O\tcherry tomato\t1
+S\tdestemmed
+S\tin\t[strainer]
+O\tstrainer\t0
+S\tcontains\t{cherry tomato}
+//
+O\tcherry tomato\t1
+S\tdestemmed
+S\tin\t[strainer]
+O\tfaucet\t0
+S\ton
+M\twash\t<Assumed>
+O\tcherry tomato\t1
+S\tdestemmed
+S\twashed
+S\tin\t[strainer]
+//
+O\tcherry tomato\t1
+S\tdestemmed
+S\twashed
+S\tin\t[strainer]
+O\tknife\t1
+M\tcut\t<Assumed>
+O\tcherry tomato\t1
+S\tquartered
+//
+O\tsalad bowl\t0
+S\tempty
+O\tcherry tomato\t1
+S\tquartered
+O\tlettuce\t1
+S\tchopped
+M\tmix\t<Assumed>
+O\tgreen salad\t1\t15
+S\tmixed
+S\tcontains\t{cherry tomato,lettuce}
+S\tin\t[salad bowl]
+//
+";
+
+#[test]
+fn a_cut_asked_replaces_the_trees_cut_not_its_trim() {
+    // asked chopped, the tomatoes are still taken off their stems and washed whole; the quartering
+    // becomes the chopping (not a chop before the wash)
+    let p = plan_of(
+        &[("salad.txt", QUARTERED_TOMATOES), ("foods.txt", PREPARED)],
+        &ExactMatch,
+        &query(
+            "salad",
+            &[("lettuce", "chopped"), ("cherry tomato", "chopped")],
+        ),
+    );
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "cherry tomato")
+        .unwrap();
+    let states: Vec<&str> = line
+        .state
+        .iter()
+        .map(|s| s.physical_state.as_str())
+        .collect();
+    assert_eq!(
+        states,
+        [
+            "whole",
+            "destemmed",
+            "destemmed, washed",
+            "chopped",
+            "in salad"
+        ],
+        "{line:#?}"
+    );
+}

@@ -174,11 +174,21 @@ fn made_from_raw<'kb>(
     ))
 }
 
-/// Swaps the tree's own cutting step of `o` for one reaching the wanted cut `s`, if it has one.
+/// Swaps the tree's own cutting step of `o` for one reaching the wanted cut `s`, if it has one: a cut
+/// into pieces for pieces, a trim for a trim (a cherry tomato taken off its stem stays destemmed when it
+/// is asked chopped; its quartering becomes the chopping).
 fn swap_cut(tree: &mut Tree, order: &[TUnitId], o: &str, s: &str, motion: &str) -> Option<String> {
-    let (u, old) = order
-        .iter()
-        .find_map(|&u| cut_in(tree, u, o).map(|(_, old)| (u, old)))?;
+    let into_pieces = |st: &str| category(st) != Category::Trimmed;
+    let same_kind = |old: &[String]| match old {
+        // a cut FOON leaves unsaid is into pieces
+        [] => into_pieces(s),
+        _ => old.iter().all(|st| into_pieces(st) == into_pieces(s)),
+    };
+    let (u, old) = order.iter().find_map(|&u| {
+        cut_in(tree, u, o)
+            .filter(|(_, old)| same_kind(old))
+            .map(|(_, old)| (u, old))
+    })?;
     for x in downstream(tree, vec![u], o, order) {
         let node = replace_states(&tree.slots[x].node, &old, s);
         tree.slots[x].node = Cow::Owned(node);
