@@ -3648,3 +3648,68 @@ fn a_cut_asked_replaces_the_trees_cut_not_its_trim() {
         "{line:#?}"
     );
 }
+
+/// A drink (class 9): cherries washed in their bowl, poured into the blender cup that holds the sliced
+/// banana, and blended with it.
+const CHERRY_SHAKE: &str = "//
+O\tcherry\t1
+S\twhole
+S\tin\t[bowl]
+O\tfaucet\t0
+S\ton
+M\twash\t<Assumed>
+O\tcherry\t1
+S\twashed
+S\tin\t[bowl]
+//
+O\tblender cup\t0
+S\tcontains\t{banana}
+O\tcherry\t1
+S\twashed
+S\tin\t[bowl]
+M\tpour\t<Assumed>
+O\tblender cup\t0
+S\tcontains\t{banana,cherry}
+O\tcherry\t1
+S\twashed
+S\tin\t[blender cup]
+//
+O\tblender cup\t0
+S\tcontains\t{banana,cherry}
+O\tcherry\t1
+S\twashed
+S\tin\t[blender cup]
+O\tbanana\t1
+S\tsliced
+S\tin\t[blender cup]
+M\tblend\t<Assumed>
+O\tsmoothie\t1\t9
+S\tblended
+S\tcontains\t{banana,cherry}
+S\tin\t[blender cup]
+//
+";
+
+#[test]
+fn a_stone_comes_out_before_the_fruit_meets_the_other_foods() {
+    // the cherries are pitted in their bowl, not in the blender cup beside the banana
+    let p = plan_of(
+        &[("drink.txt", CHERRY_SHAKE)],
+        &ExactMatch,
+        &query("drinks", &[("cherry", "whole"), ("banana", "sliced")]),
+    );
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "cherry")
+        .unwrap();
+    let pit = line.motion.iter().position(|m| m == "pit");
+    let pour = line.motion.iter().position(|m| m == "pour");
+    assert!(pit.is_some() && pit < pour, "{line:#?}");
+    // and they stay pitted in the cup
+    assert_eq!(
+        line.state[line.state.len() - 2].physical_state,
+        "pitted",
+        "{line:#?}"
+    );
+}

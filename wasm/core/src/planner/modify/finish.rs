@@ -140,20 +140,18 @@ pub(super) fn trim_first<'kb>(
             let whole = |st: &str| category(st) == Category::Whole;
             let trimmed = with_state(&tree.slots[at].node, whole, trim.state);
             let made = add_state_unit_before(ctx, tree, (at, u), trimmed, &motion);
-            // what it becomes no longer has what was taken off ("halved, unpeeled")
+            // what it becomes no longer has what was taken off ("halved, unpeeled"), and is
+            // trimmed while it is still whole (the pitted cherries poured into the blender cup)
             let order = tree.order();
             for (y, _) in own_chain(tree, &order, o, made).into_iter().skip(1) {
-                if tree.slots[y]
-                    .node
-                    .states
-                    .iter()
-                    .any(|st| st.name == trim.undone)
-                {
-                    let n = &tree.slots[y].node;
+                let n = &tree.slots[y].node;
+                let node = if food_states(n).into_iter().all(whole) {
+                    with_state(n, |st| whole(st) || st == trim.undone, trim.state)
+                } else {
                     let kept = n.states.iter().filter(|st| st.name != trim.undone).cloned();
-                    tree.slots[y].node =
-                        Cow::Owned(ObjectNode::new(n.label.clone(), kept.collect()));
-                }
+                    ObjectNode::new(n.label.clone(), kept.collect())
+                };
+                tree.slots[y].node = Cow::Owned(node);
             }
             if !given.contains(&trim.state) {
                 given.push(trim.state);
@@ -236,14 +234,21 @@ pub(super) fn trim_point(
         return first_cut().filter(|&(y, _)| whole(y));
     }
     // a stone comes out once the fruit is halved, else before it is cut at all (a cherry pitted
-    // whole, not in slices); a hull before the first cut
+    // whole, not in slices); a hull before the first cut...
     let halved = chain.iter().copied().find(|&(y, _)| {
         tree.slots[y]
             .node
             .physical_states()
             .any(|st| st == "halved")
     });
-    if let Some(point) = halved.or_else(first_cut) {
+    // ... and before it meets other foods (cherries poured into the blender cup beside the banana)
+    let cut_or_met = || {
+        chain
+            .iter()
+            .copied()
+            .find(|&(_, u)| foods::breaks_up(&tree.units[u].motion) || meets_others(tree, u, o))
+    };
+    if let Some(point) = halved.or_else(cut_or_met) {
         return Some(point);
     }
     let &(y, u) = chain.last()?;
@@ -252,6 +257,14 @@ pub(super) fn trim_point(
         .iter()
         .any(|o2| tree.slots[o2.0].node.label == o);
     joins.then_some((y, u))
+}
+
+/// Whether unit `u` puts `o` into a vessel with another food.
+fn meets_others(tree: &Tree, u: TUnitId, o: &str) -> bool {
+    tree.units[u].outputs.iter().any(|&(x, _)| {
+        let vessel = &tree.slots[x].node;
+        vessel.contents().any(|c| c == o) && vessel.contents().any(|c| c != o)
+    })
 }
 
 /// The states of the asked food `o` made to fit its form (`foods::Form`): a state it is never in, taken
