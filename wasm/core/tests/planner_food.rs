@@ -3713,3 +3713,90 @@ fn a_stone_comes_out_before_the_fruit_meets_the_other_foods() {
         "{line:#?}"
     );
 }
+
+/// A drink (class 9): strawberries washed in their bowl under the faucet's water, then poured into the
+/// blender cup with the milk and blended.
+const WASHED_BERRY_SHAKE: &str = "//
+O\tfaucet\t1
+S\ton
+O\twater\t0
+S\tliquid
+S\tfrom\t[faucet]
+O\tbowl\t0
+S\tcontains\t{strawberry}
+O\tstrawberry\t1
+S\twhole
+S\tin\t[bowl]
+M\twash\t<Assumed>
+O\tstrawberry\t1
+S\twhole
+S\twashed
+S\tin\t[bowl]
+//
+O\tblender cup\t0
+S\tcontains\t{milk}
+O\tstrawberry\t1
+S\twhole
+S\twashed
+S\tin\t[bowl]
+M\tpour\t<Assumed>
+O\tblender cup\t0
+S\tcontains\t{milk,strawberry}
+O\tstrawberry\t1
+S\twashed
+S\tin\t[blender cup]
+//
+O\tblender cup\t0
+S\tcontains\t{milk,strawberry}
+O\tstrawberry\t1
+S\twashed
+S\tin\t[blender cup]
+O\tmilk\t1
+S\tliquid
+S\tin\t[blender cup]
+M\tblend\t<Assumed>
+O\tsmoothie\t1\t9
+S\tblended
+S\tcontains\t{milk,strawberry}
+S\tin\t[blender cup]
+//
+";
+
+/// A cherry is like a strawberry; nothing else is alike.
+struct BerryLike;
+
+impl foon_core::similarity::Similarity for BerryLike {
+    fn similarity(&self, a: &str, b: &str) -> f32 {
+        match (a, b) {
+            _ if a == b => 1.0,
+            ("cherry", "strawberry") | ("strawberry", "cherry") => 0.8,
+            _ => 0.0,
+        }
+    }
+}
+
+#[test]
+fn a_copied_branch_takes_the_wash_along_and_joins_where_the_original_does() {
+    // the cherries get the strawberries' handling (washed in the faucet's water) and go into the
+    // blender cup with them, not into the strawberries' wash, which gives back only strawberries
+    let p = plan_of(
+        &[("drink.txt", WASHED_BERRY_SHAKE)],
+        &BerryLike,
+        &query(
+            "drinks",
+            &[
+                ("strawberry", "whole"),
+                ("cherry", "whole"),
+                ("milk", "liquid"),
+            ],
+        ),
+    );
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "cherry")
+        .unwrap();
+    assert!(line.motion.iter().any(|m| m == "wash"), "{line:#?}");
+    let last = &line.state[line.state.len() - 1];
+    assert_eq!(last.physical_state, "in smoothie", "{line:#?}");
+}

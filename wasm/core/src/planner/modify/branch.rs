@@ -7,22 +7,20 @@ use super::*;
 /// copy into the unit where `eq` joins the dish. Returns the copy's last node.
 pub(super) fn copy_branch(tree: &mut Tree, eq: &str, o: &str) -> Option<SlotId> {
     let order = tree.order();
+    // a unit gives back only `eq`, taking it with nothing made in the tree (the water it is washed in)
     let is_private = |u: TUnitId| {
         let unit = &tree.units[u];
-        let ing_in: Vec<&str> = unit
-            .inputs
-            .iter()
-            .map(|i| &tree.slots[i.0])
-            .filter(|x| !x.utensil)
-            .map(|x| x.node.label.as_str())
-            .collect();
+        let mut ing_in = unit.inputs.iter().filter(|i| !tree.slots[i.0].utensil);
         let ing_out_ok = unit
             .outputs
             .iter()
             .map(|o| &tree.slots[o.0])
             .filter(|x| !x.utensil)
             .all(|x| x.node.label == eq);
-        !ing_in.is_empty() && ing_in.iter().all(|&l| l == eq) && ing_out_ok
+        let takes_eq = ing_in.clone().any(|i| tree.slots[i.0].node.label == eq);
+        takes_eq
+            && ing_out_ok
+            && ing_in.all(|i| tree.slots[i.0].node.label == eq || !tree.produced(i.0))
     };
     let branch: Vec<TUnitId> = order.iter().copied().filter(|&u| is_private(u)).collect();
     let entry = order.iter().copied().find(|&u| {
