@@ -654,6 +654,8 @@ mod tests {
         assert!(greases("cooking spray") && !greases("olive oil"));
         assert!(joins_served("jelly") && !joins_served("cherry pie filling"));
         assert!(joins_before_heat("thyme") && joins_before_heat("cumin"));
+        // sugar and a curry powder dissolve in a broth that cooks, not on the served ramen
+        assert!(joins_before_heat("curry powder") && joins_before_heat("sugar"));
         // vegetables a cooked dish cooks (the ramen's cauliflower into the broth), not the raw cucumber
         assert!(joins_before_heat("cauliflower") && joins_before_heat("mushroom"));
         assert!(joins_served("cucumber") && !joins_served("zucchini"));
