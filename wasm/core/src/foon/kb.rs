@@ -102,9 +102,8 @@ impl KnowledgeBase {
         let (merged, goal_marks) = merged_units(subgraphs, &numbers);
         let mut units = Vec::with_capacity(merged.len());
         let mut provenance = Vec::with_capacity(merged.len());
-        for ((_, motion, _), (mut inputs, mut outputs, files)) in merged {
-            inputs.sort();
-            outputs.sort();
+        // `objects` sorted both lists, and OR-ing flags keeps them sorted
+        for ((_, motion, _), (inputs, outputs, files)) in merged {
             units.push(FunctionalUnit {
                 inputs,
                 motion,
@@ -137,7 +136,7 @@ impl KnowledgeBase {
             warnings,
         );
         let by_subgraph = kb.units_by_subgraph();
-        let goals = goal_marks
+        kb.goals = goal_marks
             .into_iter()
             .map(|(subgraph, node, dish_class)| {
                 let units = by_subgraph.get(subgraph.as_str());
@@ -150,7 +149,6 @@ impl KnowledgeBase {
                 }
             })
             .collect();
-        kb.goals = goals;
         Ok(kb)
     }
 
@@ -305,7 +303,7 @@ fn merged_units(
         for u in &g.units {
             let ins = objects(&u.inputs, node_index);
             let outs = objects(&u.outputs, node_index);
-            let key = (sorted_nodes(&ins), u.motion.clone(), sorted_nodes(&outs));
+            let key = (node_ids(&ins), u.motion.clone(), node_ids(&outs));
             let entry = merged
                 .entry(key)
                 .or_insert_with(|| (ins.clone(), outs.clone(), BTreeSet::new()));
@@ -331,6 +329,7 @@ fn merged_units(
     (merged, goal_marks)
 }
 
+/// The unit's objects by node id, sorted.
 fn objects(
     list: &[crate::foon::read::ParsedObject],
     index: &FxHashMap<&ObjectNode, NodeId>,
@@ -346,17 +345,14 @@ fn objects(
     out
 }
 
-fn sorted_nodes(list: &[UnitObject]) -> Vec<NodeId> {
-    let mut ids: Vec<NodeId> = list.iter().map(|o| o.node).collect();
-    ids.sort_unstable();
-    ids
+/// The node ids of sorted objects: sorted too.
+fn node_ids(list: &[UnitObject]) -> Vec<NodeId> {
+    list.iter().map(|o| o.node).collect()
 }
 
 fn or_flags(into: &mut [UnitObject], from: &[UnitObject]) {
     for o in into.iter_mut() {
-        if from.iter().any(|f| f.node == o.node && f.moves) {
-            o.moves = true;
-        }
+        o.moves |= from.iter().any(|f| f.node == o.node && f.moves);
     }
 }
 
