@@ -270,11 +270,9 @@ impl<'t> Said<'t> {
         relations: &mut Relations<'t>,
     ) -> Found<'t> {
         let unit = self.unit;
-        let node = |x: SlotId| self.node(x);
-        let utensil = |x: SlotId| self.utensil(x);
-        self.push_inputs(objects, |x, m| m && !utensil(x));
+        self.push_inputs(objects, |x, m| m && !self.utensil(x));
         if objects.is_empty() {
-            self.push_inputs(objects, |x, _| !utensil(x));
+            self.push_inputs(objects, |x, _| !self.utensil(x));
         }
         let MotionKind {
             puts,
@@ -286,19 +284,19 @@ impl<'t> Said<'t> {
         // holds: the blender blends the whole cup, not the honey FOON moves ("Blend the honey, the
         // blueberry and the milk")
         if !objects.is_empty() && !puts && !handles && !closes && is_mixing_motion(motion) {
-            let label_of = |x: SlotId| node(x).label.as_str();
+            let label_of = |x: SlotId| self.node(x).label.as_str();
             let makes_new = unit.outputs.iter().any(|&(o, _)| {
-                !utensil(o) && !unit.inputs.iter().any(|&(i, _)| label_of(i) == label_of(o))
+                !self.utensil(o) && !unit.inputs.iter().any(|&(i, _)| label_of(i) == label_of(o))
             });
             let inside = |v: &ObjectNode, l: &str| {
                 unit.inputs.iter().any(|&(i, _)| {
-                    label_of(i) == l && node(i).container() == Some(v.label.as_str())
+                    label_of(i) == l && self.node(i).container() == Some(v.label.as_str())
                 })
             };
             let vessel = unit
                 .inputs
                 .iter()
-                .map(|&(i, _)| node(i))
+                .map(|&(i, _)| self.node(i))
                 .find(|v| v.holds_something() && objects.iter().all(|l| inside(v, l)));
             if let Some(v) = vessel.filter(|_| makes_new) {
                 for l in v.contents() {
@@ -319,7 +317,7 @@ impl<'t> Said<'t> {
         }
         if objects.is_empty() {
             if let Some(&(x, _)) = unit.inputs.first() {
-                push(objects, &node(x).label);
+                push(objects, &self.node(x).label);
             }
         }
         found
@@ -338,26 +336,24 @@ impl<'t> Said<'t> {
         relations: &mut Relations<'t>,
     ) {
         let unit = self.unit;
-        let node = |x: SlotId| self.node(x);
-        let utensil = |x: SlotId| self.utensil(x);
         let MotionKind { puts, closes, .. } = *kind;
         let tools_only = unit.inputs.iter().any(|&(x, m)| m && self.tool(x))
             && unit.inputs.iter().all(|&(x, m)| !m || self.tool(x))
             && !PUT_MOTIONS.contains(&unit.motion.trim_end_matches('*'));
-        let vessel = |i: &&(SlotId, bool)| node(i.0).holds_something();
+        let vessel = |i: &&(SlotId, bool)| self.node(i.0).holds_something();
         // a lid is put on or taken off what the unit covers or uncovers, before or after
         let covered = closes
             .then(|| {
                 let mut nodes = unit.inputs.iter().chain(&unit.outputs);
-                nodes.find(|i| node(i.0).states.iter().any(|s| s.name == "covered"))
+                nodes.find(|i| self.node(i.0).states.iter().any(|s| s.name == "covered"))
             })
             .flatten();
         // a moved tool (a spoon, even an empty or clean one), or a machine holding a vessel (a mixer with
         // its bowl), is not what is worked on; nor is a lid
         let machine = |x: SlotId| {
-            let n = node(x);
+            let n = self.node(x);
             let bare_tool =
-                utensil(x) && !n.holds_something() && n.states.iter().all(|s| s.arg.is_none());
+                self.utensil(x) && !n.holds_something() && n.states.iter().all(|s| s.arg.is_none());
             bare_tool || n.states.iter().any(|s| s.name == "with")
         };
         let moved = unit.inputs.iter().filter(|i| i.1);
@@ -369,7 +365,7 @@ impl<'t> Said<'t> {
                     && unit
                         .outputs
                         .iter()
-                        .any(|o| node(o.0).container() == Some(&node(i.0).label)))
+                        .any(|o| self.node(o.0).container() == Some(&self.node(i.0).label)))
         };
         let worked = covered.or_else(|| moved.clone().find(vessel)).or_else(|| {
             (closes || moved.clone().all(|i| machine(i.0)))
@@ -381,7 +377,7 @@ impl<'t> Said<'t> {
                 .flatten()
         });
         if let Some(&(x, _)) = worked {
-            let n = node(x);
+            let n = self.node(x);
             if closes {
                 push(objects, &n.label);
                 out.closed = true;
@@ -404,13 +400,10 @@ impl<'t> Said<'t> {
         relations: &mut Relations<'t>,
     ) -> Option<(&'t str, &'t str)> {
         let unit = self.unit;
-        let node = |x: SlotId| self.node(x);
-        let utensil = |x: SlotId| self.utensil(x);
-
         unit.outputs
             .iter()
             .find_map(|&(x, _)| {
-                let n = node(x);
+                let n = self.node(x);
                 if !objects.contains(&n.label.as_str()) {
                     return None;
                 }
@@ -420,13 +413,13 @@ impl<'t> Said<'t> {
             // record them): where what now holds one of them is, or that container itself
             .or_else(|| {
                 unit.outputs.iter().find_map(|&(x, _)| {
-                    let n = node(x);
+                    let n = self.node(x);
                     if objects.contains(&n.label.as_str())
                         || !n.contents().any(|c| objects.contains(&c))
                     {
                         return None;
                     }
-                    if utensil(x) {
+                    if self.utensil(x) {
                         return Some((relations.to(&n.label), n.label.as_str()));
                     }
                     container_of(n, objects)
@@ -437,14 +430,14 @@ impl<'t> Said<'t> {
             // goes nowhere.
             .or_else(|| {
                 let food = |&(x, _): &(SlotId, bool)| {
-                    !utensil(x) && objects.contains(&node(x).label.as_str())
+                    !self.utensil(x) && objects.contains(&self.node(x).label.as_str())
                 };
                 if !unit.inputs.iter().any(food) {
                     return None;
                 }
                 unit.outputs.iter().find_map(|&(x, _)| {
-                    let n = node(x);
-                    (!utensil(x) && !objects.contains(&n.label.as_str()))
+                    let n = self.node(x);
+                    (!self.utensil(x) && !objects.contains(&n.label.as_str()))
                         .then(|| container_of(n, objects))
                         .flatten()
                 })
@@ -457,13 +450,12 @@ impl<'t> Said<'t> {
     /// Returns those, taken out of `objects`.
     fn settled(&self, objects: &mut Vec<&'t str>, put_into: Option<(&str, &str)>) -> Vec<&'t str> {
         let unit = self.unit;
-        let node = |x: SlotId| self.node(x);
         let mut settled = Vec::new();
         if let Some((_, c)) = put_into {
             let mut vessels = unit
                 .inputs
                 .iter()
-                .map(|i| node(i.0))
+                .map(|i| self.node(i.0))
                 .filter(|n| n.label == c);
             if let Some(first) = vessels.next() {
                 let holds = |n: &ObjectNode, l: &str| n.contents().any(|i| i == l);
@@ -481,17 +473,15 @@ impl<'t> Said<'t> {
     /// The tools the sentence names after its objects, into `objects`.
     fn tools(&self, objects: &mut Vec<&'t str>, found: &Found, place: Option<(&str, &str)>) {
         let unit = self.unit;
-        let node = |x: SlotId| self.node(x);
-        let utensil = |x: SlotId| self.utensil(x);
         let moved = objects.len();
         for &(x, m) in &unit.inputs {
-            let n = node(x);
+            let n = self.node(x);
             if (!m
                 || found.holder.is_some()
                 || found.closed
                 || found.from_elsewhere
                 || found.with_tools)
-                && utensil(x)
+                && self.utensil(x)
                 && n.states.is_empty()
                 && !objects[..moved].contains(&n.label.as_str())
                 && place.is_none_or(|p| p.1 != n.label)
