@@ -201,8 +201,7 @@ impl KnowledgeBase {
         UnitId::all(self.units.len()).zip(&self.units)
     }
 
-    /// The units of each subgraph, ascending (one pass: asking per subgraph would scan every unit for
-    /// every file, which is quadratic in a large universal FOON).
+    /// The units of each subgraph, ascending.
     pub fn units_by_subgraph(&self) -> HashMap<&str, Vec<UnitId>> {
         let mut out: HashMap<&str, Vec<UnitId>> = HashMap::new();
         for (u, files) in UnitId::all(self.provenance.len()).zip(&self.provenance) {
@@ -368,6 +367,7 @@ fn is_raw(node: &ObjectNode) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::foon::model::State;
     use crate::foon::read::parse_str;
 
     const A: &str = "//\nO\ttomato\t1\nS\twhole\nO\tknife\t0\nM\tslice\t<Assumed>\nO\ttomato\t1\nS\tsliced\n//\nO\ttomato\t1\nS\tsliced\nO\tbowl\t0\nS\tempty\nM\tadd\t<Assumed>\nO\tbowl\t0\nS\tcontains\t{tomato}\nO\tsalad\t1\t15\nS\tin\t[bowl]\n";
@@ -398,22 +398,12 @@ mod tests {
     #[test]
     fn indexes_producers_consumers_goals_and_kitchen() {
         let k = kb(&[("a.txt", A)]);
-        let sliced = k
-            .node_id(&ObjectNode::new(
-                "tomato",
-                vec![crate::foon::model::State::plain("sliced")],
-            ))
-            .unwrap();
+        let tomato = |state| k.node_id(&ObjectNode::new("tomato", vec![State::plain(state)]));
+        let sliced = tomato("sliced").unwrap();
         assert_eq!(k.producers[sliced].len(), 1);
         assert_eq!(k.consumers[sliced].len(), 1);
         assert!(!k.kitchen[sliced]);
-        let whole = k
-            .node_id(&ObjectNode::new(
-                "tomato",
-                vec![crate::foon::model::State::plain("whole")],
-            ))
-            .unwrap();
-        assert!(k.kitchen[whole]);
+        assert!(k.kitchen[tomato("whole").unwrap()]);
         assert_eq!(k.goals.len(), 1);
         assert_eq!(k.goals[0].dish_class, Some(15));
         assert_eq!(k.nodes[k.goals[0].node].label, "salad");

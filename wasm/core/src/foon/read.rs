@@ -319,12 +319,7 @@ fn check_goal_classes(file: &str, units: &[ParsedUnit]) -> Result<()> {
     let mut marks: Vec<(usize, &ObjectNode, u32)> = units
         .iter()
         .flat_map(|u| u.inputs.iter().chain(u.outputs.iter()))
-        .filter_map(|o| match o.goal {
-            Some(GoalMark {
-                dish_class: Some(c),
-            }) => Some((o.line, &o.node, c)),
-            _ => None,
-        })
+        .filter_map(|o| Some((o.line, &o.node, o.goal.as_ref()?.dish_class?)))
         .collect();
     marks.sort();
     let mut first: rustc_hash::FxHashMap<&ObjectNode, (usize, u32)> = Default::default();

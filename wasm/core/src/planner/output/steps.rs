@@ -148,14 +148,9 @@ pub(super) fn relation_to<'t>(tree: &'t Tree, container: &str) -> &'t str {
             .iter()
             .filter(move |slot| slot.utensil != food)
             .flat_map(|slot| &slot.node.states)
-            .find_map(|s| match &s.arg {
-                Some(StateArg::Container(c))
-                    if c == container && (s.name == "in" || s.name == "on") =>
-                {
-                    Some(s.name.as_str())
-                }
-                _ => None,
-            })
+            .filter(|s| matches!(&s.arg, Some(StateArg::Container(c)) if c == container))
+            .find(|s| s.name == "in" || s.name == "on")
+            .map(|s| s.name.as_str())
     };
     said_by(true).or_else(|| said_by(false)).unwrap_or("in")
 }
