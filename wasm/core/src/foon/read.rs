@@ -339,9 +339,7 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut reader = Reader {
         name,
-        units: Vec::new(),
-        warnings: Vec::new(),
-        unit: UnitBuilder::default(),
+        ..Reader::default()
     };
     let mut last_line = 0;
     let mut title = None;
@@ -449,6 +447,7 @@ impl<'l> Line<'l> {
 }
 
 /// The units of one file as its lines are read.
+#[derive(Default)]
 struct Reader<'a> {
     name: &'a str,
     units: Vec<ParsedUnit>,

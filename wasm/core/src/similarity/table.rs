@@ -108,8 +108,8 @@ impl<'a> Reader<'a> {
     }
 
     fn u32(&mut self, what: &str) -> Result<u32> {
-        let b = self.take(4, what)?;
-        Ok(u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+        let bytes = self.take(4, what)?.try_into().expect("four bytes taken");
+        Ok(u32::from_le_bytes(bytes))
     }
 }
 
@@ -146,11 +146,11 @@ pub fn is_stop_word(word: &str) -> bool {
 impl EmbeddingTable {
     /// Reads a table written by `scripts/build_embeddings.py`; `BadEmbeddings` on any damage.
     pub fn from_bytes(bytes: &[u8]) -> Result<EmbeddingTable> {
-        if bytes.len() < MAGIC.len() + 20 || &bytes[..MAGIC.len()] != MAGIC {
+        if bytes.len() < MAGIC.len() + 20 || !bytes.starts_with(MAGIC) {
             return Err(bad("not a foon-planner embedding table (bad magic)"));
         }
-        let body = &bytes[..bytes.len() - 4];
-        let stored = u32::from_le_bytes(bytes[bytes.len() - 4..].try_into().unwrap_or([0; 4]));
+        let (body, stored) = bytes.split_last_chunk().expect("longer than its magic");
+        let stored = u32::from_le_bytes(*stored);
         let mut r = Reader {
             bytes: body,
             at: MAGIC.len(),
