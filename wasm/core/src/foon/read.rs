@@ -211,16 +211,13 @@ fn fields(line: &str) -> Vec<(usize, &str)> {
 /// The line type: `O`, `S` or `M`, optionally followed by an index (indexed dialect) and optionally
 /// preceded by `!` (goal mark). Returns (kind, goal-mark).
 fn line_kind(head: &str) -> Option<(char, bool)> {
-    let (goal, rest) = match head.strip_prefix('!') {
-        Some(rest) => (true, rest),
-        None => (false, head),
-    };
-    let mut chars = rest.chars();
+    let marked = head.strip_prefix('!');
+    let mut chars = marked.unwrap_or(head).chars();
     let kind = chars.next()?;
     if !matches!(kind, 'O' | 'S' | 'M') || !chars.all(|c| c.is_ascii_digit()) {
         return None;
     }
-    Some((kind, goal))
+    Some((kind, marked.is_some()))
 }
 
 /// A label in its normal form.
@@ -439,10 +436,10 @@ impl<'l> Line<'l> {
 
     /// An error when the line has more than `most` fields.
     fn at_most(&self, most: usize, what: &str) -> Result<()> {
-        match self.f.get(most) {
-            Some(&(col, _)) => Err(self.error(ErrorCode::UnknownLine, col, what.to_string())),
-            None => Ok(()),
-        }
+        let extra = self.f.get(most);
+        extra.map_or(Ok(()), |&(col, _)| {
+            Err(self.error(ErrorCode::UnknownLine, col, what))
+        })
     }
 }
 

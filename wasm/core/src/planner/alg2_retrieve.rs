@@ -333,10 +333,9 @@ impl Search {
                 g: None,
             };
             trace.record(|_| c.weighed.push((Some(candidate.clone()), u)));
-            let better = match c.best.as_mut() {
-                None => true,
-                Some(b) => candidate.decide(b, node, kb, index, scorer).0 == Ordering::Greater,
-            };
+            let better = (c.best.as_mut()).is_none_or(|b| {
+                candidate.decide(b, node, kb, index, scorer).0 == Ordering::Greater
+            });
             if better {
                 c.best = Some(candidate);
             }
