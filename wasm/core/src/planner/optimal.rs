@@ -71,9 +71,8 @@ fn search_space(
     root: NodeId,
 ) -> HashMap<UnitId, Vec<NodeId>> {
     let mut space: HashMap<UnitId, Vec<NodeId>> = HashMap::default();
-    let mut seen: HashSet<NodeId> = HashSet::default();
+    let mut seen: HashSet<NodeId> = HashSet::from_iter([root]);
     let mut queue = VecDeque::from([root]);
-    seen.insert(root);
     while let Some(node) = queue.pop_front() {
         for &u in kb.producers.get(node.0).map_or(&[][..], Vec::as_slice) {
             let unit = &kb.units[u];
