@@ -192,13 +192,8 @@ impl<'k> Writer<'k> {
     fn warning(&mut self, e: &'k FoonError) {
         self.str(e.code.as_str());
         self.str(&e.message);
-        match &e.file {
-            None => self.num(0),
-            Some(file) => {
-                self.num(1);
-                self.str(file);
-            }
-        }
+        // the file as a list of none or one
+        self.seq(e.file.as_slice(), |w, file| w.str(file));
         self.option(e.line);
         self.option(e.column);
     }
