@@ -196,7 +196,6 @@ fn changed_food<'a>(
 /// are dropped (FOON files often end lines with a stray tab).
 fn fields(line: &str) -> Vec<(usize, &str)> {
     let mut out = Vec::new();
-    // columns are counted as we go: a line of many short fields must not cost quadratic time
     let mut col = 1usize;
     for part in line.split('\t') {
         out.push((col, part.trim()));
@@ -271,7 +270,6 @@ fn state_arg(line: &Line, col: usize, text: &str) -> Result<Option<StateArg>> {
 
 /// Index of the first object whose label already occurred earlier in the list.
 fn repeated_label_at(objects: &[ParsedObject]) -> Option<usize> {
-    // a set, not a scan of the objects before each one: units with very many objects stay linear
     let mut seen = rustc_hash::FxHashSet::default();
     objects
         .iter()

@@ -32,8 +32,7 @@ pub(crate) struct Scorer<'a> {
     /// directions come from one comparison, and goal selection asks both of every pair); from the
     /// similarity's memory when it has one.
     rows: Vec<Arc<PairRow>>,
-    /// Per query name, its best similarity so far (`recall`, `GoalFits::fit`): one buffer for every
-    /// unit and goal.
+    /// Per query name, its best similarity so far (`recall`, `GoalFits::fit`).
     best_to: RefCell<Vec<f32>>,
     units: RefCell<HashMap<UnitId, f32>>,
 }
@@ -133,7 +132,7 @@ impl GoalFits<'_, '_> {
     /// How well a goal's ingredient set (`slots`) and the query's fit each other.
     pub fn fit(&self, slots: &[u32]) -> GoalFit {
         let n = self.rows.len();
-        // per query name, the best similarity to any of `slots` so far (one buffer for every goal)
+        // per query name, the best similarity to any of `slots` so far
         let mut best_to = self.scorer.best_to.borrow_mut();
         best_to.clear();
         best_to.resize(n, 0.0);
