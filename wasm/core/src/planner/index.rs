@@ -25,9 +25,9 @@ pub struct PlannerIndex {
     pub(crate) ingredient_labels: Vec<String>,
     /// label -> state -> dish class -> occurrences in units of recipes of that class; class `None`
     /// counts all. Nested so that a lookup borrows its words.
-    label_state: HashMap<String, HashMap<String, ClassCounts>>,
+    label_state: HashMap<String, StateCounts>,
     /// state -> dish class -> occurrences; class `None` counts all.
-    state_freq: HashMap<String, ClassCounts>,
+    state_freq: StateCounts,
     /// State word -> the motion most used to bring an object into it.
     motion_for_state: HashMap<String, String>,
     /// Category -> the motion most used to bring an object into a state of it.
@@ -103,6 +103,8 @@ static NEXT_ID: AtomicU64 = AtomicU64::new(1);
 
 /// Occurrences per dish class (`None`: all classes).
 type ClassCounts = HashMap<Option<u32>, u32>;
+/// Occurrences of each state word per dish class.
+type StateCounts = HashMap<String, ClassCounts>;
 
 /// The key with the highest count; ties to the smallest key, whatever the order counts came in.
 fn best<K: Ord + Clone>(counts: &BTreeMap<K, u32>) -> Option<K> {
@@ -120,8 +122,8 @@ fn most_counted<K: Eq + std::hash::Hash, V: Ord + Clone>(
 }
 
 /// Counts per (word, class) counted on borrowed words, as owned word -> class -> count.
-fn by_word(flat: HashMap<(&str, Option<u32>), u32>) -> HashMap<String, ClassCounts> {
-    let mut out: HashMap<String, ClassCounts> = HashMap::default();
+fn by_word(flat: HashMap<(&str, Option<u32>), u32>) -> StateCounts {
+    let mut out = StateCounts::default();
     for ((word, class), n) in flat {
         out.entry(word.to_string()).or_default().insert(class, n);
     }
@@ -168,12 +170,7 @@ fn made_in(kb: &KnowledgeBase, unit_sources: &[Vec<u32>]) -> Vec<Vec<u32>> {
 
 /// How often each label is in each state, and each state occurs, in units of recipes of each dish class
 /// (class `None` counts all).
-fn state_counts(
-    kb: &KnowledgeBase,
-) -> (
-    HashMap<String, HashMap<String, ClassCounts>>,
-    HashMap<String, ClassCounts>,
-) {
+fn state_counts(kb: &KnowledgeBase) -> (HashMap<String, StateCounts>, StateCounts) {
     let mut subgraph_class: HashMap<&str, Option<u32>> = HashMap::default();
     for g in &kb.goals {
         subgraph_class.entry(&g.subgraph).or_insert(g.dish_class);
