@@ -223,14 +223,8 @@ fn push<'n>(objects: &mut Vec<&'n str>, l: &'n str) {
     }
 }
 
-/// One plain sentence for a unit: "Slice the tomato on the cutting board." `objects` is a buffer reused
-/// from sentence to sentence (the sentence's objects, then its tools after them).
-pub(super) fn sentence<'t>(
-    tree: &'t Tree,
-    u: TUnitId,
-    objects: &mut Vec<&'t str>,
-    relations: &mut Relations<'t>,
-) -> String {
+/// One plain sentence for a unit: "Slice the tomato on the cutting board."
+pub(super) fn sentence<'t>(tree: &'t Tree, u: TUnitId, relations: &mut Relations<'t>) -> String {
     let said = Said {
         tree,
         unit: &tree.units[u],
@@ -238,19 +232,20 @@ pub(super) fn sentence<'t>(
     let unit = said.unit;
     let motion = unit.motion.trim_end_matches('*');
     let kind = MotionKind::of(motion);
-    objects.clear();
-    let found = said.objects(motion, &kind, objects, relations);
+    // the sentence's objects, then its tools after them
+    let mut objects = Vec::new();
+    let found = said.objects(motion, &kind, &mut objects, relations);
     let place = found.holder.or_else(|| {
         (!found.closed)
-            .then(|| said.place(objects, relations))
+            .then(|| said.place(&objects, relations))
             .flatten()
     });
     let settled = said.settled(
-        objects,
+        &mut objects,
         place.filter(|_| found.holder.is_none() && kind.puts),
     );
     let moved = objects.len();
-    said.tools(objects, &found, place);
+    said.tools(&mut objects, &found, place);
     let (objects, tools) = objects.split_at(moved);
     write(&unit.motion, objects, place, kind.puts, &settled, tools)
 }
