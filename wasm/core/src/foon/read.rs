@@ -511,26 +511,20 @@ impl Reader<'_> {
                 return Err(line.error(ErrorCode::BadBrackets, *acol, "state has two arguments"));
             }
         };
-        let arg = match arg_text {
-            None => None,
-            Some(text) => match state_arg(line, acol, text)? {
-                Some(arg) => Some(arg),
-                // `on []` occurs in FOON-111: keep the state, drop the empty argument, report
-                // it (the same for `[ ]`, `{ , }` and an argument written in the state field)
-                None => {
-                    self.warnings.push(line.error(
-                        ErrorCode::EmptyLabel,
-                        acol,
-                        format!("state '{state_name}' has an empty argument; it was left out"),
-                    ));
-                    None
-                }
-            },
-        };
+        let arg = arg_text
+            .map(|text| state_arg(line, acol, text))
+            .transpose()?;
+        // `on []` occurs in FOON-111: keep the state, drop the empty argument, report it (the same
+        // for `[ ]`, `{ , }` and an argument written in the state field)
+        if arg == Some(None) {
+            let why = format!("state '{state_name}' has an empty argument; it was left out");
+            self.warnings
+                .push(line.error(ErrorCode::EmptyLabel, acol, why));
+        }
         line.at_most(3, "state line has more than three fields")?;
         open.4.push(State {
             name: state_name.into(),
-            arg,
+            arg: arg.flatten(),
         });
         Ok(())
     }
