@@ -434,10 +434,10 @@ impl<'l> Line<'l> {
 
     /// An error when the line has more than `most` fields.
     fn at_most(&self, most: usize, what: &str) -> Result<()> {
-        let extra = self.f.get(most);
-        extra.map_or(Ok(()), |&(col, _)| {
-            Err(self.error(ErrorCode::UnknownLine, col, what))
-        })
+        match self.f.get(most) {
+            Some(&(col, _)) => Err(self.error(ErrorCode::UnknownLine, col, what)),
+            None => Ok(()),
+        }
     }
 }
 
