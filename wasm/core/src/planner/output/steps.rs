@@ -31,9 +31,7 @@ pub(super) fn tell_apart(tree: &Tree, order: &[TUnitId], steps: &mut [String]) {
         if let Some(new) = made {
             let step = &mut steps[i];
             step.pop();
-            step.push_str(" until it is ");
-            step.push_str(&new.join(" and "));
-            step.push('.');
+            step.push_str(&format!(" until it is {}.", new.join(" and ")));
         }
     }
     // what still reads the same is the same action once more (a second spoonful of soy sauce)
