@@ -34,8 +34,7 @@ fn object_lines(out: &mut String, node: &ObjectNode, moves: bool, goal: Option<&
 }
 
 fn motion_line(out: &mut String, motion: &str, times: &[String]) {
-    out.push_str("M\t");
-    out.push_str(motion);
+    let _ = write!(out, "M\t{motion}");
     for t in times {
         let _ = write!(out, "\t<{t}>");
     }

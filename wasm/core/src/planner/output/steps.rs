@@ -500,18 +500,14 @@ fn write(
             ("on", true) => ("onto", "on"),
             (r, _) => (r, r),
         };
-        text.push(' ');
-        text.push_str(into);
+        text.push_str(&format!(" {into}"));
         // a long list of what is there already says less than the container's name
         if (1..=2).contains(&settled.len()) {
             text.push(' ');
             push_list(&mut text, settled);
-            text.push(' ');
-            text.push_str(rel);
+            text.push_str(&format!(" {rel}"));
         }
-        for part in [" the ", c] {
-            text.push_str(part);
-        }
+        text.push_str(&format!(" the {c}"));
     }
     if !tools.is_empty() {
         text.push_str(" with ");
