@@ -100,13 +100,9 @@ pub fn robot_view(plan: &Plan, options: &RobotOptions, motions: &Motions) -> Rob
         .iter()
         .map(|u| motions.figures(&u.motion))
         .collect();
+    // a stable sort: ties stay in unit order
     let mut by_rate: Vec<usize> = (0..figures.len()).collect();
-    by_rate.sort_by(|&a, &b| {
-        figures[a]
-            .success_rate
-            .total_cmp(&figures[b].success_rate)
-            .then(a.cmp(&b))
-    });
+    by_rate.sort_by(|&a, &b| figures[a].success_rate.total_cmp(&figures[b].success_rate));
     let mut human_units: Vec<usize> = by_rate.into_iter().take(options.human_steps).collect();
     human_units.sort_unstable();
     let units: Vec<RobotUnit> = figures

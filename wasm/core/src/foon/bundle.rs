@@ -34,17 +34,12 @@ pub fn split_bundle_bytes(bytes: &[u8]) -> Vec<(String, &[u8])> {
     out
 }
 
-/// Joins files into bundle text.
+/// Joins files into bundle text, each ended by a line end.
 pub fn join_bundle<'a>(files: impl IntoIterator<Item = (&'a str, &'a str)>) -> String {
     let mut out = String::new();
     for (name, text) in files {
-        out.push_str(FILE_MARK);
-        out.push_str(name);
-        out.push('\n');
-        out.push_str(text);
-        if !text.ends_with('\n') {
-            out.push('\n');
-        }
+        let end = if text.ends_with('\n') { "" } else { "\n" };
+        out.push_str(&format!("{FILE_MARK}{name}\n{text}{end}"));
     }
     out
 }

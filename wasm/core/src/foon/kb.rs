@@ -102,9 +102,8 @@ impl KnowledgeBase {
         let (merged, goal_marks) = merged_units(subgraphs, &numbers);
         let mut units = Vec::with_capacity(merged.len());
         let mut provenance = Vec::with_capacity(merged.len());
-        for ((_, motion, _), (mut inputs, mut outputs, files)) in merged {
-            inputs.sort();
-            outputs.sort();
+        // `objects` sorted both lists, and OR-ing flags keeps them sorted
+        for ((_, motion, _), (inputs, outputs, files)) in merged {
             units.push(FunctionalUnit {
                 inputs,
                 motion,
@@ -137,7 +136,7 @@ impl KnowledgeBase {
             warnings,
         );
         let by_subgraph = kb.units_by_subgraph();
-        let goals = goal_marks
+        kb.goals = goal_marks
             .into_iter()
             .map(|(subgraph, node, dish_class)| {
                 let units = by_subgraph.get(subgraph.as_str());
@@ -150,7 +149,6 @@ impl KnowledgeBase {
                 }
             })
             .collect();
-        kb.goals = goals;
         Ok(kb)
     }
 
@@ -203,8 +201,7 @@ impl KnowledgeBase {
         UnitId::all(self.units.len()).zip(&self.units)
     }
 
-    /// The units of each subgraph, ascending (one pass: asking per subgraph would scan every unit for
-    /// every file, which is quadratic in a large universal FOON).
+    /// The units of each subgraph, ascending.
     pub fn units_by_subgraph(&self) -> HashMap<&str, Vec<UnitId>> {
         let mut out: HashMap<&str, Vec<UnitId>> = HashMap::new();
         for (u, files) in UnitId::all(self.provenance.len()).zip(&self.provenance) {
@@ -305,7 +302,7 @@ fn merged_units(
         for u in &g.units {
             let ins = objects(&u.inputs, node_index);
             let outs = objects(&u.outputs, node_index);
-            let key = (sorted_nodes(&ins), u.motion.clone(), sorted_nodes(&outs));
+            let key = (node_ids(&ins), u.motion.clone(), node_ids(&outs));
             let entry = merged
                 .entry(key)
                 .or_insert_with(|| (ins.clone(), outs.clone(), BTreeSet::new()));
@@ -331,6 +328,7 @@ fn merged_units(
     (merged, goal_marks)
 }
 
+/// The unit's objects by node id, sorted.
 fn objects(
     list: &[crate::foon::read::ParsedObject],
     index: &FxHashMap<&ObjectNode, NodeId>,
@@ -346,17 +344,14 @@ fn objects(
     out
 }
 
-fn sorted_nodes(list: &[UnitObject]) -> Vec<NodeId> {
-    let mut ids: Vec<NodeId> = list.iter().map(|o| o.node).collect();
-    ids.sort_unstable();
-    ids
+/// The node ids of sorted objects: sorted too.
+fn node_ids(list: &[UnitObject]) -> Vec<NodeId> {
+    list.iter().map(|o| o.node).collect()
 }
 
 fn or_flags(into: &mut [UnitObject], from: &[UnitObject]) {
     for o in into.iter_mut() {
-        if from.iter().any(|f| f.node == o.node && f.moves) {
-            o.moves = true;
-        }
+        o.moves |= from.iter().any(|f| f.node == o.node && f.moves);
     }
 }
 
@@ -372,6 +367,7 @@ fn is_raw(node: &ObjectNode) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::foon::model::State;
     use crate::foon::read::parse_str;
 
     const A: &str = "//\nO\ttomato\t1\nS\twhole\nO\tknife\t0\nM\tslice\t<Assumed>\nO\ttomato\t1\nS\tsliced\n//\nO\ttomato\t1\nS\tsliced\nO\tbowl\t0\nS\tempty\nM\tadd\t<Assumed>\nO\tbowl\t0\nS\tcontains\t{tomato}\nO\tsalad\t1\t15\nS\tin\t[bowl]\n";
@@ -402,22 +398,12 @@ mod tests {
     #[test]
     fn indexes_producers_consumers_goals_and_kitchen() {
         let k = kb(&[("a.txt", A)]);
-        let sliced = k
-            .node_id(&ObjectNode::new(
-                "tomato",
-                vec![crate::foon::model::State::plain("sliced")],
-            ))
-            .unwrap();
+        let tomato = |state| k.node_id(&ObjectNode::new("tomato", vec![State::plain(state)]));
+        let sliced = tomato("sliced").unwrap();
         assert_eq!(k.producers[sliced].len(), 1);
         assert_eq!(k.consumers[sliced].len(), 1);
         assert!(!k.kitchen[sliced]);
-        let whole = k
-            .node_id(&ObjectNode::new(
-                "tomato",
-                vec![crate::foon::model::State::plain("whole")],
-            ))
-            .unwrap();
-        assert!(k.kitchen[whole]);
+        assert!(k.kitchen[tomato("whole").unwrap()]);
         assert_eq!(k.goals.len(), 1);
         assert_eq!(k.goals[0].dish_class, Some(15));
         assert_eq!(k.nodes[k.goals[0].node].label, "salad");

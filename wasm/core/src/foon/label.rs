@@ -83,14 +83,9 @@ fn singular_of(word: &str) -> Cow<'_, str> {
 /// The normal form of an object label: folded, with its head (last) word singular.
 /// Modifiers are left alone ("brussels sprouts" -> "brussels sprout").
 pub fn normalize_label(text: &str) -> String {
-    let mut folded = fold(text);
-    let at = folded.rfind(' ').map_or(0, |i| i + 1);
-    let last = singular_of(&folded[at..]);
-    if last != folded[at..] {
-        let last = last.into_owned();
-        folded.replace_range(at.., &last);
-    }
-    folded
+    let folded = fold(text);
+    let (modifiers, head) = folded.split_at(folded.rfind(' ').map_or(0, |i| i + 1));
+    format!("{modifiers}{}", singular_of(head))
 }
 
 /// States and motions are verbs/adjectives: folded only, never singularised.

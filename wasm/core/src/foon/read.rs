@@ -196,7 +196,6 @@ fn changed_food<'a>(
 /// are dropped (FOON files often end lines with a stray tab).
 fn fields(line: &str) -> Vec<(usize, &str)> {
     let mut out = Vec::new();
-    // columns are counted as we go: a line of many short fields must not cost quadratic time
     let mut col = 1usize;
     for part in line.split('\t') {
         out.push((col, part.trim()));
@@ -211,16 +210,13 @@ fn fields(line: &str) -> Vec<(usize, &str)> {
 /// The line type: `O`, `S` or `M`, optionally followed by an index (indexed dialect) and optionally
 /// preceded by `!` (goal mark). Returns (kind, goal-mark).
 fn line_kind(head: &str) -> Option<(char, bool)> {
-    let (goal, rest) = match head.strip_prefix('!') {
-        Some(rest) => (true, rest),
-        None => (false, head),
-    };
-    let mut chars = rest.chars();
+    let marked = head.strip_prefix('!');
+    let mut chars = marked.unwrap_or(head).chars();
     let kind = chars.next()?;
     if !matches!(kind, 'O' | 'S' | 'M') || !chars.all(|c| c.is_ascii_digit()) {
         return None;
     }
-    Some((kind, goal))
+    Some((kind, marked.is_some()))
 }
 
 /// A label in its normal form.
@@ -274,7 +270,6 @@ fn state_arg(line: &Line, col: usize, text: &str) -> Result<Option<StateArg>> {
 
 /// Index of the first object whose label already occurred earlier in the list.
 fn repeated_label_at(objects: &[ParsedObject]) -> Option<usize> {
-    // a set, not a scan of the objects before each one: units with very many objects stay linear
     let mut seen = rustc_hash::FxHashSet::default();
     objects
         .iter()
@@ -319,12 +314,7 @@ fn check_goal_classes(file: &str, units: &[ParsedUnit]) -> Result<()> {
     let mut marks: Vec<(usize, &ObjectNode, u32)> = units
         .iter()
         .flat_map(|u| u.inputs.iter().chain(u.outputs.iter()))
-        .filter_map(|o| match o.goal {
-            Some(GoalMark {
-                dish_class: Some(c),
-            }) => Some((o.line, &o.node, c)),
-            _ => None,
-        })
+        .filter_map(|o| Some((o.line, &o.node, o.goal.as_ref()?.dish_class?)))
         .collect();
     marks.sort();
     let mut first: rustc_hash::FxHashMap<&ObjectNode, (usize, u32)> = Default::default();
@@ -344,9 +334,7 @@ pub fn parse_str(name: &str, text: &str) -> Result<Subgraph> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut reader = Reader {
         name,
-        units: Vec::new(),
-        warnings: Vec::new(),
-        unit: UnitBuilder::default(),
+        ..Reader::default()
     };
     let mut last_line = 0;
     let mut title = None;
@@ -447,13 +435,14 @@ impl<'l> Line<'l> {
     /// An error when the line has more than `most` fields.
     fn at_most(&self, most: usize, what: &str) -> Result<()> {
         match self.f.get(most) {
-            Some(&(col, _)) => Err(self.error(ErrorCode::UnknownLine, col, what.to_string())),
+            Some(&(col, _)) => Err(self.error(ErrorCode::UnknownLine, col, what)),
             None => Ok(()),
         }
     }
 }
 
 /// The units of one file as its lines are read.
+#[derive(Default)]
 struct Reader<'a> {
     name: &'a str,
     units: Vec<ParsedUnit>,
@@ -522,26 +511,20 @@ impl Reader<'_> {
                 return Err(line.error(ErrorCode::BadBrackets, *acol, "state has two arguments"));
             }
         };
-        let arg = match arg_text {
-            None => None,
-            Some(text) => match state_arg(line, acol, text)? {
-                Some(arg) => Some(arg),
-                // `on []` occurs in FOON-111: keep the state, drop the empty argument, report
-                // it (the same for `[ ]`, `{ , }` and an argument written in the state field)
-                None => {
-                    self.warnings.push(line.error(
-                        ErrorCode::EmptyLabel,
-                        acol,
-                        format!("state '{state_name}' has an empty argument; it was left out"),
-                    ));
-                    None
-                }
-            },
-        };
+        let arg = arg_text
+            .map(|text| state_arg(line, acol, text))
+            .transpose()?;
+        // `on []` occurs in FOON-111: keep the state, drop the empty argument, report it (the same
+        // for `[ ]`, `{ , }` and an argument written in the state field)
+        if arg == Some(None) {
+            let why = format!("state '{state_name}' has an empty argument; it was left out");
+            self.warnings
+                .push(line.error(ErrorCode::EmptyLabel, acol, why));
+        }
         line.at_most(3, "state line has more than three fields")?;
         open.4.push(State {
             name: state_name.into(),
-            arg,
+            arg: arg.flatten(),
         });
         Ok(())
     }

@@ -18,7 +18,6 @@ use std::sync::Arc;
 const MAGIC: &[u8; 6] = b"FOONKB";
 /// Bumped whenever the layout or the meaning of what is stored changes.
 const VERSION: u16 = 1;
-const HEADER: usize = MAGIC.len() + 2 + 8;
 
 /// The knowledge base as snapshot bytes (`read` gives it back equal).
 pub fn write(kb: &KnowledgeBase) -> Vec<u8> {
@@ -42,28 +41,31 @@ pub fn write(kb: &KnowledgeBase) -> Vec<u8> {
         body.extend_from_slice(s.as_bytes());
     }
     body.extend_from_slice(&w.out);
-    let mut out = Vec::with_capacity(HEADER + body.len());
-    out.extend_from_slice(MAGIC);
+    with_header(&body)
+}
+
+/// `body` after the magic, the version and the body's checksum.
+fn with_header(body: &[u8]) -> Vec<u8> {
+    let mut out = MAGIC.to_vec();
     out.extend_from_slice(&VERSION.to_le_bytes());
-    out.extend_from_slice(&checksum(&body).to_le_bytes());
-    out.extend_from_slice(&body);
+    out.extend_from_slice(&checksum(body).to_le_bytes());
+    out.extend_from_slice(body);
     out
 }
 
 /// The knowledge base the bytes hold; `None` for bytes that are damaged, truncated, of another format
 /// version or not a snapshot at all.
 pub fn read(bytes: &[u8]) -> Option<KnowledgeBase> {
-    let (header, body) = bytes.split_at_checked(HEADER)?;
-    let version = u16::from_le_bytes(header[MAGIC.len()..MAGIC.len() + 2].try_into().ok()?);
-    let sum = u64::from_le_bytes(header[MAGIC.len() + 2..].try_into().ok()?);
-    if &header[..MAGIC.len()] != MAGIC || version != VERSION || checksum(body) != sum {
+    let (magic, rest) = bytes.split_first_chunk()?;
+    let (version, rest) = rest.split_first_chunk()?;
+    let (sum, body) = rest.split_first_chunk()?;
+    let version = u16::from_le_bytes(*version);
+    if magic != MAGIC || version != VERSION || checksum(body) != u64::from_le_bytes(*sum) {
         return None;
     }
     let mut r = Reader {
         bytes: body,
-        at: 0,
-        strings: Vec::new(),
-        nodes: 0,
+        ..Reader::default()
     };
     r.strings = r.seq(|r| {
         let len = r.num()?;
@@ -190,18 +192,14 @@ impl<'k> Writer<'k> {
     fn warning(&mut self, e: &'k FoonError) {
         self.str(e.code.as_str());
         self.str(&e.message);
-        match &e.file {
-            None => self.num(0),
-            Some(file) => {
-                self.num(1);
-                self.str(file);
-            }
-        }
+        // the file as a list of none or one
+        self.seq(e.file.as_slice(), |w, file| w.str(file));
         self.option(e.line);
         self.option(e.column);
     }
 }
 
+#[derive(Default)]
 struct Reader<'b> {
     bytes: &'b [u8],
     at: usize,
@@ -329,15 +327,6 @@ mod tests {
 
     fn kb() -> KnowledgeBase {
         KnowledgeBase::merge(&[parse_str("a.txt", A).unwrap()]).unwrap()
-    }
-
-    /// A snapshot of `body` with a right header and checksum.
-    fn with_header(body: &[u8]) -> Vec<u8> {
-        let mut out = MAGIC.to_vec();
-        out.extend_from_slice(&VERSION.to_le_bytes());
-        out.extend_from_slice(&checksum(body).to_le_bytes());
-        out.extend_from_slice(body);
-        out
     }
 
     #[test]

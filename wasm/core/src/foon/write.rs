@@ -4,7 +4,7 @@
 
 use crate::foon::bundle::FILE_MARK;
 use crate::foon::kb::KnowledgeBase;
-use crate::foon::model::{NodeId, ObjectNode, State};
+use crate::foon::model::{NodeId, ObjectNode, State, UnitObject};
 use crate::foon::read::{GoalMark, ParsedObject, Subgraph};
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -34,32 +34,40 @@ fn object_lines(out: &mut String, node: &ObjectNode, moves: bool, goal: Option<&
 }
 
 fn motion_line(out: &mut String, motion: &str, times: &[String]) {
-    out.push_str("M\t");
-    out.push_str(motion);
+    let _ = write!(out, "M\t{motion}");
     for t in times {
         let _ = write!(out, "\t<{t}>");
     }
     out.push('\n');
 }
 
+/// Units given as (inputs, motion, times, outputs), each after a `//` line and the last followed by
+/// one: its inputs (written by `object`), its motion line, its outputs.
+fn units_text<'u, O: 'u>(
+    out: &mut String,
+    units: impl Iterator<Item = (&'u [O], &'u str, &'u [String], &'u [O])>,
+    object: impl Fn(&mut String, &O),
+) {
+    let mut any = false;
+    for (inputs, motion, times, outputs) in units {
+        out.push_str("//\n");
+        inputs.iter().for_each(|o| object(out, o));
+        motion_line(out, motion, times);
+        outputs.iter().for_each(|o| object(out, o));
+        any = true;
+    }
+    if any {
+        out.push_str("//\n");
+    }
+}
+
 /// One subgraph as FOON text (plain dialect); motion times are kept.
 pub fn subgraph_text(g: &Subgraph) -> String {
     let mut out = String::new();
-    let object =
-        |out: &mut String, o: &ParsedObject| object_lines(out, &o.node, o.moves, o.goal.as_ref());
-    for u in &g.units {
-        out.push_str("//\n");
-        for o in &u.inputs {
-            object(&mut out, o);
-        }
-        motion_line(&mut out, &u.motion, &u.times);
-        for o in &u.outputs {
-            object(&mut out, o);
-        }
-    }
-    if !g.units.is_empty() {
-        out.push_str("//\n");
-    }
+    let units = (g.units.iter()).map(|u| (&u.inputs[..], &*u.motion, &u.times[..], &u.outputs[..]));
+    units_text(&mut out, units, |out, o: &ParsedObject| {
+        object_lines(out, &o.node, o.moves, o.goal.as_ref())
+    });
     out
 }
 
@@ -77,26 +85,13 @@ pub fn kb_bundle(kb: &KnowledgeBase) -> String {
     for name in names {
         let _ = writeln!(out, "{FILE_MARK}{name}");
         let units = by_subgraph.get(name).map_or(&[][..], Vec::as_slice);
-        for &u in units {
-            let unit = &kb.units[u];
-            out.push_str("//\n");
-            let object = |out: &mut String, node: NodeId, moves: bool| {
-                let goal = goals
-                    .get(&(name, node))
-                    .map(|&dish_class| GoalMark { dish_class });
-                object_lines(out, &kb.nodes[node], moves, goal.as_ref());
-            };
-            for o in &unit.inputs {
-                object(&mut out, o.node, o.moves);
-            }
-            motion_line(&mut out, &unit.motion, &[]);
-            for o in &unit.outputs {
-                object(&mut out, o.node, o.moves);
-            }
-        }
-        if !units.is_empty() {
-            out.push_str("//\n");
-        }
+        let units = (units.iter().map(|&u| &kb.units[u]))
+            .map(|u| (&u.inputs[..], &*u.motion, &[][..], &u.outputs[..]));
+        units_text(&mut out, units, |out, o: &UnitObject| {
+            let goal = goals.get(&(name, o.node));
+            let goal = goal.map(|&dish_class| GoalMark { dish_class });
+            object_lines(out, &kb.nodes[o.node], o.moves, goal.as_ref());
+        });
     }
     out
 }

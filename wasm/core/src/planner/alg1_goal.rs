@@ -85,17 +85,10 @@ pub(crate) fn runners_up<'a>(
     let goals = class
         .and_then(|c| index.goals_of_class(c))
         .unwrap_or_else(|| index.all_goals());
-    let mut all: Vec<Rated> = rated(kb, scorer, goals, query)
+    rated(kb, scorer, goals, query)
         .into_iter()
-        .map(|(r, _)| r)
-        .filter(|r| !std::ptr::eq(r.goal, chosen.goal))
-        .collect();
-    all.sort_by(|a, b| compare(kb, b, a).0);
-    all.into_iter()
-        .map(|r| Chosen {
-            goal: r.goal,
-            score: r.score,
-        })
+        .filter(|(r, _)| !std::ptr::eq(r.goal, chosen.goal))
+        .map(|(r, _)| r.into())
         .collect()
 }
 
@@ -106,21 +99,12 @@ fn best_of<'a>(
     goals: &super::index::GoalClass,
     query: &Query,
 ) -> Option<Chosen<'a>> {
-    rated(kb, scorer, goals, query)
-        .into_iter()
-        .map(|(r, _)| r)
-        .reduce(|best, r| match compare(kb, &r, &best).0 {
-            Ordering::Greater => r,
-            _ => best,
-        })
-        .map(|b| Chosen {
-            goal: b.goal,
-            score: b.score,
-        })
+    let best = rated(kb, scorer, goals, query).into_iter().next();
+    best.map(|(r, _)| r.into())
 }
 
-/// Every goal of `goals` as Alg. 1 weighs it, with its fit; a goal that makes what the query brings
-/// ready-made loses `MAKES_WHAT_IS_BROUGHT` of its score.
+/// Every goal of `goals` as Alg. 1 weighs it, with its fit, best first (`compare`); a goal that makes
+/// what the query brings ready-made loses `MAKES_WHAT_IS_BROUGHT` of its score.
 fn rated<'a>(
     kb: &'a KnowledgeBase,
     scorer: &Scorer,
@@ -144,7 +128,9 @@ fn rated<'a>(
         };
         (rated, fit)
     };
-    goals.goals.iter().map(rate).collect()
+    let mut all: Vec<_> = goals.goals.iter().map(rate).collect();
+    all.sort_by(|a, b| compare(kb, &b.0, &a.0).0);
+    all
 }
 
 /// The candidates of `goals`, best first, as the trace shows them; with what separated the first two.
@@ -154,8 +140,7 @@ fn candidates(
     goals: &super::index::GoalClass,
     query: &Query,
 ) -> (Vec<GoalCandidate>, Option<String>) {
-    let mut all = rated(kb, scorer, goals, query);
-    all.sort_by(|a, b| compare(kb, &b.0, &a.0).0);
+    let all = rated(kb, scorer, goals, query);
     let tie_break = match all.as_slice() {
         [a, b, ..] => Some(TIE_BREAKS[compare(kb, &a.0, &b.0).1].to_string()),
         _ => None,
@@ -253,6 +238,15 @@ struct Rated<'a> {
     score: f32,
     exact: usize,
     ingredients: usize,
+}
+
+impl<'a> From<Rated<'a>> for Chosen<'a> {
+    fn from(r: Rated<'a>) -> Chosen<'a> {
+        Chosen {
+            goal: r.goal,
+            score: r.score,
+        }
+    }
 }
 
 /// Tie-breaks of `compare`, in order, as the trace names them.

@@ -67,38 +67,44 @@ impl Search {
         }
         false
     }
+}
 
-    /// Post-order of the chosen units from `root`: each unit after the units making its inputs.
-    fn execution_order(&self, kb: &KnowledgeBase, root: NodeId) -> Vec<UnitId> {
-        let mut order = Vec::new();
-        let mut done = FixedBitSet::with_capacity(kb.units.len());
-        let mut reached = FixedBitSet::with_capacity(kb.nodes.len());
-        // iterative DFS over made nodes: (node, its unit once its inputs are pushed)
-        let mut stack: Vec<(NodeId, Option<UnitId>)> = Vec::new();
-        if self.made.contains(root.0) {
-            stack.push((root, None));
-        }
-        while let Some((node, expanded)) = stack.pop() {
-            if let Some(u) = expanded {
-                if !done.put(u.0) {
-                    order.push(u);
-                }
-                continue;
+/// The units `chosen` to make `root` and, through them, the nodes each needs made (`needed`,
+/// ascending), each unit after the units making its inputs (post-order from the root).
+pub(crate) fn execution_order(
+    root: NodeId,
+    chosen: &HashMap<NodeId, UnitId>,
+    needed: impl Fn(UnitId) -> Vec<NodeId>,
+) -> Vec<UnitId> {
+    let mut order = Vec::new();
+    let mut reached: HashSet<NodeId> = HashSet::default();
+    // (node, its unit once the unit's inputs are on the stack)
+    let mut stack: Vec<(NodeId, Option<UnitId>)> = vec![(root, None)];
+    while let Some((node, expanded)) = stack.pop() {
+        if let Some(u) = expanded {
+            if !order.contains(&u) {
+                order.push(u);
             }
-            let u = self.chosen[&node];
-            if reached.put(node.0) || done.contains(u.0) {
-                continue;
-            }
-            stack.push((node, Some(u)));
-            let mut inputs: Vec<NodeId> = kb.units[u]
-                .input_nodes()
-                .filter(|&n| self.made.contains(n.0) && !reached.contains(n.0))
-                .collect();
-            inputs.sort_unstable();
-            stack.extend(inputs.into_iter().rev().map(|n| (n, None)));
+            continue;
         }
-        order
+        let Some(&u) = chosen.get(&node) else {
+            continue;
+        };
+        if !reached.insert(node) || order.contains(&u) {
+            continue;
+        }
+        stack.push((node, Some(u)));
+        let inputs = needed(u).into_iter().filter(|n| !reached.contains(n));
+        stack.extend(inputs.rev().map(|n| (n, None)));
     }
+    order
+}
+
+/// The inputs of unit `u`, ascending.
+fn sorted_inputs(kb: &KnowledgeBase, u: UnitId) -> Vec<NodeId> {
+    let mut inputs: Vec<NodeId> = kb.units[u].input_nodes().collect();
+    inputs.sort_unstable();
+    inputs
 }
 
 /// A unit making the node being expanded, as the search weighs it.
@@ -275,7 +281,7 @@ pub(crate) fn retrieve_explained(
         s.expand(kb, node, u);
     }
     Some(Retrieved {
-        units: s.execution_order(kb, root),
+        units: execution_order(root, &s.chosen, |u| sorted_inputs(kb, u)),
         chosen: s.chosen,
         blocked,
     })
@@ -327,10 +333,9 @@ impl Search {
                 g: None,
             };
             trace.record(|_| c.weighed.push((Some(candidate.clone()), u)));
-            let better = match c.best.as_mut() {
-                None => true,
-                Some(b) => candidate.decide(b, node, kb, index, scorer).0 == Ordering::Greater,
-            };
+            let better = (c.best.as_mut()).is_none_or(|b| {
+                candidate.decide(b, node, kb, index, scorer).0 == Ordering::Greater
+            });
             if better {
                 c.best = Some(candidate);
             }
@@ -343,9 +348,7 @@ impl Search {
         self.chosen.insert(node, u);
         self.made.insert(node.0);
         self.in_tree.insert(u.0);
-        let mut inputs: Vec<NodeId> = kb.units[u].input_nodes().collect();
-        inputs.sort_unstable();
-        for n in inputs {
+        for n in sorted_inputs(kb, u) {
             if !self.visited.put(n.0) {
                 self.queue.push_back((n, Some(u)));
             }

@@ -183,16 +183,15 @@ impl Trace {
         outcomes: &[IngredientOutcome],
         is_label: impl Fn(&str) -> bool,
     ) {
-        let mut ordered = Vec::with_capacity(outcomes.len());
-        for o in outcomes {
+        let ordered = outcomes.iter().map(|o| {
             let mut i = self.ingredient(&o.object, Some(&o.state)).clone();
             i.case = o.case;
             i.planned = o.status == Status::Planned;
             i.reason = o.reason.clone();
             i.route = route(o, &i, is_label(&o.object)).to_string();
-            ordered.push(i);
-        }
-        self.ingredients = ordered;
+            i
+        });
+        self.ingredients = ordered.collect();
     }
 }
 

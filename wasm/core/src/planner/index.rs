@@ -25,9 +25,9 @@ pub struct PlannerIndex {
     pub(crate) ingredient_labels: Vec<String>,
     /// label -> state -> dish class -> occurrences in units of recipes of that class; class `None`
     /// counts all. Nested so that a lookup borrows its words.
-    label_state: HashMap<String, HashMap<String, ClassCounts>>,
+    label_state: HashMap<String, StateCounts>,
     /// state -> dish class -> occurrences; class `None` counts all.
-    state_freq: HashMap<String, ClassCounts>,
+    state_freq: StateCounts,
     /// State word -> the motion most used to bring an object into it.
     motion_for_state: HashMap<String, String>,
     /// Category -> the motion most used to bring an object into a state of it.
@@ -103,6 +103,8 @@ static NEXT_ID: AtomicU64 = AtomicU64::new(1);
 
 /// Occurrences per dish class (`None`: all classes).
 type ClassCounts = HashMap<Option<u32>, u32>;
+/// Occurrences of each state word per dish class.
+type StateCounts = HashMap<String, ClassCounts>;
 
 /// The key with the highest count; ties to the smallest key, whatever the order counts came in.
 fn best<K: Ord + Clone>(counts: &BTreeMap<K, u32>) -> Option<K> {
@@ -110,9 +112,18 @@ fn best<K: Ord + Clone>(counts: &BTreeMap<K, u32>) -> Option<K> {
     ranked.map(|(k, _)| k.clone())
 }
 
+/// Per key, the value counted most (`best`).
+fn most_counted<K: Eq + std::hash::Hash, V: Ord + Clone>(
+    counts: BTreeMap<K, BTreeMap<V, u32>>,
+) -> HashMap<K, V> {
+    (counts.into_iter())
+        .filter_map(|(k, c)| Some((k, best(&c)?)))
+        .collect()
+}
+
 /// Counts per (word, class) counted on borrowed words, as owned word -> class -> count.
-fn by_word(flat: HashMap<(&str, Option<u32>), u32>) -> HashMap<String, ClassCounts> {
-    let mut out: HashMap<String, ClassCounts> = HashMap::default();
+fn by_word(flat: HashMap<(&str, Option<u32>), u32>) -> StateCounts {
+    let mut out = StateCounts::default();
     for ((word, class), n) in flat {
         out.entry(word.to_string()).or_default().insert(class, n);
     }
@@ -159,12 +170,7 @@ fn made_in(kb: &KnowledgeBase, unit_sources: &[Vec<u32>]) -> Vec<Vec<u32>> {
 
 /// How often each label is in each state, and each state occurs, in units of recipes of each dish class
 /// (class `None` counts all).
-fn state_counts(
-    kb: &KnowledgeBase,
-) -> (
-    HashMap<String, HashMap<String, ClassCounts>>,
-    HashMap<String, ClassCounts>,
-) {
+fn state_counts(kb: &KnowledgeBase) -> (HashMap<String, StateCounts>, StateCounts) {
     let mut subgraph_class: HashMap<&str, Option<u32>> = HashMap::default();
     for g in &kb.goals {
         subgraph_class.entry(&g.subgraph).or_insert(g.dish_class);
@@ -229,18 +235,9 @@ impl MotionTables {
             }
         }
         MotionTables {
-            for_state: motion_state
-                .iter()
-                .filter_map(|(s, m)| Some((s.clone(), best(m)?)))
-                .collect(),
-            for_category: motion_cat
-                .iter()
-                .filter_map(|(c, m)| Some((*c, best(m)?)))
-                .collect(),
-            utensil: motion_utensil
-                .iter()
-                .filter_map(|(m, u)| Some((m.clone(), best(u)?)))
-                .collect(),
+            for_state: most_counted(motion_state),
+            for_category: most_counted(motion_cat),
+            utensil: most_counted(motion_utensil),
         }
     }
 }
@@ -367,26 +364,10 @@ fn goal_classes(
 
 /// Food taxonomy categories (`data/food_taxonomy.tsv`) of ingredients sold as liquids (flavorings are
 /// extracts and essences, but for the rare vanilla bean) or ground.
-const SOLD_AS: &[(&str, Category)] = &[
-    ("beverage", Category::Liquid),
-    ("beer", Category::Liquid),
-    ("dressing", Category::Liquid),
-    ("flavoring", Category::Liquid),
-    ("juice", Category::Liquid),
-    ("milk", Category::Liquid),
-    ("oil", Category::Liquid),
-    ("plant milk", Category::Liquid),
-    ("sauce", Category::Liquid),
-    ("spirit", Category::Liquid),
-    ("stock", Category::Liquid),
-    ("syrup", Category::Liquid),
-    ("vinegar", Category::Liquid),
-    ("wine", Category::Liquid),
-    ("flour", Category::Ground),
-    ("leavener", Category::Ground),
-    ("spice blend", Category::Ground),
-    ("starch", Category::Ground),
-];
+const SOLD_LIQUID: &str =
+    "beverage, beer, dressing, flavoring, juice, milk, oil, plant milk, sauce, \
+    spirit, stock, syrup, vinegar, wine";
+const SOLD_GROUND: &str = "flour, leavener, spice blend, starch";
 
 /// The ingredients sold liquid or ground rather than whole (water, oil, flour, a spice blend), with that
 /// category: a node of one without food states is in it. Decided by the label's starting nodes (those no
@@ -426,7 +407,8 @@ fn sold_as(kb: &KnowledgeBase, ingredient_labels: &[String]) -> HashMap<String, 
             .find(|&c| matches!(c, Category::Liquid | Category::Ground));
         named.or_else(|| {
             let name = &taxonomy.category(taxonomy.lookup(label)?).name;
-            SOLD_AS.iter().find(|(n, _)| n == name).map(|&(_, c)| c)
+            let sold = |c, names: &str| names.split(", ").any(|n| n == name).then_some(c);
+            sold(Category::Liquid, SOLD_LIQUID).or_else(|| sold(Category::Ground, SOLD_GROUND))
         })
     };
     ingredient_labels

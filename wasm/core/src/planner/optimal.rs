@@ -12,7 +12,7 @@
 
 mod exact;
 
-use super::alg2_retrieve::{retrieve, Retrieved};
+use super::alg2_retrieve::{execution_order, retrieve, Retrieved};
 use super::explain::{kb_unit, Recorder};
 use super::index::PlannerIndex;
 use super::score::Scorer;
@@ -71,9 +71,8 @@ fn search_space(
     root: NodeId,
 ) -> HashMap<UnitId, Vec<NodeId>> {
     let mut space: HashMap<UnitId, Vec<NodeId>> = HashMap::default();
-    let mut seen: HashSet<NodeId> = HashSet::default();
+    let mut seen: HashSet<NodeId> = HashSet::from_iter([root]);
     let mut queue = VecDeque::from([root]);
-    seen.insert(root);
     while let Some(node) = queue.pop_front() {
         for &u in kb.producers.get(node.0).map_or(&[][..], Vec::as_slice) {
             let unit = &kb.units[u];
@@ -259,37 +258,6 @@ fn choose(kb: &KnowledgeBase, lightest: &Lightest, root: NodeId) -> Tree {
     Tree { nodes, chosen }
 }
 
-/// The chosen units, each after the units making its inputs (post-order from the root).
-fn execution_order(
-    space: &HashMap<UnitId, Vec<NodeId>>,
-    chosen: &HashMap<NodeId, UnitId>,
-    root: NodeId,
-) -> Vec<UnitId> {
-    let mut order = Vec::new();
-    let mut done: HashSet<NodeId> = HashSet::default();
-    let mut stack = vec![(root, false)];
-    while let Some((node, inputs_placed)) = stack.pop() {
-        let u = chosen[&node];
-        if inputs_placed {
-            if !order.contains(&u) {
-                order.push(u);
-            }
-            continue;
-        }
-        if !done.insert(node) {
-            continue;
-        }
-        stack.push((node, true));
-        // a value is final before the values built on it, so the chosen producers form no cycle
-        for &n in space[&u].iter().rev() {
-            if !done.contains(&n) {
-                stack.push((n, false));
-            }
-        }
-    }
-    order
-}
-
 /// The trace's record of a node of the tree: every unit of the space making it, with the value of the
 /// best tree through it.
 fn expansion(
@@ -401,7 +369,7 @@ pub(crate) fn retrieve_in_mode(
         ));
     }
     let retrieved = Retrieved {
-        units: execution_order(&lightest.space, &tree.chosen, root),
+        units: execution_order(root, &tree.chosen, |u| lightest.space[&u].clone()),
         chosen: tree.chosen,
         blocked: Vec::new(),
     };

@@ -32,9 +32,6 @@ pub(crate) struct Scorer<'a> {
     /// directions come from one comparison, and goal selection asks both of every pair); from the
     /// similarity's memory when it has one.
     rows: Vec<Arc<PairRow>>,
-    /// Per query name, its best similarity so far (`recall`, `GoalFits::fit`): one buffer for every
-    /// unit and goal.
-    best_to: RefCell<Vec<f32>>,
     units: RefCell<HashMap<UnitId, f32>>,
 }
 
@@ -51,8 +48,6 @@ impl<'a> Scorer<'a> {
                 .map(|q| sim.prepare(q, index.label_set, index.label_names()))
                 .collect(),
             rows: rows(sim, index.label_set, query, labels),
-            best_to: RefCell::new(Vec::with_capacity(query.len())),
-            // a plan scores a few units (9 on average over the dev queries, at most 37)
             units: RefCell::new(HashMap::default()),
         }
     }
@@ -97,9 +92,7 @@ impl<'a> Scorer<'a> {
     /// Σ over query names of the best similarity to any of `labels` (exact matches count 1).
     fn recall(&self, labels: &[u32]) -> f32 {
         // per query name, the best similarity to any of `labels` so far
-        let mut best_to = self.best_to.borrow_mut();
-        best_to.clear();
-        best_to.resize(self.query.len(), 0.0);
+        let mut best_to = vec![0.0f32; self.query.len()];
         for &l in labels {
             for (q, to) in best_to.iter_mut().enumerate() {
                 *to = to.max(self.both(q, l).0);
@@ -134,10 +127,8 @@ impl GoalFits<'_, '_> {
     /// How well a goal's ingredient set (`slots`) and the query's fit each other.
     pub fn fit(&self, slots: &[u32]) -> GoalFit {
         let n = self.rows.len();
-        // per query name, the best similarity to any of `slots` so far (one buffer for every goal)
-        let mut best_to = self.scorer.best_to.borrow_mut();
-        best_to.clear();
-        best_to.resize(n, 0.0);
+        // per query name, the best similarity to any of `slots` so far
+        let mut best_to = vec![0.0f32; n];
         let mut precision = 0.0f32;
         for &s in slots {
             let mut best_from = 0.0f32;

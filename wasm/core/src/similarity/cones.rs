@@ -5,6 +5,7 @@
 
 /// Cones over a set of unit vectors; vectors that are missing (`has_vector` false) form one more group
 /// whose cosine with anything is 0.
+#[derive(Default)]
 pub struct Cones {
     dims: usize,
     /// Vector indices, grouped by cone, ascending within each; the vectorless group last.
@@ -43,11 +44,8 @@ impl Cones {
         groups.retain(|g| !g.is_empty());
         let mut cones = Cones {
             dims,
-            members: Vec::with_capacity(has_vector.len()),
             at: vec![0],
-            centroids: Vec::with_capacity(groups.len() * dims),
-            cos_half: Vec::with_capacity(groups.len()),
-            sin_half: Vec::with_capacity(groups.len()),
+            ..Cones::default()
         };
         for g in &groups {
             let mut centroid = vec![0f32; dims];

@@ -118,8 +118,7 @@ impl PairMemory {
 
 /// One name's pairs with a candidate list, by candidate position; each filled once. Atomic cells let
 /// plans share a row without a lock (a pair written twice is written the same). The cells come in
-/// blocks made on first write: a plan asks g(u) about a few dozen of a knowledge base's labels, so a row
-/// of them all is cheap to make and holds little.
+/// blocks made on first write: a plan asks about a few dozen of a knowledge base's labels.
 #[derive(Debug)]
 pub struct PairRow {
     blocks: Box<[OnceLock<Box<[AtomicU64; BLOCK]>>]>,

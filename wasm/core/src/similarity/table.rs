@@ -6,15 +6,18 @@
 //! version, sizes and CRC-32, and never panics on damaged input.
 
 use crate::error::{ErrorCode, FoonError, Result};
+use crate::memo::Memo;
 use rust_stemmers::{Algorithm, Stemmer};
 use rustc_hash::FxHashMap as HashMap;
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 
 pub const MAGIC: &[u8; 8] = b"FOONEMB\0";
 pub const VERSION: u32 = 2;
 /// Upper bounds that keep a damaged header from asking for absurd allocations.
 const MAX_DIMS: usize = 1024;
 const MAX_WORDS: usize = 1_000_000;
+/// Words whose stems `resolve` keeps; it starts again when full.
+const RESOLVED_LIMIT: usize = 100_000;
 
 /// Words that carry no food meaning inside an ingredient phrase.
 const STOP_WORDS: &[&str] = &[
@@ -31,7 +34,7 @@ pub struct EmbeddingTable {
     vectors: Vec<f32>,
     stemmer: Stemmer,
     /// `resolve` of each word asked so far: labels and taxonomy names repeat their words.
-    resolved: Mutex<HashMap<String, Arc<WordStems>>>,
+    resolved: Memo<String, Arc<WordStems>, RESOLVED_LIMIT>,
 }
 
 /// A word's stem, and the stems standing for it in the table (`EmbeddingTable::word_stems`).
@@ -108,8 +111,8 @@ impl<'a> Reader<'a> {
     }
 
     fn u32(&mut self, what: &str) -> Result<u32> {
-        let b = self.take(4, what)?;
-        Ok(u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+        let bytes = self.take(4, what)?.try_into().expect("four bytes taken");
+        Ok(u32::from_le_bytes(bytes))
     }
 }
 
@@ -146,11 +149,11 @@ pub fn is_stop_word(word: &str) -> bool {
 impl EmbeddingTable {
     /// Reads a table written by `scripts/build_embeddings.py`; `BadEmbeddings` on any damage.
     pub fn from_bytes(bytes: &[u8]) -> Result<EmbeddingTable> {
-        if bytes.len() < MAGIC.len() + 20 || &bytes[..MAGIC.len()] != MAGIC {
+        if bytes.len() < MAGIC.len() + 20 || !bytes.starts_with(MAGIC) {
             return Err(bad("not a foon-planner embedding table (bad magic)"));
         }
-        let body = &bytes[..bytes.len() - 4];
-        let stored = u32::from_le_bytes(bytes[bytes.len() - 4..].try_into().unwrap_or([0; 4]));
+        let (body, stored) = bytes.split_last_chunk().expect("longer than its magic");
+        let stored = u32::from_le_bytes(*stored);
         let mut r = Reader {
             bytes: body,
             at: MAGIC.len(),
@@ -199,7 +202,7 @@ impl EmbeddingTable {
             index,
             vectors,
             stemmer: Stemmer::create(Algorithm::English),
-            resolved: Mutex::new(HashMap::default()),
+            resolved: Memo::default(),
         })
     }
 
@@ -244,17 +247,15 @@ impl EmbeddingTable {
 
     /// The stem of a word with its `word_stems`, worked out once per word.
     pub fn resolve(&self, word: &str) -> Arc<WordStems> {
-        // a poisoned lock only means another caller panicked mid-insert: the memo is still sound
-        let mut resolved = self.resolved.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(r) = resolved.get(word) {
-            return Arc::clone(r);
+        if let Some(r) = self.resolved.get(word) {
+            return r;
         }
         let stem = self.stem(word);
         let r = Arc::new(WordStems {
             stems: self.resolve_word(word, &stem),
             stem,
         });
-        resolved.insert(word.to_string(), Arc::clone(&r));
+        self.resolved.insert(word.to_string(), Arc::clone(&r));
         r
     }
 

@@ -59,26 +59,21 @@ pub fn dish_classes() -> &'static [DishClass] {
     })
 }
 
+fn dish_class(index: u32) -> Option<&'static DishClass> {
+    dish_classes().iter().find(|c| c.index == index)
+}
+
 /// The indices of the classes kin to class `index` (`DishClass::kin`).
 pub fn kin_classes(index: u32) -> impl Iterator<Item = u32> {
-    let classes = dish_classes();
-    let kin = classes
-        .iter()
-        .find(|c| c.index == index)
-        .map_or(&[][..], |c| &c.kin[..]);
+    let kin = dish_class(index).map_or(&[][..], |c| &c.kin[..]);
     kin.iter().filter_map(|k| {
-        classes
-            .iter()
-            .find(|c| &c.normal_name == k)
-            .map(|c| c.index)
+        let class = dish_classes().iter().find(|c| &c.normal_name == k);
+        class.map(|c| c.index)
     })
 }
 
 pub fn dish_class_name(index: u32) -> Option<&'static str> {
-    dish_classes()
-        .iter()
-        .find(|c| c.index == index)
-        .map(|c| c.name.as_str())
+    dish_class(index).map(|c| c.name.as_str())
 }
 
 /// Maps a dish type or a dish title ("drinks", "Greek salads", "chicken noodle soup") to a class.

@@ -66,10 +66,9 @@ pub(crate) fn build(p: Parts) -> Plan {
         tree,
         known: Vec::new(),
     };
-    let mut objects = Vec::new();
     let mut steps: Vec<String> = order
         .iter()
-        .map(|&u| sentence(tree, u, &mut objects, &mut relations))
+        .map(|&u| sentence(tree, u, &mut relations))
         .collect();
     tell_apart(tree, order, &mut steps);
     let uses = Uses::new(tree, order);

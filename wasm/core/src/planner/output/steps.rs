@@ -31,9 +31,7 @@ pub(super) fn tell_apart(tree: &Tree, order: &[TUnitId], steps: &mut [String]) {
         if let Some(new) = made {
             let step = &mut steps[i];
             step.pop();
-            step.push_str(" until it is ");
-            step.push_str(&new.join(" and "));
-            step.push('.');
+            step.push_str(&format!(" until it is {}.", new.join(" and ")));
         }
     }
     // what still reads the same is the same action once more (a second spoonful of soy sauce)
@@ -148,14 +146,9 @@ pub(super) fn relation_to<'t>(tree: &'t Tree, container: &str) -> &'t str {
             .iter()
             .filter(move |slot| slot.utensil != food)
             .flat_map(|slot| &slot.node.states)
-            .find_map(|s| match &s.arg {
-                Some(StateArg::Container(c))
-                    if c == container && (s.name == "in" || s.name == "on") =>
-                {
-                    Some(s.name.as_str())
-                }
-                _ => None,
-            })
+            .filter(|s| matches!(&s.arg, Some(StateArg::Container(c)) if c == container))
+            .find(|s| s.name == "in" || s.name == "on")
+            .map(|s| s.name.as_str())
     };
     said_by(true).or_else(|| said_by(false)).unwrap_or("in")
 }
@@ -228,14 +221,8 @@ fn push<'n>(objects: &mut Vec<&'n str>, l: &'n str) {
     }
 }
 
-/// One plain sentence for a unit: "Slice the tomato on the cutting board." `objects` is a buffer reused
-/// from sentence to sentence (the sentence's objects, then its tools after them).
-pub(super) fn sentence<'t>(
-    tree: &'t Tree,
-    u: TUnitId,
-    objects: &mut Vec<&'t str>,
-    relations: &mut Relations<'t>,
-) -> String {
+/// One plain sentence for a unit: "Slice the tomato on the cutting board."
+pub(super) fn sentence<'t>(tree: &'t Tree, u: TUnitId, relations: &mut Relations<'t>) -> String {
     let said = Said {
         tree,
         unit: &tree.units[u],
@@ -243,19 +230,20 @@ pub(super) fn sentence<'t>(
     let unit = said.unit;
     let motion = unit.motion.trim_end_matches('*');
     let kind = MotionKind::of(motion);
-    objects.clear();
-    let found = said.objects(motion, &kind, objects, relations);
+    // the sentence's objects, then its tools after them
+    let mut objects = Vec::new();
+    let found = said.objects(motion, &kind, &mut objects, relations);
     let place = found.holder.or_else(|| {
         (!found.closed)
-            .then(|| said.place(objects, relations))
+            .then(|| said.place(&objects, relations))
             .flatten()
     });
     let settled = said.settled(
-        objects,
+        &mut objects,
         place.filter(|_| found.holder.is_none() && kind.puts),
     );
     let moved = objects.len();
-    said.tools(objects, &found, place);
+    said.tools(&mut objects, &found, place);
     let (objects, tools) = objects.split_at(moved);
     write(&unit.motion, objects, place, kind.puts, &settled, tools)
 }
@@ -270,11 +258,9 @@ impl<'t> Said<'t> {
         relations: &mut Relations<'t>,
     ) -> Found<'t> {
         let unit = self.unit;
-        let node = |x: SlotId| self.node(x);
-        let utensil = |x: SlotId| self.utensil(x);
-        self.push_inputs(objects, |x, m| m && !utensil(x));
+        self.push_inputs(objects, |x, m| m && !self.utensil(x));
         if objects.is_empty() {
-            self.push_inputs(objects, |x, _| !utensil(x));
+            self.push_inputs(objects, |x, _| !self.utensil(x));
         }
         let MotionKind {
             puts,
@@ -286,19 +272,19 @@ impl<'t> Said<'t> {
         // holds: the blender blends the whole cup, not the honey FOON moves ("Blend the honey, the
         // blueberry and the milk")
         if !objects.is_empty() && !puts && !handles && !closes && is_mixing_motion(motion) {
-            let label_of = |x: SlotId| node(x).label.as_str();
+            let label_of = |x: SlotId| self.node(x).label.as_str();
             let makes_new = unit.outputs.iter().any(|&(o, _)| {
-                !utensil(o) && !unit.inputs.iter().any(|&(i, _)| label_of(i) == label_of(o))
+                !self.utensil(o) && !unit.inputs.iter().any(|&(i, _)| label_of(i) == label_of(o))
             });
             let inside = |v: &ObjectNode, l: &str| {
                 unit.inputs.iter().any(|&(i, _)| {
-                    label_of(i) == l && node(i).container() == Some(v.label.as_str())
+                    label_of(i) == l && self.node(i).container() == Some(v.label.as_str())
                 })
             };
             let vessel = unit
                 .inputs
                 .iter()
-                .map(|&(i, _)| node(i))
+                .map(|&(i, _)| self.node(i))
                 .find(|v| v.holds_something() && objects.iter().all(|l| inside(v, l)));
             if let Some(v) = vessel.filter(|_| makes_new) {
                 for l in v.contents() {
@@ -319,7 +305,7 @@ impl<'t> Said<'t> {
         }
         if objects.is_empty() {
             if let Some(&(x, _)) = unit.inputs.first() {
-                push(objects, &node(x).label);
+                push(objects, &self.node(x).label);
             }
         }
         found
@@ -338,26 +324,24 @@ impl<'t> Said<'t> {
         relations: &mut Relations<'t>,
     ) {
         let unit = self.unit;
-        let node = |x: SlotId| self.node(x);
-        let utensil = |x: SlotId| self.utensil(x);
         let MotionKind { puts, closes, .. } = *kind;
         let tools_only = unit.inputs.iter().any(|&(x, m)| m && self.tool(x))
             && unit.inputs.iter().all(|&(x, m)| !m || self.tool(x))
             && !PUT_MOTIONS.contains(&unit.motion.trim_end_matches('*'));
-        let vessel = |i: &&(SlotId, bool)| node(i.0).holds_something();
+        let vessel = |i: &&(SlotId, bool)| self.node(i.0).holds_something();
         // a lid is put on or taken off what the unit covers or uncovers, before or after
         let covered = closes
             .then(|| {
                 let mut nodes = unit.inputs.iter().chain(&unit.outputs);
-                nodes.find(|i| node(i.0).states.iter().any(|s| s.name == "covered"))
+                nodes.find(|i| self.node(i.0).states.iter().any(|s| s.name == "covered"))
             })
             .flatten();
         // a moved tool (a spoon, even an empty or clean one), or a machine holding a vessel (a mixer with
         // its bowl), is not what is worked on; nor is a lid
         let machine = |x: SlotId| {
-            let n = node(x);
+            let n = self.node(x);
             let bare_tool =
-                utensil(x) && !n.holds_something() && n.states.iter().all(|s| s.arg.is_none());
+                self.utensil(x) && !n.holds_something() && n.states.iter().all(|s| s.arg.is_none());
             bare_tool || n.states.iter().any(|s| s.name == "with")
         };
         let moved = unit.inputs.iter().filter(|i| i.1);
@@ -369,7 +353,7 @@ impl<'t> Said<'t> {
                     && unit
                         .outputs
                         .iter()
-                        .any(|o| node(o.0).container() == Some(&node(i.0).label)))
+                        .any(|o| self.node(o.0).container() == Some(&self.node(i.0).label)))
         };
         let worked = covered.or_else(|| moved.clone().find(vessel)).or_else(|| {
             (closes || moved.clone().all(|i| machine(i.0)))
@@ -381,7 +365,7 @@ impl<'t> Said<'t> {
                 .flatten()
         });
         if let Some(&(x, _)) = worked {
-            let n = node(x);
+            let n = self.node(x);
             if closes {
                 push(objects, &n.label);
                 out.closed = true;
@@ -404,13 +388,10 @@ impl<'t> Said<'t> {
         relations: &mut Relations<'t>,
     ) -> Option<(&'t str, &'t str)> {
         let unit = self.unit;
-        let node = |x: SlotId| self.node(x);
-        let utensil = |x: SlotId| self.utensil(x);
-
         unit.outputs
             .iter()
             .find_map(|&(x, _)| {
-                let n = node(x);
+                let n = self.node(x);
                 if !objects.contains(&n.label.as_str()) {
                     return None;
                 }
@@ -420,13 +401,13 @@ impl<'t> Said<'t> {
             // record them): where what now holds one of them is, or that container itself
             .or_else(|| {
                 unit.outputs.iter().find_map(|&(x, _)| {
-                    let n = node(x);
+                    let n = self.node(x);
                     if objects.contains(&n.label.as_str())
                         || !n.contents().any(|c| objects.contains(&c))
                     {
                         return None;
                     }
-                    if utensil(x) {
+                    if self.utensil(x) {
                         return Some((relations.to(&n.label), n.label.as_str()));
                     }
                     container_of(n, objects)
@@ -437,14 +418,14 @@ impl<'t> Said<'t> {
             // goes nowhere.
             .or_else(|| {
                 let food = |&(x, _): &(SlotId, bool)| {
-                    !utensil(x) && objects.contains(&node(x).label.as_str())
+                    !self.utensil(x) && objects.contains(&self.node(x).label.as_str())
                 };
                 if !unit.inputs.iter().any(food) {
                     return None;
                 }
                 unit.outputs.iter().find_map(|&(x, _)| {
-                    let n = node(x);
-                    (!utensil(x) && !objects.contains(&n.label.as_str()))
+                    let n = self.node(x);
+                    (!self.utensil(x) && !objects.contains(&n.label.as_str()))
                         .then(|| container_of(n, objects))
                         .flatten()
                 })
@@ -457,13 +438,12 @@ impl<'t> Said<'t> {
     /// Returns those, taken out of `objects`.
     fn settled(&self, objects: &mut Vec<&'t str>, put_into: Option<(&str, &str)>) -> Vec<&'t str> {
         let unit = self.unit;
-        let node = |x: SlotId| self.node(x);
         let mut settled = Vec::new();
         if let Some((_, c)) = put_into {
             let mut vessels = unit
                 .inputs
                 .iter()
-                .map(|i| node(i.0))
+                .map(|i| self.node(i.0))
                 .filter(|n| n.label == c);
             if let Some(first) = vessels.next() {
                 let holds = |n: &ObjectNode, l: &str| n.contents().any(|i| i == l);
@@ -481,17 +461,15 @@ impl<'t> Said<'t> {
     /// The tools the sentence names after its objects, into `objects`.
     fn tools(&self, objects: &mut Vec<&'t str>, found: &Found, place: Option<(&str, &str)>) {
         let unit = self.unit;
-        let node = |x: SlotId| self.node(x);
-        let utensil = |x: SlotId| self.utensil(x);
         let moved = objects.len();
         for &(x, m) in &unit.inputs {
-            let n = node(x);
+            let n = self.node(x);
             if (!m
                 || found.holder.is_some()
                 || found.closed
                 || found.from_elsewhere
                 || found.with_tools)
-                && utensil(x)
+                && self.utensil(x)
                 && n.states.is_empty()
                 && !objects[..moved].contains(&n.label.as_str())
                 && place.is_none_or(|p| p.1 != n.label)
@@ -522,18 +500,14 @@ fn write(
             ("on", true) => ("onto", "on"),
             (r, _) => (r, r),
         };
-        text.push(' ');
-        text.push_str(into);
+        text.push_str(&format!(" {into}"));
         // a long list of what is there already says less than the container's name
         if (1..=2).contains(&settled.len()) {
             text.push(' ');
             push_list(&mut text, settled);
-            text.push(' ');
-            text.push_str(rel);
+            text.push_str(&format!(" {rel}"));
         }
-        for part in [" the ", c] {
-            text.push_str(part);
-        }
+        text.push_str(&format!(" the {c}"));
     }
     if !tools.is_empty() {
         text.push_str(" with ");

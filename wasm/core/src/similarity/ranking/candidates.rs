@@ -18,7 +18,7 @@ pub(super) type SetProfiles = Arc<CandidateSet>;
 /// scan of a large knowledge base's labels then reads memory front to back instead of one profile here
 /// and one there.
 pub(super) struct CandidateSet {
-    profiles: Vec<Arc<Profile>>,
+    pub(super) profiles: Vec<Arc<Profile>>,
     dims: usize,
     /// `dims` values per candidate: its unit vector, or zeros when `has_vector` is false.
     vectors: Vec<f32>,
@@ -26,10 +26,10 @@ pub(super) struct CandidateSet {
     /// Hashes of each candidate's name, canonical name, word-stem key and canonical key: only one
     /// sharing a hash with the query can be an exact match, either way.
     hashes: Vec<[u64; 4]>,
-    composite: Vec<bool>,
-    utensil: Vec<bool>,
+    pub(super) composite: Vec<bool>,
+    pub(super) utensil: Vec<bool>,
     known: Vec<bool>,
-    class: Vec<Class>,
+    pub(super) class: Vec<Class>,
     /// Every candidate's `stems`, one after another; candidate i's are `stems[stem_at[i]..stem_at[i + 1]]`.
     stems: Vec<u64>,
     stem_at: Vec<u32>,
@@ -137,18 +137,6 @@ impl CandidateSet {
 
 /// What a ranking reads of candidate i (in range).
 impl CandidateSet {
-    pub(super) fn profile(&self, i: usize) -> &Profile {
-        &self.profiles[i]
-    }
-    pub(super) fn composite(&self, i: usize) -> bool {
-        self.composite[i]
-    }
-    pub(super) fn utensil(&self, i: usize) -> bool {
-        self.utensil[i]
-    }
-    pub(super) fn class(&self, i: usize) -> Class {
-        self.class[i]
-    }
     pub(super) fn traits(&self, i: usize) -> Traits<'_> {
         Traits {
             class: self.class[i],

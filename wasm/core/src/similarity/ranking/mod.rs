@@ -387,20 +387,20 @@ impl EmbeddingSimilarity {
         cannot_place: impl Fn(f32) -> bool,
     ) -> Option<f32> {
         // the hashes rule most candidates out without reading their profiles
-        if may_be_exact && set.may_match(self, q, i) && self.is_exact(q, set.profile(i)) {
+        if may_be_exact && set.may_match(self, q, i) && self.is_exact(q, &set.profiles[i]) {
             return Some(f32::INFINITY);
         }
         let o = &self.options;
         let keep_composites = !o.filter_composites || q.composite;
         if !q.is_known()
-            || (!keep_composites && set.composite(i))
-            || (o.filter_composites && set.utensil(i))
+            || (!keep_composites && set.composite[i])
+            || (o.filter_composites && set.utensil[i])
         {
             return None;
         }
         // many candidates cannot place whatever their cosine and words: neither is read
         let max_words = o.same_head.max(0.0) + o.shared_word.max(0.0);
-        let most = self.category_bonus(q.class(), set.class(i)) + max_words;
+        let most = self.category_bonus(q.class(), set.class[i]) + max_words;
         if cannot_place(most_cosine + most) {
             return None;
         }

@@ -6,6 +6,7 @@ use crate::foon::label::normalize_label;
 use crate::similarity::cones::dot;
 use crate::similarity::table::{is_stop_word, words, WordStems};
 use crate::vocab::food_taxonomy::{is_form_stem, stem_key, Category};
+use std::collections::BTreeMap;
 use std::sync::Arc;
 
 /// A string with its hash: nearly every comparison of the score is between unequal strings, and those
@@ -240,12 +241,9 @@ impl EmbeddingSimilarity {
         if near.first()?.0 < self.options.infer_category_above {
             return None;
         }
-        let mut votes: Vec<(usize, f32)> = Vec::new();
+        let mut votes: BTreeMap<usize, f32> = BTreeMap::new();
         for (s, c) in near {
-            match votes.iter_mut().find(|(vc, _)| *vc == c) {
-                Some(v) => v.1 += s,
-                None => votes.push((c, s)),
-            }
+            votes.entry(c).and_modify(|v| *v += s).or_insert(s);
         }
         votes
             .into_iter()
