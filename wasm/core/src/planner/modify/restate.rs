@@ -93,7 +93,8 @@ pub(super) fn restate<'kb>(
         ));
     }
     if SEPARATION.contains(&c) {
-        if let Some(done) = swap_cut(tree, &order, o, s, &motion) {
+        let misfit = |m: &str| cannot_take(ctx, o, eq, m).is_some();
+        if let Some(done) = swap_cut(tree, &order, (o, s, &motion), &misfit) {
             return Ok(done);
         }
     }
@@ -174,19 +175,27 @@ fn made_from_raw<'kb>(
     ))
 }
 
-/// Swaps the tree's own cutting step of `o` for one reaching the wanted cut `s`, if it has one: a cut
-/// into pieces for pieces, a trim for a trim (a cherry tomato taken off its stem stays destemmed when it
-/// is asked chopped; its quartering becomes the chopping).
-fn swap_cut(tree: &mut Tree, order: &[TUnitId], o: &str, s: &str, motion: &str) -> Option<String> {
+/// Swaps the tree's own cutting step of `o` for one reaching the wanted cut `s` by `motion`, if it has
+/// one: a cut into pieces for pieces, a trim for a trim (a cherry tomato taken off its stem stays
+/// destemmed when it is asked chopped; its quartering becomes the chopping), or a step the food cannot
+/// take (`misfit`: canned fruit cocktail is not peeled like the orange it replaced).
+fn swap_cut(
+    tree: &mut Tree,
+    order: &[TUnitId],
+    (o, s, motion): (&str, &str, &str),
+    misfit: &dyn Fn(&str) -> bool,
+) -> Option<String> {
     let into_pieces = |st: &str| category(st) != Category::Trimmed;
-    let same_kind = |old: &[String]| match old {
+    let fits = |u: TUnitId, old: &[String]| match old {
         // a cut FOON leaves unsaid is into pieces
         [] => into_pieces(s),
-        _ => old.iter().all(|st| into_pieces(st) == into_pieces(s)),
+        _ => {
+            misfit(&tree.units[u].motion) || old.iter().all(|st| into_pieces(st) == into_pieces(s))
+        }
     };
     let (u, old) = order.iter().find_map(|&u| {
         cut_in(tree, u, o)
-            .filter(|(_, old)| same_kind(old))
+            .filter(|(_, old)| fits(u, old))
             .map(|(_, old)| (u, old))
     })?;
     for x in downstream(tree, vec![u], o, order) {
