@@ -3800,3 +3800,60 @@ fn a_copied_branch_takes_the_wash_along_and_joins_where_the_original_does() {
     let last = &line.state[line.state.len() - 1];
     assert_eq!(last.physical_state, "in smoothie", "{line:#?}");
 }
+
+/// Elsewhere in FOON: an orange squeezed into juice, a mushroom as bought, a dressing stirred.
+const JUICED_ORANGE: &str = "//
+O\tsalad dressing\t1
+S\tliquid
+O\tspoon\t1
+M\tstir\t<Assumed>
+O\tsalad dressing\t1
+S\tmixed
+//
+O\torange\t1
+S\twhole
+O\tjuicer\t1
+M\tsqueeze\t<Assumed>
+O\torange\t1
+S\tjuice
+//
+O\tmushroom\t1
+S\twhole
+O\tcutting board\t0
+S\tempty
+M\tpick-and-place\t<Assumed>
+O\tmushroom\t1
+S\twhole
+S\ton\t[cutting board]
+//
+";
+
+#[test]
+fn a_coarse_word_of_the_recipe_data_is_not_made_by_a_motion() {
+    // a mushroom "juice" is a wet ingredient, not squeezed into juice; it is sliced as a cook would
+    let p = plan_of(
+        &[("salad.txt", LETTUCE_SALAD), ("foods.txt", JUICED_ORANGE)],
+        &ExactMatch,
+        &query("salad", &[("lettuce", "chopped"), ("mushroom", "juice")]),
+    );
+    let line = p
+        .progress_lines
+        .iter()
+        .find(|l| l.ingredient == "mushroom")
+        .unwrap();
+    assert!(
+        line.state.iter().all(|s| s.physical_state != "juice"),
+        "{line:#?}"
+    );
+    // mixed berries are a bag of them: cherries "mixed" are not stirred on their own
+    let p = plan_of(
+        &[("drink.txt", CHERRY_SHAKE), ("foods.txt", JUICED_ORANGE)],
+        &ExactMatch,
+        &query("drinks", &[("cherry", "mixed"), ("banana", "sliced")]),
+    );
+    assert!(
+        !line_motions(&p, "cherry").contains(&"stir"),
+        "{:#?}",
+        p.progress_lines
+    );
+}

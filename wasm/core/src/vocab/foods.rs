@@ -157,6 +157,8 @@ struct Care {
     brown: bool,
     /// Coats the vessel the dish is cooked in before the dish goes in (cooking spray).
     grease: bool,
+    /// Never made into juice: its "juice" is the recipe data's word for a wet ingredient.
+    unjuiced: bool,
     /// What a cook takes off it before it is used or cut (an onion's skin, a cherry's stone).
     trims: Vec<&'static Trim>,
 }
@@ -184,6 +186,7 @@ fn cares() -> &'static HashMap<String, Care> {
                     mix: flags.iter().any(|f| f == "mix"),
                     brown: flags.iter().any(|f| f == "brown"),
                     grease: flags.iter().any(|f| f == "grease"),
+                    unjuiced: flags.iter().any(|f| f == "unjuiced"),
                     trims: TRIMS
                         .iter()
                         .filter(|t| flags.iter().any(|f| f == t.flag))
@@ -270,6 +273,12 @@ pub fn cooked_first(food: &str) -> bool {
 /// Whether `food` greases the vessel the dish is cooked in rather than joining the dish (cooking spray).
 pub fn greases(food: &str) -> bool {
     flagged(food, |c| c.grease)
+}
+
+/// Whether `food` is never made into juice (a mushroom, a pepper): its "juice" in recipe data names a
+/// wet ingredient, not a state a cook brings it to.
+pub fn never_juiced(food: &str) -> bool {
+    flagged(food, |c| c.unjuiced)
 }
 
 /// Whether `food` joins a dish that is cooked before the cooking, not after it (stock, wine, a bay leaf,
@@ -629,7 +638,7 @@ mod tests {
                 assert!(
                     matches!(
                         flag.as_str(),
-                        "first" | "wet" | "heat" | "top" | "mix" | "brown" | "grease"
+                        "first" | "wet" | "heat" | "top" | "mix" | "brown" | "grease" | "unjuiced"
                     ) || TRIMS.iter().any(|t| t.flag == flag),
                     "food_care.tsv: flag '{flag}' in {line}"
                 );
@@ -654,6 +663,9 @@ mod tests {
         assert!(greases("cooking spray") && !greases("olive oil"));
         assert!(joins_served("jelly") && !joins_served("cherry pie filling"));
         assert!(joins_before_heat("thyme") && joins_before_heat("cumin"));
+        // a mushroom or a pepper asked "juice" is not blended to one; an orange or a tomato is juiced
+        assert!(never_juiced("mushroom") && never_juiced("pimento") && never_juiced("onion"));
+        assert!(!never_juiced("orange") && !never_juiced("tomato") && !never_juiced("apple"));
         // sugar and a curry powder dissolve in a broth that cooks, not on the served ramen
         assert!(joins_before_heat("curry powder") && joins_before_heat("sugar"));
         // vegetables a cooked dish cooks (the ramen's cauliflower into the broth), not the raw cucumber
