@@ -3,7 +3,7 @@
 //! unmodified reference tree, and the exports.
 
 mod common;
-use common::hand::{goal_contents, outcome, plan_of, query, try_plan, units};
+use common::hand::{goal_contents, outcome, plan_of, query, try_plan, units, BLACK_PEPPER};
 use foon_core::contract::plan::{Origin, Status};
 use foon_core::error::ErrorCode;
 use foon_core::foon::read::parse_str;
@@ -2063,20 +2063,6 @@ O\tblack bean\t1\t1
 S\tcooked
 S\tcontains\t{onion}
 S\tin\t[pot]
-//
-";
-
-/// Elsewhere in FOON: black pepper sprinkled from its shaker into a bowl.
-const BLACK_PEPPER: &str = "//
-O\tblack pepper\t1
-S\tground
-S\tin\t[shaker]
-O\tbowl\t0
-S\tempty
-M\tsprinkle\t<Assumed>
-O\tblack pepper\t1
-S\tground
-S\tin\t[bowl]
 //
 ";
 

@@ -4,7 +4,7 @@
 //! reach the dish, and the cautions a plan reports.
 
 mod common;
-use common::hand::{outcome, plan_of, query, try_plan};
+use common::hand::{outcome, plan_of, query, try_plan, BLACK_PEPPER};
 use foon_core::planner::{cautions, CautionKind};
 use foon_core::similarity::ExactMatch;
 use foon_core::Plan;
@@ -3506,8 +3506,8 @@ fn a_herb_read_as_dried_is_bought_crumbled_not_a_fresh_sprig() {
     );
 }
 
-/// Elsewhere in FOON: a bell pepper diced, black pepper ground from its shaker into a bowl.
-const TWO_PEPPERS: &str = "//
+/// Elsewhere in FOON: a bell pepper diced.
+const BELL_PEPPER: &str = "//
 O\tbell pepper\t1
 S\twhole
 O\tknife\t1
@@ -3516,23 +3516,17 @@ M\tdice\t<Assumed>
 O\tbell pepper\t1
 S\tdiced
 //
-O\tblack pepper\t1
-S\tground
-S\tin\t[shaker]
-O\tbowl\t0
-S\tempty
-M\tsprinkle\t<Assumed>
-O\tblack pepper\t1
-S\tground
-S\tin\t[bowl]
-//
 ";
 
 #[test]
 fn a_name_asked_as_two_foods_plans_both() {
     // "pepper" diced is a bell pepper, "pepper" ground black pepper: two foods, two lines
     let p = plan_of(
-        &[("salad.txt", LETTUCE_SALAD), ("foods.txt", TWO_PEPPERS)],
+        &[
+            ("salad.txt", LETTUCE_SALAD),
+            ("foods.txt", BELL_PEPPER),
+            ("pepper.txt", BLACK_PEPPER),
+        ],
         &ExactMatch,
         &query(
             "salad",

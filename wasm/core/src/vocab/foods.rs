@@ -9,6 +9,7 @@
 use crate::contract::plan::Query;
 use crate::foon::label::{normalize_label, normalize_word};
 use crate::vocab::food_taxonomy::Taxonomy;
+use crate::vocab::states;
 use rustc_hash::FxHashMap as HashMap;
 use std::sync::OnceLock;
 
@@ -279,6 +280,13 @@ pub fn greases(food: &str) -> bool {
 /// wet ingredient, not a state a cook brings it to.
 pub fn never_juiced(food: &str) -> bool {
     flagged(food, |c| c.unjuiced)
+}
+
+/// Whether `food` is never in `state`: a state its form is never in (a paste is not "whole"), or juice
+/// of a food never juiced.
+pub fn never_in(food: &str, state: &str) -> bool {
+    form_of(food).is_some_and(|f| f.never_in.iter().any(|w| w == state))
+        || (states::kind(state) == Some("juice") && never_juiced(food))
 }
 
 /// Whether `food` joins a dish that is cooked before the cooking, not after it (stock, wine, a bay leaf,

@@ -76,3 +76,17 @@ pub fn goal_contents(p: &Plan) -> Vec<&str> {
         .expect("the last unit makes the goal");
     goal.ingredients.iter().map(|s| s.as_str()).collect()
 }
+
+/// Elsewhere in FOON: black pepper sprinkled from its shaker into a bowl.
+pub const BLACK_PEPPER: &str = "//
+O\tblack pepper\t1
+S\tground
+S\tin\t[shaker]
+O\tbowl\t0
+S\tempty
+M\tsprinkle\t<Assumed>
+O\tblack pepper\t1
+S\tground
+S\tin\t[bowl]
+//
+";

@@ -152,7 +152,7 @@ pub(super) fn shown_by_form(tree: &Tree, food: &str, s: &str, slots: &[SlotId]) 
                 .node
                 .physical_states()
                 .filter(|st| is_food_state(st))
-                .all(|st| form.never_in.iter().any(|w| w == st))
+                .all(|st| foods::never_in(food, st))
         })
 }
 

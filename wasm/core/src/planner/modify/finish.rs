@@ -271,8 +271,9 @@ fn meets_others(tree: &Tree, u: TUnitId, o: &str) -> bool {
 /// over from a substitute (tahini "ground, powder" like the sesame it replaced), goes; a food left with no
 /// state as it starts is shown in its form's ("liquid" oil), else as it was asked (`as_bought`), never blank.
 pub(super) fn fit_states_to_form(ctx: &Context, tree: &mut Tree, o: &str, asked: &str) {
-    let form = foods::form_of(known_as(ctx, o, o));
-    let never_in = |w: &str| form.is_some_and(|f| f.never_in.iter().any(|n| n == w));
+    let food = known_as(ctx, o, o);
+    let form = foods::form_of(food);
+    let never_in = |w: &str| foods::never_in(food, w);
     let misfit = |st: &State| st.arg.is_none() && never_in(&st.name);
     let when_none = form
         .and_then(|f| f.state_when_none.as_deref())

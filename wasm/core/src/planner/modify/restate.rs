@@ -332,9 +332,7 @@ pub(super) fn state_motion(ctx: &Context, o: &str, eq: &str, s: &str) -> Result<
     // a state its form is never in names only what it is sold as (beans "juice": canned in liquid); a
     // motion its form cannot take is the caller's to explain
     let food = known_as(ctx, o, eq);
-    let never = foods::form_of(food).is_some_and(|f| f.never_in.iter().any(|w| w == s))
-        || (kind(s) == Some("juice") && foods::never_juiced(food));
-    if never && foods::takes(food, &motion) {
+    if foods::never_in(food, s) && foods::takes(food, &motion) {
         return Err(format!(
             "a food like '{o}' is never '{s}'; kept the tree's state"
         ));
